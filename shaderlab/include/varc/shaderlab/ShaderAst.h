@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: Apache-2.0
+// The parsed form of a .shader file: properties, subshaders, passes and program blocks.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "varc/core/SourceLocation.h"
+#include "varc/shaderlab/RenderState.h"
+
+namespace varc::shaderlab {
+
+// "Key" = "Value" pairs in declaration order (Tags { "LightMode" = "ForwardBase" }).
+using Tags = std::vector<std::pair<std::string, std::string>>;
+// Value of |key| (case-insensitive) in |tags|, or "" when absent.
+std::string findTag(const Tags& tags, const std::string& key);
+
+enum class PropertyType { Color, Vector, Float, Int, Integer, Range, Texture2D, Texture3D, Cube,
+                          Texture2DArray, CubeArray, Any };
+
+struct Property {
+    std::vector<std::string> attributes;  // "Gamma", "Toggle(_FOO_ON)", "HDR", ... as written
+    std::string name;                     // "_MainTex"
+    std::string displayName;              // "Albedo"
+    PropertyType type = PropertyType::Float;
+    float rangeMin = 0, rangeMax = 0;     // Range(min, max)
+    std::string defaultValue;             // as written: "(1,1,1,1)", "0.5", "\"white\" {}"
+    SourceLocation location;
+};
+
+enum class ProgramLanguage { Cg, Hlsl, Glsl };
+
+// A CGPROGRAM/HLSLPROGRAM/GLSLPROGRAM block, or a CGINCLUDE/HLSLINCLUDE/GLSLINCLUDE block.
+struct ProgramBlock {
+    ProgramLanguage language = ProgramLanguage::Cg;
+    std::string text;        // between the opening keyword and END*, verbatim
+    SourceLocation origin;   // location of text[0]
+};
+
+struct Pass {
+    std::string name;        // from `Name "..."`, "" if none
+    Tags tags;               // the pass's own tags
+    RenderState state;       // effective: SubShader/Category state already inherited
+    std::optional<ProgramBlock> program;
+    // Shared *INCLUDE blocks in scope (shader, category, subshader, pass level) in file order;
+    // Unity prepends these to the program text.
+    std::vector<ProgramBlock> includeBlocks;
+    std::string usePass;     // `UsePass "Shader/PASSNAME"`: a reference instead of a pass body
+    SourceLocation location; // of the `Pass`/`UsePass` keyword
+
+    std::string lightMode() const { return findTag(tags, "LightMode"); }
+};
+
+struct SubShader {
+    Tags tags;
+    int lod = 0;
+    std::vector<Pass> passes;
+    SourceLocation location;
+};
+
+struct ShaderFile {
+    std::string name;                    // `Shader "Custom/Name"`
+    std::vector<Property> properties;
+    std::vector<SubShader> subShaders;
+    std::optional<std::string> fallback; // `Fallback "VertexLit"`; nullopt for none or Off
+    bool fallbackOff = false;            // `Fallback Off` written explicitly
+    std::string customEditor;
+    SourceLocation location;
+};
+
+}  // namespace varc::shaderlab
