@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: Apache-2.0
+// Loads a .shader file: ShaderLab parse, include expansion and keyword model for every pass.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "varc/core/Diagnostic.h"
+#include "varc/includes/FileSystem.h"
+#include "varc/includes/IncludeResolver.h"
+#include "varc/includes/SourceMap.h"
+#include "varc/shaderlab/ShaderAst.h"
+#include "varc/variants/PassKeywords.h"
+#include "varc/variants/VariantSpace.h"
+
+namespace varc::compiler {
+
+// One pass that has a program block, ready for variant expansion and compilation.
+struct LoadedPass {
+    size_t index = 0;                     // position among all passes of the shader, file order
+    const shaderlab::Pass* pass = nullptr;  // points into LoadedShader::ast
+    includes::ExpandedSource source;      // *INCLUDE blocks + program, includes spliced
+    variants::PassKeywords keywords;
+    std::optional<variants::VariantSpace> space;  // always set after a successful load
+};
+
+// Move-only: LoadedPass::pass points into |ast| (a vector move keeps element addresses).
+struct LoadedShader {
+    LoadedShader() = default;
+    LoadedShader(LoadedShader&&) = default;
+    LoadedShader& operator=(LoadedShader&&) = default;
+    LoadedShader(const LoadedShader&) = delete;
+    LoadedShader& operator=(const LoadedShader&) = delete;
+
+    std::string path;                     // as given by the caller
+    FileId file = kNoFile;
+    shaderlab::ShaderFile ast;
+    std::vector<LoadedPass> passes;       // passes without a program (UsePass, GrabPass,
+                                          // fixed function) are not listed; indices keep gaps
+
+    uint64_t variantCount() const;        // sum over passes, saturating
+};
+
+// Reads |path| through |fileSystem|, registers it in |sourceMap| and loads every pass.
+// Pass-level errors get a note naming the shader and pass. Returns nullopt after reporting at
+// least one error; a shader with no program passes is valid (zero variants).
+std::optional<LoadedShader> loadShader(const std::string& path,
+                                       const includes::FileSystem& fileSystem,
+                                       includes::SourceMap& sourceMap,
+                                       const includes::IncludeOptions& includeOptions,
+                                       DiagnosticSink& sink);
+
+// A human-readable description of pass |index| for diagnostics:
+// `pass 1 "FORWARD" (LightMode ForwardAdd) of shader "Custom/X"`.
+std::string describePass(const shaderlab::ShaderFile& shader, const shaderlab::Pass& pass,
+                         size_t index);
+
+}  // namespace varc::compiler

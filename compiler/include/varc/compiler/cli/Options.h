@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: Apache-2.0
+// The parsed `varc` command line, one struct for every subcommand.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace varc::cli {
+
+enum class Command { None, Variants, Lock, Check };
+
+// A growth allowance for `varc check --max-growth`: N variants, or N percent of the lock.
+struct GrowthLimit {
+    double amount = 0;
+    bool percent = false;
+};
+
+struct Options {
+    Command command = Command::None;
+    std::vector<std::string> inputs;       // files, or directories searched for *.shader
+    std::vector<std::string> includeDirs;  // -I
+    std::string builtinIncludeDir;         // --builtin-include-dir or VARC_BUILTIN_INCLUDE_DIR
+    bool json = false;                     // --json
+    bool list = false;                     // --list
+    std::string lockPath;                  // lock: -o; check: --lock
+    std::optional<GrowthLimit> maxGrowth;  // check --max-growth N|N%
+    std::optional<uint64_t> budget;        // check --budget N
+};
+
+// Exit codes shared by every subcommand.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;  // input errors; for `check`, a mismatch
+inline constexpr int kExitUsage = 2;    // bad command line; for `check`, also input errors
+
+// Parses |argv| into |options|. Returns nullopt to continue, or an exit code when parsing
+// ended the run (help printed to |out|, usage error printed to |err|).
+std::optional<int> parseOptions(int argc, const char* const* argv, Options& options,
+                                std::ostream& out, std::ostream& err);
+
+}  // namespace varc::cli

@@ -1,0 +1,17 @@
+// SPDX-License-Identifier: Apache-2.0
+// Writes a file so that readers see either the old contents or the complete new contents.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "varc/core/Result.h"
+
+namespace varc {
+
+// Writes |contents| to a temporary file next to |path|, flushes it, then renames it over
+// |path|. On failure the temporary is removed and |path| is untouched; the error names the
+// path and the system's reason.
+Status writeFileAtomically(const std::string& path, std::string_view contents);
+
+}  // namespace varc

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Installs the Debian packages varc needs, skipping those already present (dpkg -s first).
+set -euo pipefail
+
+packages=(
+    build-essential cmake ninja-build pkg-config
+    glslang-dev glslang-tools spirv-tools
+    libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
+    libglm-dev nlohmann-json3-dev libcli11-dev libzstd-dev libxxhash-dev libpng-dev
+    libgtest-dev libgmock-dev googletest libbenchmark-dev
+)
+
+missing=()
+for package in "${packages[@]}"; do
+    if ! dpkg -s "$package" >/dev/null 2>&1; then missing+=("$package"); fi
+done
+if [ ${#missing[@]} -eq 0 ]; then
+    echo "install-deps: all ${#packages[@]} packages present"
+    exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+sudo=""
+if [ "$(id -u)" != 0 ]; then sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
+// varc built-in include: UnityPBSLighting.cginc. Declarations arrive with issue #4 (built-in include library);
+// this file exists so shaders that include it resolve for variant listing.
+#ifndef VARC_UNITYPBSLIGHTING_INCLUDED
+#define VARC_UNITYPBSLIGHTING_INCLUDED
+#endif

@@ -1,0 +1,2 @@
+// a includes b
+#include "b.hlsl"

@@ -1,0 +1,3 @@
+// b includes a back
+float b;
+#include "a.hlsl"

@@ -1,0 +1,9 @@
+Shader "Test/Cycle" {
+    SubShader {
+        Pass {
+            CGPROGRAM
+            #include "a.hlsl"
+            ENDCG
+        }
+    }
+}

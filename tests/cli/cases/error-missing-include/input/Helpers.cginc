@@ -1,0 +1,4 @@
+#ifndef HELPERS_INCLUDED
+#define HELPERS_INCLUDED
+#include "No Such File.cginc"
+#endif

@@ -1,0 +1,11 @@
+Shader "Test/MissingInclude" {
+    SubShader {
+        Pass {
+            CGPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #include "Helpers.cginc"
+            ENDCG
+        }
+    }
+}
