@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: Apache-2.0
+// Compiles every variant of every loaded pass: each distinct stage program once, in parallel.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "varc/compiler/ShaderLoader.h"
+#include "varc/compiler/SpirvOptimizer.h"
+#include "varc/core/Diagnostic.h"
+#include "varc/includes/SourceMap.h"
+#include "varc/variants/VariantKey.h"
+
+namespace varc::compiler {
+
+// Stage slots in variant tables: vertex, fragment, geometry, hull, domain.
+inline constexpr size_t kStageCount = 5;
+inline constexpr uint32_t kNoProgram = 0xffffffffu;
+// Slot of a single variants::StageBits bit; kStageCount for anything else.
+size_t stageSlot(uint32_t stageBit);
+uint32_t stageBitOfSlot(size_t slot);
+const char* stageName(uint32_t stageBit);  // "vertex", "fragment", ...
+
+struct BuildOptions {
+    OptimizationLevel optimization = OptimizationLevel::Performance;
+    unsigned jobs = 0;         // 0 = the machine's hardware concurrency
+    bool keepGoing = false;    // compile everything even after errors, to report them all
+    bool pruneStages = true;   // prune each stage to what its entry point reaches before dedup
+};
+
+// One optimised, validated SPIR-V module, shared by every variant whose stage compiles to it.
+struct CompiledProgram {
+    uint32_t stage = 0;  // variants::StageBits bit
+    std::string entryPoint;
+    std::vector<uint32_t> spirv;
+    size_t shaderIndex = 0, passIndex = 0;  // where it was first used (for source info)
+};
+
+struct CompiledVariant {
+    variants::VariantKey key;
+    std::array<uint32_t, kStageCount> programs{kNoProgram, kNoProgram, kNoProgram, kNoProgram,
+                                               kNoProgram};
+};
+
+// Per pass: the staged counts of `varc build`'s summary.
+struct PassBuildStats {
+    uint64_t declaredVariants = 0;  // full product of the keyword sets
+    uint64_t variants = 0;          // after skip_variants and shortcut rules
+    std::array<size_t, kStageCount> distinctSources{};  // after preprocessing + pruning
+    std::array<size_t, kStageCount> distinctModules{};  // after compiling, by SPIR-V bytes
+};
+
+struct CompiledPass {
+    size_t shaderIndex = 0;  // into the shaders given to build()
+    size_t passIndex = 0;    // into LoadedShader::passes
+    std::vector<CompiledVariant> variants;  // enumeration order
+    PassBuildStats stats;
+    // Per declared keyword set (PassKeywords::sets order): the StageBits whose program changes
+    // with that set's choice. A set with mask 0 does not affect the pass at all.
+    std::vector<uint32_t> setStageEffects;
+};
+
+struct BuildOutput {
+    std::vector<CompiledPass> passes;
+    std::vector<CompiledProgram> programs;  // deduplicated by bytes, in first-use order
+    size_t compiledSources = 0;             // glslang invocations
+};
+
+// Runs the build. Diagnostics name the shader, pass, stage and keywords; an error shared by many
+// variants is reported once, with the number of variants it affects. Returns nullopt when any
+// program failed (nothing should be written then).
+std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shaders,
+                                         const includes::SourceMap& sourceMap,
+                                         const BuildOptions& options, DiagnosticSink& sink);
+
+}  // namespace varc::compiler

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: Apache-2.0
+// SPIRV-Tools: legalise, optimise (-O0/-O/-Os) and validate SPIR-V modules for Vulkan 1.0.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace varc::compiler {
+
+enum class OptimizationLevel { None, Performance, Size };  // -O0, -O (default), -Os
+
+// Parses "-O0", "-O", "-Os" (also "0", "performance", "size").
+std::optional<OptimizationLevel> parseOptimizationLevel(std::string_view text);
+
+struct SpirvResult {
+    bool ok = false;
+    std::vector<uint32_t> spirv;
+    std::string message;  // SPIRV-Tools' messages on failure
+};
+
+// Runs HLSL legalisation (always: glslang's HLSL output needs it), then the passes of |level|,
+// then strips reflection-only decorations (HLSL semantics). Deterministic for equal input.
+SpirvResult optimizeSpirv(const std::vector<uint32_t>& spirv, OptimizationLevel level);
+
+// Validates |spirv| for Vulkan 1.0; returns the validator's message, or nullopt when valid.
+std::optional<std::string> validateSpirv(const std::vector<uint32_t>& spirv);
+
+// "SPIRV-Tools v2023.1 ..." for pack headers.
+std::string spirvToolsVersionString();
+
+}  // namespace varc::compiler

@@ -1,0 +1,354 @@
+// SPDX-License-Identifier: Apache-2.0
+// Compiles every variant of every loaded pass: each distinct stage program once, in parallel.
+//
+// Three phases, each deterministic whatever the thread count:
+//  1. per (pass, variant, stage): preprocess with the variant's defines, prune to the entry
+//     point, and intern the text -> source ids (identical programs found before glslang runs);
+//  2. per distinct source: glslang -> SPIRV-Tools optimise -> validate, in parallel;
+//  3. intern the SPIR-V bytes -> program ids, in enumeration order, and derive the statistics.
+#include "varc/compiler/CompileDriver.h"
+
+#include <atomic>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+#include "DiagnosticGrouper.h"
+#include "varc/compiler/GlslangFrontend.h"
+#include "varc/compiler/GlslangLogParser.h"
+#include "varc/compiler/GlslLegacyPreamble.h"
+#include "varc/compiler/ParallelFor.h"
+#include "varc/compiler/PassDefines.h"
+#include "varc/compiler/StagePruner.h"
+#include "varc/compiler/StageEffects.h"
+
+namespace varc::compiler {
+
+namespace {
+
+constexpr size_t kChunkSize = 256;
+
+// A pass being built: its variants and which stages it has (with their entry points).
+struct PassJob {
+    size_t shaderIndex = 0, passIndex = 0;
+    const LoadedShader* shader = nullptr;
+    const LoadedPass* pass = nullptr;
+    std::vector<variants::VariantKey> keys;
+    std::vector<std::pair<uint32_t, std::string>> stages;  // (stage bit, entry point)
+    std::string text;  // the expanded source, in the front end's #line convention
+    // sourceIds[variant * stages.size() + stageIndex]
+    std::vector<uint32_t> sourceIds;
+};
+
+// One distinct preprocessed, pruned program.
+struct SourceProgram {
+    size_t job = 0;
+    uint32_t stage = 0;
+    std::string entryPoint;
+    std::string text;
+    size_t firstVariant = 0;
+    uint64_t variants = 0;
+};
+
+struct StageResult {
+    bool ok = false;
+    std::string text;
+    std::vector<Diagnostic> diagnostics;
+};
+
+struct CompiledSource {
+    bool ok = false;
+    std::vector<uint32_t> spirv;
+    std::vector<Diagnostic> diagnostics;
+};
+
+shaderlab::ProgramLanguage languageOf(const PassJob& job) {
+    return job.pass->pass->program->language;
+}
+
+std::string joinKeywords(const std::vector<std::string>& names) {
+    if (names.empty()) return "<no keywords>";
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : " ") + name;
+    return text;
+}
+
+std::string contextOf(const PassJob& job, uint32_t stage, size_t variant) {
+    const auto& table = job.pass->space->table();
+    return std::string("in the ") + stageName(stage) + " stage of " +
+           describePass(job.shader->ast, *job.pass->pass, job.pass->index) +
+           ", keywords: " + joinKeywords(table.namesOf(job.keys[variant]));
+}
+
+// The stages a pass compiles, from its #pragma vertex/fragment/...; reports missing entries.
+bool collectStages(PassJob& job, DiagnosticSink& sink) {
+    const variants::PassKeywords& kw = job.pass->keywords;
+    bool glsl = languageOf(job) == shaderlab::ProgramLanguage::Glsl;
+    auto entry = [&](const std::string& name) { return glsl ? std::string("main") : name; };
+    if (!glsl && (kw.vertexEntry.empty() || kw.fragmentEntry.empty())) {
+        sink.error(job.pass->pass->program->origin,
+                   std::string("missing #pragma ") + (kw.vertexEntry.empty() ? "vertex" : "fragment") +
+                       " in " + describePass(job.shader->ast, *job.pass->pass, job.pass->index));
+        return false;
+    }
+    job.stages.push_back({variants::kStageVertex, entry(kw.vertexEntry)});
+    job.stages.push_back({variants::kStageFragment, entry(kw.fragmentEntry)});
+    if (!kw.geometryEntry.empty()) job.stages.push_back({variants::kStageGeometry, entry(kw.geometryEntry)});
+    if (!kw.hullEntry.empty()) job.stages.push_back({variants::kStageHull, kw.hullEntry});
+    if (!kw.domainEntry.empty()) job.stages.push_back({variants::kStageDomain, kw.domainEntry});
+    return true;
+}
+
+StageResult preprocessStage(const PassJob& job, size_t variant, size_t stageIndex,
+                            const BuildOptions& options, const includes::SourceMap& sourceMap) {
+    const auto& [stage, entry] = job.stages[stageIndex];
+    DefineContext context{job.pass->pass->lightMode(), job.pass->keywords.target, languageOf(job),
+                          stage, job.pass->space->table().namesOf(job.keys[variant])};
+    std::string preamble = makePreamble(context);
+    if (languageOf(job) == shaderlab::ProgramLanguage::Glsl) {
+        preamble += legacyGlslPreamble(job.text, stage);
+    }
+    PreprocessOutput pre = preprocessProgram(
+        {job.text, preamble, languageOf(job), stage, entry});
+    StageResult result;
+    result.diagnostics = parseGlslangLog(pre.log, sourceMap);
+    result.ok = pre.ok;
+    if (!pre.ok) return result;
+    if (options.pruneStages) {
+        ShaderDialect dialect = languageOf(job) == shaderlab::ProgramLanguage::Glsl
+                                    ? ShaderDialect::Glsl
+                                    : ShaderDialect::Hlsl;
+        result.text = pruneToEntryPoint(pre.text, entry, dialect).text;
+    } else {
+        result.text = std::move(pre.text);
+    }
+    return result;
+}
+
+class Builder {
+public:
+    Builder(const includes::SourceMap& sourceMap, const BuildOptions& options)
+        : mSourceMap(sourceMap), mOptions(options),
+          mThreads(options.jobs ? options.jobs : defaultThreadCount()) {}
+
+    bool plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sink);
+    bool internSources();
+    bool compileSources();
+    BuildOutput assemble();
+    void flushDiagnostics(DiagnosticSink& sink) const { mGrouper.flush(sink); }
+
+private:
+    void internItem(size_t jobIndex, size_t variant, size_t stageIndex, StageResult& result);
+    CompiledSource compileSource(const SourceProgram& source) const;
+    void fillStats(const PassJob& job, CompiledPass& pass, const std::vector<uint32_t>& finalIds) const;
+
+    const includes::SourceMap& mSourceMap;
+    BuildOptions mOptions;
+    unsigned mThreads;
+    std::vector<PassJob> mJobs;
+    std::vector<SourceProgram> mSources;
+    std::unordered_map<std::string, uint32_t> mSourceIndex;  // key: stage|entry|text
+    std::vector<CompiledSource> mCompiled;
+    DiagnosticGrouper mGrouper;
+};
+
+bool Builder::plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sink) {
+    bool ok = true;
+    for (size_t s = 0; s < shaders.size(); ++s) {
+        for (size_t p = 0; p < shaders[s].passes.size(); ++p) {
+            PassJob job;
+            job.shaderIndex = s;
+            job.passIndex = p;
+            job.shader = &shaders[s];
+            job.pass = &shaders[s].passes[p];
+            if (!collectStages(job, sink)) {
+                ok = false;
+                continue;
+            }
+            job.keys = job.pass->space->enumerate();
+            job.text = languageOf(job) == shaderlab::ProgramLanguage::Glsl
+                           ? toGlslLineConvention(job.pass->source.text)
+                           : job.pass->source.text;
+            job.sourceIds.assign(job.keys.size() * job.stages.size(), kNoProgram);
+            mJobs.push_back(std::move(job));
+        }
+    }
+    return ok;
+}
+
+void Builder::internItem(size_t jobIndex, size_t variant, size_t stageIndex, StageResult& result) {
+    PassJob& job = mJobs[jobIndex];
+    const auto& [stage, entry] = job.stages[stageIndex];
+    if (!result.diagnostics.empty()) {
+        mGrouper.add(result.diagnostics, job.pass->pass->location, contextOf(job, stage, variant), 1);
+    }
+    if (!result.ok) return;
+    std::string key = std::to_string(stage) + "|" + entry + "|" + result.text;
+    auto [it, inserted] = mSourceIndex.emplace(std::move(key), static_cast<uint32_t>(mSources.size()));
+    if (inserted) {
+        mSources.push_back({jobIndex, stage, entry, std::move(result.text), variant, 0});
+    }
+    ++mSources[it->second].variants;
+    job.sourceIds[variant * job.stages.size() + stageIndex] = it->second;
+}
+
+bool Builder::internSources() {
+    for (size_t j = 0; j < mJobs.size(); ++j) {
+        const PassJob& job = mJobs[j];
+        size_t items = job.keys.size() * job.stages.size();
+        for (size_t chunk = 0; chunk < items; chunk += kChunkSize) {
+            size_t count = std::min(kChunkSize, items - chunk);
+            std::vector<StageResult> results(count);
+            parallelFor(count, mThreads, [&](size_t i) {
+                size_t item = chunk + i;
+                results[i] = preprocessStage(job, item / job.stages.size(), item % job.stages.size(),
+                                             mOptions, mSourceMap);
+            }, /*firstAlone=*/mSources.empty() && chunk == 0);
+            for (size_t i = 0; i < count; ++i) {
+                size_t item = chunk + i;
+                internItem(j, item / job.stages.size(), item % job.stages.size(), results[i]);
+            }
+            if (mGrouper.hasErrors() && !mOptions.keepGoing) return false;
+        }
+    }
+    return !mGrouper.hasErrors();
+}
+
+CompiledSource Builder::compileSource(const SourceProgram& source) const {
+    const PassJob& job = mJobs[source.job];
+    CompiledSource result;
+    CompileOutput compiled = compileProgram({source.text, "", languageOf(job), source.stage, source.entryPoint});
+    result.diagnostics = parseGlslangLog(compiled.log, mSourceMap);
+    if (!compiled.ok) return result;
+    SpirvResult optimized = optimizeSpirv(compiled.spirv, mOptions.optimization);
+    if (!optimized.ok) {
+        result.diagnostics.push_back({Severity::Error, job.pass->pass->program->origin,
+                                      "SPIR-V optimisation failed: " + optimized.message, {}});
+        return result;
+    }
+    if (auto invalid = validateSpirv(optimized.spirv)) {
+        result.diagnostics.push_back({Severity::Error, job.pass->pass->program->origin,
+                                      "generated SPIR-V is invalid: " + *invalid, {}});
+        return result;
+    }
+    result.ok = true;
+    result.spirv = std::move(optimized.spirv);
+    return result;
+}
+
+bool Builder::compileSources() {
+    mCompiled.assign(mSources.size(), {});
+    std::atomic<bool> failed{false};
+    parallelFor(mSources.size(), mThreads, [&](size_t i) {
+        if (failed.load() && !mOptions.keepGoing) return;
+        mCompiled[i] = compileSource(mSources[i]);
+        if (!mCompiled[i].ok) failed.store(true);
+    }, /*firstAlone=*/true);
+    for (size_t i = 0; i < mSources.size(); ++i) {
+        const SourceProgram& source = mSources[i];
+        if (mCompiled[i].diagnostics.empty()) continue;
+        const PassJob& job = mJobs[source.job];
+        mGrouper.add(mCompiled[i].diagnostics, job.pass->pass->location,
+                     contextOf(job, source.stage, source.firstVariant), source.variants);
+    }
+    return !failed.load() && !mGrouper.hasErrors();
+}
+
+void Builder::fillStats(const PassJob& job, CompiledPass& pass,
+                        const std::vector<uint32_t>& finalIds) const {
+    pass.stats.declaredVariants = job.pass->space->fullCount();
+    pass.stats.variants = job.keys.size();
+    for (size_t stageIndex = 0; stageIndex < job.stages.size(); ++stageIndex) {
+        size_t slot = stageSlot(job.stages[stageIndex].first);
+        std::set<uint32_t> sources, modules;
+        for (size_t v = 0; v < job.keys.size(); ++v) {
+            uint32_t source = job.sourceIds[v * job.stages.size() + stageIndex];
+            sources.insert(source);
+            modules.insert(finalIds[source]);
+        }
+        pass.stats.distinctSources[slot] = sources.size();
+        pass.stats.distinctModules[slot] = modules.size();
+    }
+}
+
+// Interns SPIR-V bytes in enumeration order, so program ids never depend on thread timing.
+BuildOutput Builder::assemble() {
+    BuildOutput output;
+    output.compiledSources = mSources.size();
+    std::map<std::vector<uint32_t>, uint32_t> byBytes;
+    std::vector<uint32_t> finalIds(mSources.size(), kNoProgram);
+    for (const PassJob& job : mJobs) {
+        for (uint32_t source : job.sourceIds) {
+            if (finalIds[source] != kNoProgram) continue;
+            const SourceProgram& program = mSources[source];
+            auto [it, inserted] = byBytes.emplace(mCompiled[source].spirv,
+                                                  static_cast<uint32_t>(output.programs.size()));
+            if (inserted) {
+                output.programs.push_back({program.stage, program.entryPoint, mCompiled[source].spirv,
+                                           job.shaderIndex, job.passIndex});
+            }
+            finalIds[source] = it->second;
+        }
+    }
+    for (const PassJob& job : mJobs) {
+        CompiledPass pass;
+        pass.shaderIndex = job.shaderIndex;
+        pass.passIndex = job.passIndex;
+        for (size_t v = 0; v < job.keys.size(); ++v) {
+            CompiledVariant variant{job.keys[v], {}};
+            variant.programs.fill(kNoProgram);
+            for (size_t s = 0; s < job.stages.size(); ++s) {
+                variant.programs[stageSlot(job.stages[s].first)] =
+                    finalIds[job.sourceIds[v * job.stages.size() + s]];
+            }
+            pass.variants.push_back(variant);
+        }
+        fillStats(job, pass, finalIds);
+        pass.setStageEffects = computeSetStageEffects(*job.pass->space, pass.variants);
+        output.passes.push_back(std::move(pass));
+    }
+    return output;
+}
+
+}  // namespace
+
+size_t stageSlot(uint32_t stageBit) {
+    switch (stageBit) {
+        case variants::kStageVertex: return 0;
+        case variants::kStageFragment: return 1;
+        case variants::kStageGeometry: return 2;
+        case variants::kStageHull: return 3;
+        case variants::kStageDomain: return 4;
+        default: return kStageCount;
+    }
+}
+
+uint32_t stageBitOfSlot(size_t slot) {
+    static constexpr uint32_t kBits[kStageCount] = {variants::kStageVertex, variants::kStageFragment,
+                                                    variants::kStageGeometry, variants::kStageHull,
+                                                    variants::kStageDomain};
+    return slot < kStageCount ? kBits[slot] : 0;
+}
+
+const char* stageName(uint32_t stageBit) {
+    static const char* const kNames[kStageCount] = {"vertex", "fragment", "geometry", "hull", "domain"};
+    size_t slot = stageSlot(stageBit);
+    return slot < kStageCount ? kNames[slot] : "unknown";
+}
+
+std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shaders,
+                                         const includes::SourceMap& sourceMap,
+                                         const BuildOptions& options, DiagnosticSink& sink) {
+    initializeGlslang();
+    Builder builder(sourceMap, options);
+    // Without --keep-going the first failing phase ends the build; with it, every phase runs so
+    // that all errors are reported at once.
+    bool ok = builder.plan(shaders, sink);
+    if (ok || options.keepGoing) ok = builder.internSources() && ok;
+    if (ok || options.keepGoing) ok = builder.compileSources() && ok;
+    builder.flushDiagnostics(sink);
+    if (!ok) return std::nullopt;
+    return builder.assemble();
+}
+
+}  // namespace varc::compiler

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: Apache-2.0
+// parallelFor runs every index exactly once, and job 0 alone first when asked.
+#include "varc/compiler/ParallelFor.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <vector>
+
+namespace varc::compiler {
+namespace {
+
+TEST(ParallelFor, RunsEveryIndexExactlyOnce) {
+    for (unsigned threads : {1u, 2u, 7u}) {
+        std::vector<std::atomic<int>> hits(1000);
+        parallelFor(hits.size(), threads, [&](size_t i) { hits[i].fetch_add(1); });
+        for (size_t i = 0; i < hits.size(); ++i) ASSERT_EQ(hits[i].load(), 1) << i;
+    }
+}
+
+TEST(ParallelFor, FirstJobCompletesBeforeOthersStart) {
+    std::atomic<bool> firstDone{false};
+    std::atomic<int> startedEarly{0};
+    parallelFor(64, 4, [&](size_t i) {
+        if (i == 0) {
+            firstDone.store(true);
+        } else if (!firstDone.load()) {
+            startedEarly.fetch_add(1);
+        }
+    }, /*firstAlone=*/true);
+    EXPECT_EQ(startedEarly.load(), 0);
+}
+
+TEST(ParallelFor, HandlesZeroItems) {
+    int calls = 0;
+    parallelFor(0, 4, [&](size_t) { ++calls; }, true);
+    EXPECT_EQ(calls, 0);
+}
+
+}  // namespace
+}  // namespace varc::compiler

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: Apache-2.0
+// The predefined macros: target numbers, pass macros from LightMode, stage and keyword defines.
+#include "varc/compiler/PassDefines.h"
+
+#include <gtest/gtest.h>
+
+#include "varc/variants/PassKeywords.h"
+
+namespace varc::compiler {
+namespace {
+
+TEST(PassDefines, ParsesShaderTargets) {
+    EXPECT_EQ(shaderTargetNumber(""), 25);
+    EXPECT_EQ(shaderTargetNumber("3.0"), 30);
+    EXPECT_EQ(shaderTargetNumber("4.5"), 45);
+    EXPECT_EQ(shaderTargetNumber("3"), -1);
+    EXPECT_EQ(shaderTargetNumber("x.0"), -1);
+}
+
+TEST(PassDefines, MapsLightModeToPassMacroCaseInsensitively) {
+    EXPECT_EQ(passMacro("ForwardBase"), "UNITY_PASS_FORWARDBASE");
+    EXPECT_EQ(passMacro("FORWARDADD"), "UNITY_PASS_FORWARDADD");
+    EXPECT_EQ(passMacro("Deferred"), "UNITY_PASS_DEFERRED");
+    EXPECT_EQ(passMacro("ShadowCaster"), "UNITY_PASS_SHADOWCASTER");
+    EXPECT_EQ(passMacro("Always"), "");
+    EXPECT_EQ(passMacro(""), "");
+}
+
+TEST(PassDefines, PreambleListsApiTargetPassStageAndKeywordsInOrder) {
+    DefineContext context{"ForwardAdd", "3.0", shaderlab::ProgramLanguage::Cg,
+                          variants::kStageFragment, {"POINT", "SHADOWS_CUBE"}};
+    EXPECT_EQ(makePreamble(context),
+              "#define SHADER_API_VULKAN 1\n"
+              "#define SHADER_API_DESKTOP 1\n"
+              "#define SHADER_TARGET 30\n"
+              "#define UNITY_VERSION 201940\n"
+              "#define UNITY_PASS_FORWARDADD 1\n"
+              "#define SHADER_STAGE_FRAGMENT 1\n"
+              "#define POINT 1\n"
+              "#define SHADOWS_CUBE 1\n");
+}
+
+TEST(PassDefines, GlslProgramsAlsoGetTheVertexOrFragmentSelector) {
+    DefineContext context{"", "", shaderlab::ProgramLanguage::Glsl, variants::kStageVertex, {}};
+    std::string preamble = makePreamble(context);
+    EXPECT_NE(preamble.find("#define VERTEX 1\n"), std::string::npos);
+    EXPECT_EQ(preamble.find("FRAGMENT"), std::string::npos);
+    EXPECT_NE(preamble.find("#define SHADER_TARGET 25\n"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace varc::compiler
