@@ -18,11 +18,13 @@ struct StateValue {
     friend bool operator==(const StateValue&, const StateValue&) = default;
 };
 
-// `Blend Src Dst [, SrcA DstA]` or `Blend Off`.
+// `Blend Src Dst [, SrcA DstA]` or `Blend Off` (render target 0; other targets are accepted and
+// ignored). A scope that writes only `BlendOp` has a BlendState with `off == false` and unset
+// factors: the factors then come from the enclosing scope, or mean "Blend Off" when none does.
 struct BlendState {
     bool off = false;
     StateValue src, dst, srcAlpha, dstAlpha;  // alpha factors unset = same as color
-    StateValue op, opAlpha;                   // from BlendOp
+    StateValue op, opAlpha;                   // from BlendOp; opAlpha unset = same as op
     friend bool operator==(const BlendState&, const BlendState&) = default;
 };
 
@@ -39,14 +41,19 @@ struct StencilState {
 };
 
 // Unset fields inherit from the enclosing SubShader/Category, then use Unity's defaults
-// (Blend Off, ZWrite On, ZTest LEqual, Cull Back, ColorMask RGBA, no Offset, no stencil).
+// (Blend Off, ZWrite On, ZTest LEqual, Cull Back, ColorMask RGBA, no Offset, no stencil,
+// AlphaToMask Off, Conservative False, ZClip True).
 struct RenderState {
     std::optional<BlendState> blend;
-    StateValue zWrite, zTest, cull, colorMask;
+    StateValue zWrite, zTest, cull, colorMask;                // colorMask: render target 0 only
     std::optional<std::pair<StateValue, StateValue>> offset;  // factor, units
     std::optional<StencilState> stencil;
+    StateValue alphaToMask, conservative, zClip;  // On/Off, True/False as written
 
-    // Fields unset here take the value from |outer| (the enclosing scope).
+    // Fields unset here take the value from |outer| (the enclosing scope). Blend factors and
+    // BlendOp inherit separately (a pass may write only `BlendOp`); `Blend Off` written here
+    // is kept. Stencil fields inherit one by one (a pass may override only `Ref`).
+    // Example: {Cull Off}.inheritedFrom({Cull Front, ZWrite Off}) == {Cull Off, ZWrite Off}.
     RenderState inheritedFrom(const RenderState& outer) const;
     friend bool operator==(const RenderState&, const RenderState&) = default;
 };

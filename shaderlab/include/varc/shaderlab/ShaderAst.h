@@ -26,8 +26,8 @@ struct Property {
     std::string displayName;              // "Albedo"
     PropertyType type = PropertyType::Float;
     float rangeMin = 0, rangeMax = 0;     // Range(min, max)
-    std::string defaultValue;             // as written: "(1,1,1,1)", "0.5", "\"white\" {}"
-    SourceLocation location;
+    std::string defaultValue;             // source as written: "(1, 1, 1, 1)", "\"white\" {}"
+    SourceLocation location;              // of the property name
 };
 
 enum class ProgramLanguage { Cg, Hlsl, Glsl };
@@ -45,7 +45,8 @@ struct Pass {
     RenderState state;       // effective: SubShader/Category state already inherited
     std::optional<ProgramBlock> program;
     // Shared *INCLUDE blocks in scope (shader, category, subshader, pass level) in file order;
-    // Unity prepends these to the program text.
+    // Unity prepends these to the program text. A block applies to every pass of its scope,
+    // also to passes written before it.
     std::vector<ProgramBlock> includeBlocks;
     std::string usePass;     // `UsePass "Shader/PASSNAME"`: a reference instead of a pass body
     SourceLocation location; // of the `Pass`/`UsePass` keyword
@@ -54,10 +55,10 @@ struct Pass {
 };
 
 struct SubShader {
-    Tags tags;
-    int lod = 0;
-    std::vector<Pass> passes;
-    SourceLocation location;
+    Tags tags;                 // own tags, then an enclosing Category's that are not overridden
+    int lod = 0;               // `LOD n`; when 0, the enclosing Category's LOD
+    std::vector<Pass> passes;  // `Pass` and `UsePass` in file order; `GrabPass` is not listed
+    SourceLocation location;   // of the `SubShader` keyword
 };
 
 struct ShaderFile {
@@ -67,7 +68,9 @@ struct ShaderFile {
     std::optional<std::string> fallback; // `Fallback "VertexLit"`; nullopt for none or Off
     bool fallbackOff = false;            // `Fallback Off` written explicitly
     std::string customEditor;
-    SourceLocation location;
+    // `Dependency "BaseMapShader" = "Name"` pairs in declaration order.
+    std::vector<std::pair<std::string, std::string>> dependencies;
+    SourceLocation location;             // of the `Shader` keyword
 };
 
 }  // namespace varc::shaderlab

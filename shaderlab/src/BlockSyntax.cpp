@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: Apache-2.0
+// Syntax shared by Shader, Category, SubShader and Pass bodies: Tags, LOD and block loops.
+#include "BlockSyntax.h"
+
+#include <string>
+
+#include "ProgramKeyword.h"
+#include "state/ValueSyntax.h"
+#include "varc/core/Check.h"
+
+namespace varc::shaderlab {
+
+bool parseTags(TokenCursor& cursor, Tags& tags) {
+    Token open;
+    if (!cursor.expectSymbol('{', "after Tags", &open)) return false;
+    return parseBlockItems(cursor, open, [&] {
+        Token key, value;
+        if (!cursor.expect(TokenKind::String, "a tag name string or '}' in Tags", key) ||
+            !cursor.expectSymbol('=', "after tag name \"" + std::string(key.text) + "\"") ||
+            !cursor.expect(TokenKind::String, "a tag value string", value)) {
+            return false;
+        }
+        for (auto& [existingKey, existingValue] : tags) {
+            if (equalsIgnoreCase(existingKey, key.text)) {
+                existingValue = std::string(value.text);
+                return true;
+            }
+        }
+        tags.emplace_back(std::string(key.text), std::string(value.text));
+        return true;
+    });
+}
+
+bool parseLod(TokenCursor& cursor, int& lod) {
+    Token number;
+    if (!cursor.expect(TokenKind::Number, "an integer after LOD", number)) return false;
+    std::optional<int> value = integerOf(number);
+    if (!value || *value < 0) {
+        return cursor.fail(number.location, "invalid LOD " + number.describe() +
+                                                "; expected a non-negative integer");
+    }
+    lod = *value;
+    return true;
+}
+
+bool reportUnexpectedCommand(TokenCursor& cursor, std::string_view scope) {
+    const Token& token = cursor.peek();
+    if (token.is(TokenKind::Identifier)) {
+        return cursor.fail(token.location, "unknown ShaderLab command " + token.describe());
+    }
+    return cursor.unexpected("a command or '}' in " + std::string(scope));
+}
+
+bool parseIncludeBlock(TokenCursor& cursor, IncludeScopes& scopes) {
+    const ProgramKeyword* program = findProgramKeyword(cursor.peek());
+    VARC_CHECK(program) << "parseIncludeBlock without a program keyword";
+    if (!program->isInclude) {
+        return cursor.fail(cursor.peek().location,
+                           std::string(program->name) + " block must be inside a Pass");
+    }
+    Token keyword = cursor.next();
+    std::optional<ProgramBlock> block = cursor.captureProgram(keyword, *program);
+    if (!block) return false;
+    scopes.addInclude(std::move(*block));
+    return true;
+}
+
+}  // namespace varc::shaderlab
