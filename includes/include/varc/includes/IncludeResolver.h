@@ -2,6 +2,7 @@
 // Splices #include files into a program block, with guards, cycle checks and #line mapping.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,8 @@
 #include "varc/includes/SourceMap.h"
 
 namespace varc::includes {
+
+class ScanCache;
 
 // Where `#include "name"` is searched, in order, after the including file's own directory.
 struct IncludeOptions {
@@ -30,8 +33,11 @@ struct ExpandedSource {
     // The spliced text. Every switch between files is marked with `#line <line> <fileId>`
     // (the number of the *next* line), so any later line maps back to its origin.
     std::string text;
-    // The `#pragma` lines Unity honours: from the root text itself or from a file pulled in with
-    // `#include_with_pragmas` directly from the root. Pragmas in plain #include files are ignored.
+    // The `#pragma` lines Unity honours, in text order: from the root texts themselves and from
+    // files pulled in with `#include_with_pragmas` by a root (or by such a file, every link of the
+    // chain being #include_with_pragmas). Pragmas in plain #include files, and in anything
+    // reached through one, are ignored. Lines in // or /* */ comments never count; #if is not
+    // evaluated. A file's pragmas are collected once per expansion.
     std::vector<PragmaLine> pragmas;
     // Every file read (not the root), normalised paths, in first-read order, for depfiles and
     // cache keys.
@@ -45,16 +51,30 @@ struct ExpandedSource {
 //  * A file guarded by `#pragma once` or by `#ifndef X`/`#if !defined(X)` + `#define X` ...
 //    `#endif` around the whole file is spliced once per expansion (again only if the first
 //    splice sat inside a conditional block, since that one may have been compiled out).
+//    The conditional a guard itself opens does not count as "inside a conditional block".
+//    A `#pragma once` file that may be spliced twice is wrapped in `#ifndef VARC_ONCE_<id>` /
+//    `#define VARC_ONCE_<id>` ... `#endif // VARC_ONCE_<id>` so only one copy is compiled.
 //  * Errors: missing file (at the #include, listing the directories searched), include cycle
 //    (naming the chain "a.cginc -> b.cginc -> a.cginc"), malformed #include; each with
-//    `note: in file included from ...` notes for the include stack.
+//    `note: in file included from here` notes for the include stack, innermost first.
+//    A missing file inside an #if block is not an error: the #include becomes
+//    `#error varc: cannot find include file "x"`, which fails only in variants that reach it.
+//  * Directives inside // and /* */ comments are ignored; `\` continuations join lines.
+//  * Each file is read once per SourceMap (a registered path is taken from the map) and
+//    scanned once per resolver. Not thread-safe.
 class IncludeResolver {
 public:
+    // |fileSystem| and |sourceMap| are borrowed and must outlive the resolver.
     IncludeResolver(const FileSystem& fileSystem, SourceMap& sourceMap, IncludeOptions options);
+    ~IncludeResolver();
+    IncludeResolver(IncludeResolver&&) noexcept;
 
     // Splices |roots| in order into one text (e.g. a pass's CGINCLUDE blocks, then its
-    // CGPROGRAM block), sharing guard state. The text starts with `#line` for roots[0].origin.
-    // Returns nullopt after reporting at least one error to |sink|.
+    // CGPROGRAM block), sharing guard state. The text starts with `#line` for roots[0].origin;
+    // each #include line is replaced by the file's text. Returns nullopt after reporting at
+    // least one error to |sink| (warnings alone do not fail). Example: root "#include \"b.h\"
+    // \nx\n" at shader.shader:5:1 (FileId 0), b.h = "y\n" (FileId 1) gives
+    // "#line 5 0\n#line 1 1\ny\n#line 6 0\nx\n".
     std::optional<ExpandedSource> expand(const std::vector<SourceText>& roots,
                                          DiagnosticSink& sink);
 
@@ -62,6 +82,7 @@ private:
     const FileSystem& mFileSystem;
     SourceMap& mSourceMap;
     IncludeOptions mOptions;
+    std::unique_ptr<ScanCache> mScanCache;  // scans of included files, by FileId
 };
 
 }  // namespace varc::includes

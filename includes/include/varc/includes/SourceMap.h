@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <unordered_map>
+#include <vector>
 
 #include "varc/core/SourceLocation.h"
 
@@ -16,10 +17,14 @@ namespace varc::includes {
 // Not thread-safe for writes; register files before fanning out.
 class SourceMap {
 public:
-    // Registers |path| with |contents| (or returns the existing id for |path|).
+    // Registers |path| with |contents| and returns its new id. The path is stored normalised
+    // (normalizePath), so "a/./b.h" and "a/b.h" are one file; registering a path again returns
+    // the existing id and keeps the first contents.
     FileId addFile(const std::string& path, std::string contents);
+    // The id of |path| (normalised first), or nullopt when it was never registered.
     std::optional<FileId> find(const std::string& path) const;
 
+    // The normalised path and the contents of |id|; |id| must have been returned by addFile.
     const std::string& path(FileId id) const;
     const std::string& contents(FileId id) const;
     size_t size() const { return mFiles.size(); }
@@ -33,6 +38,7 @@ private:
     struct File {
         std::string path;
         std::string contents;
+        std::vector<size_t> lineStarts;  // offset of each line's first character
     };
     std::deque<File> mFiles;  // deque: references stay valid as files are added
     std::unordered_map<std::string, FileId> mByPath;

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: Apache-2.0
+// Files held in a map, for tests and tools that build sources on the fly.
+#include "varc/includes/FileSystem.h"
+
+namespace varc::includes {
+
+InMemoryFileSystem& InMemoryFileSystem::add(const std::string& path, std::string contents) {
+    mFiles[normalizePath(path)] = std::move(contents);
+    return *this;
+}
+
+std::optional<std::string> InMemoryFileSystem::read(const std::string& path) const {
+    auto it = mFiles.find(normalizePath(path));
+    if (it == mFiles.end()) return std::nullopt;
+    return it->second;
+}
+
+bool InMemoryFileSystem::isFile(const std::string& path) const {
+    return mFiles.count(normalizePath(path)) > 0;
+}
+
+}  // namespace varc::includes
