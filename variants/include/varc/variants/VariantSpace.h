@@ -18,10 +18,13 @@ namespace varc::variants {
 // A pass's keyword table: every keyword its sets declare, sorted by name; index = VariantKey bit.
 class KeywordTable {
 public:
+    // |sortedUniqueNames| must be sorted, free of duplicates and at most kMaxKeywords long
+    // (checked: violating it is a programmer error).
     explicit KeywordTable(std::vector<std::string> sortedUniqueNames);
     size_t size() const { return mNames.size(); }
     const std::string& name(size_t index) const { return mNames[index]; }
     const std::vector<std::string>& names() const { return mNames; }
+    // The bit of |name|, or nullopt when the pass does not declare it. O(log n).
     std::optional<size_t> indexOf(std::string_view name) const;
 
     // Keywords not declared by the pass are ignored (Unity: R = requested ∩ declared).
@@ -29,13 +32,22 @@ public:
     // Names of the keywords on in |key|, sorted.
     std::vector<std::string> namesOf(const VariantKey& key) const;
 
+    // The bit layout as a filament-style ASCII table, one row per keyword, e.g.
+    //   +-----+-----------+
+    //   | bit | keyword   |
+    //   +-----+-----------+
+    //   |   0 | FOG_EXP   |
+    //   +-----+-----------+
+    // An empty table yields the header rows only.
+    std::string bitLayoutTable() const;
+
 private:
     std::vector<std::string> mNames;
 };
 
 // The expanded variant space of a pass: the cartesian product of its sets, in Unity's order
 // (first declared set varies slowest, options in declared order), minus skip_variants and the
-// shortcuts' validity rules.
+// shortcuts' validity rules. Keywords removed by skip_variants are not in the table.
 class VariantSpace {
 public:
     // Reports an error (at the offending set) when the pass declares more than
@@ -47,26 +59,42 @@ public:
     // Number of variants without enumerating them: the product over independent groups of sets,
     // enumerating only sets linked by validity rules. Saturates at UINT64_MAX.
     uint64_t count() const;
-    // Number before skip_variants and rules ("Full variant space").
-    uint64_t fullCount() const;
+    // Number before skip_variants and rules ("Full variant space"). Saturates at UINT64_MAX.
+    uint64_t fullCount() const { return mFullCount; }
 
     // Calls |visit| for each variant in enumeration order; stop early by returning false.
     void forEach(const std::function<bool(const VariantKey&)>& visit) const;
     // All variants in enumeration order (use count() first; this allocates).
     std::vector<VariantKey> enumerate() const;
 
-    // The sets after shortcut expansion and skip removal, as VariantKey options per set.
+    // One entry per PassKeywords::sets entry, same order: the set's options as VariantKeys in
+    // declared order (the no-keyword entry is the empty key), skipped options removed.
     const std::vector<std::vector<VariantKey>>& setOptions() const { return mSetOptions; }
 
 private:
-    VariantSpace(KeywordTable table) : mTable(std::move(table)) {}
-    KeywordTable mTable;
-    std::vector<std::vector<VariantKey>> mSetOptions;  // per set, declared order, skips removed
-    std::vector<std::vector<VariantKey>> mFullSetOptions;
+    explicit VariantSpace(KeywordTable table) : mTable(std::move(table)) {}
+
+    // A ValidityRule over declared keywords. A variant with |keyword| on must have one bit of
+    // |requiresAnyOf| on (when |hasRequirement|; an empty mask then means "never valid") and no
+    // bit of |forbids|. Checked once the last set it mentions (|lastSet|) has been chosen.
     struct Rule {
         VariantKey keyword, requiresAnyOf, forbids;
+        bool hasRequirement = false;
+        size_t lastSet = 0;
     };
+    bool rulesHold(size_t set, const VariantKey& prefix) const;
+    // Odometer over |sets| (ascending set indices), pruning on rules; false = stopped early.
+    bool walk(const std::vector<size_t>& sets,
+              const std::function<bool(const VariantKey&)>& visit) const;
+
+    KeywordTable mTable;
+    std::vector<std::vector<VariantKey>> mSetOptions;  // per set, declared order, skips removed
+    uint64_t mFullCount = 1;
     std::vector<Rule> mRules;
+    std::vector<std::vector<size_t>> mRulesAtSet;    // per set: rules whose lastSet it is
+    std::vector<std::vector<size_t>> mLinkedGroups;  // sets linked by rules, ascending
+    std::vector<size_t> mFreeSets;                   // sets no rule mentions
+    std::vector<size_t> mAllSets;                    // 0..n-1, for forEach
     friend class VariantSpaceBuilder;
 };
 

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: Apache-2.0
+// lightKeywords: every light type x cookie x shadow mode per pass kind (unity-keywords.md §4).
+#include <gtest/gtest.h>
+
+#include "VariantsTestSupport.h"
+#include "varc/variants/LightKeywords.h"
+#include "varc/variants/VariantSelector.h"
+
+namespace varc::variants {
+namespace {
+
+using Names = std::vector<std::string>;
+
+struct Case {
+    LightType type;
+    bool cookie;
+    ShadowMode shadows;
+    Names expected;  // ForwardAdd / DeferredLight without HDR
+};
+
+// Spot lights always carry a cookie, so |cookie| does not change their keyword. Directional
+// soft shadows are filtered by the screen-space collector: no SHADOWS_SOFT (docs/KEYWORDS.md).
+const std::vector<Case> kLightPassCases = {
+    {LightType::Directional, false, ShadowMode::None, {"DIRECTIONAL"}},
+    {LightType::Directional, false, ShadowMode::Hard, {"DIRECTIONAL", "SHADOWS_SCREEN"}},
+    {LightType::Directional, false, ShadowMode::Soft, {"DIRECTIONAL", "SHADOWS_SCREEN"}},
+    {LightType::Directional, true, ShadowMode::None, {"DIRECTIONAL_COOKIE"}},
+    {LightType::Directional, true, ShadowMode::Hard, {"DIRECTIONAL_COOKIE", "SHADOWS_SCREEN"}},
+    {LightType::Directional, true, ShadowMode::Soft, {"DIRECTIONAL_COOKIE", "SHADOWS_SCREEN"}},
+    {LightType::Point, false, ShadowMode::None, {"POINT"}},
+    {LightType::Point, false, ShadowMode::Hard, {"POINT", "SHADOWS_CUBE"}},
+    {LightType::Point, false, ShadowMode::Soft, {"POINT", "SHADOWS_CUBE", "SHADOWS_SOFT"}},
+    {LightType::Point, true, ShadowMode::None, {"POINT_COOKIE"}},
+    {LightType::Point, true, ShadowMode::Hard, {"POINT_COOKIE", "SHADOWS_CUBE"}},
+    {LightType::Point, true, ShadowMode::Soft, {"POINT_COOKIE", "SHADOWS_CUBE", "SHADOWS_SOFT"}},
+    {LightType::Spot, false, ShadowMode::None, {"SPOT"}},
+    {LightType::Spot, false, ShadowMode::Hard, {"SHADOWS_DEPTH", "SPOT"}},
+    {LightType::Spot, false, ShadowMode::Soft, {"SHADOWS_DEPTH", "SHADOWS_SOFT", "SPOT"}},
+    {LightType::Spot, true, ShadowMode::None, {"SPOT"}},
+    {LightType::Spot, true, ShadowMode::Hard, {"SHADOWS_DEPTH", "SPOT"}},
+    {LightType::Spot, true, ShadowMode::Soft, {"SHADOWS_DEPTH", "SHADOWS_SOFT", "SPOT"}},
+};
+
+LightDescription describe(const Case& c) {
+    LightDescription light;
+    light.type = c.type;
+    light.cookie = c.cookie;
+    light.shadows = c.shadows;
+    return light;
+}
+
+TEST(LightKeywords, ForwardAddForEveryTypeCookieAndShadowMode) {
+    for (const Case& c : kLightPassCases) {
+        LightDescription light = describe(c);
+        light.vertexLightCount = 3;  // ignored by the add pass
+        light.hdr = true;            // ignored by the add pass
+        EXPECT_EQ(lightKeywords(light, LightPassKind::ForwardAdd), c.expected);
+    }
+}
+
+TEST(LightKeywords, DeferredLightAddsHdr) {
+    for (const Case& c : kLightPassCases) {
+        LightDescription light = describe(c);
+        EXPECT_EQ(lightKeywords(light, LightPassKind::DeferredLight), c.expected);
+        light.hdr = true;
+        Names withHdr = c.expected;
+        withHdr.push_back("UNITY_HDR_ON");  // sorts last among these names
+        EXPECT_EQ(lightKeywords(light, LightPassKind::DeferredLight), withHdr);
+    }
+}
+
+TEST(LightKeywords, ForwardBaseAlwaysDefinesDirectional) {
+    for (const Case& c : kLightPassCases) {
+        LightDescription light = describe(c);
+        bool mainShadows =
+            c.type == LightType::Directional && !c.cookie && c.shadows != ShadowMode::None;
+        Names expected =
+            mainShadows ? Names{"DIRECTIONAL", "SHADOWS_SCREEN"} : Names{"DIRECTIONAL"};
+        EXPECT_EQ(lightKeywords(light, LightPassKind::ForwardBase), expected);
+    }
+}
+
+TEST(LightKeywords, ForwardBaseVertexLightsAndProbes) {
+    LightDescription light;
+    light.shadows = ShadowMode::Soft;
+    light.vertexLightCount = 2;
+    light.lightProbes = true;
+    EXPECT_EQ(lightKeywords(light, LightPassKind::ForwardBase),
+              (Names{"DIRECTIONAL", "LIGHTPROBE_SH", "SHADOWS_SCREEN", "VERTEXLIGHT_ON"}));
+    light.vertexLightCount = 0;
+    light.shadows = ShadowMode::None;
+    EXPECT_EQ(lightKeywords(light, LightPassKind::ForwardBase),
+              (Names{"DIRECTIONAL", "LIGHTPROBE_SH"}));
+}
+
+// Every request the light model makes must be a real variant of the matching shortcut, so
+// strict selection never fails for built-in lights.
+void expectStrictHits(const std::vector<std::string>& pragmas, LightPassKind pass, bool hdr) {
+    VariantSpace space = testing::spaceOf(pragmas).value();
+    std::vector<VariantKey> variants = space.enumerate();
+    for (const Case& c : kLightPassCases) {
+        for (int vertexLights : {0, 4}) {
+            LightDescription light = describe(c);
+            light.hdr = hdr;
+            light.vertexLightCount = vertexLights;
+            VariantKey requested = space.table().keyOf(lightKeywords(light, pass));
+            EXPECT_TRUE(selectVariant(variants, requested, SelectionPolicy::Strict).exact)
+                << ::testing::PrintToString(lightKeywords(light, pass));
+        }
+    }
+}
+
+TEST(LightKeywords, RequestsAreExactVariantsOfTheShortcuts) {
+    expectStrictHits({"multi_compile_fwdadd"}, LightPassKind::ForwardAdd, false);
+    expectStrictHits({"multi_compile_fwdadd_fullshadows"}, LightPassKind::ForwardAdd, false);
+    expectStrictHits({"multi_compile_lightpass", "multi_compile ___ UNITY_HDR_ON"},
+                     LightPassKind::DeferredLight, true);
+    expectStrictHits({"multi_compile_lightpass", "multi_compile ___ UNITY_HDR_ON"},
+                     LightPassKind::DeferredLight, false);
+    expectStrictHits({"multi_compile_fwdbase"}, LightPassKind::ForwardBase, false);
+}
+
+TEST(LightKeywords, ParsesNamesCaseInsensitively) {
+    EXPECT_EQ(parseLightType("Directional"), LightType::Directional);
+    EXPECT_EQ(parseLightType("point"), LightType::Point);
+    EXPECT_EQ(parseLightType("SPOT"), LightType::Spot);
+    EXPECT_EQ(parseLightType("area"), std::nullopt);
+    EXPECT_EQ(parseShadowMode("none"), ShadowMode::None);
+    EXPECT_EQ(parseShadowMode("Hard"), ShadowMode::Hard);
+    EXPECT_EQ(parseShadowMode("soft"), ShadowMode::Soft);
+    EXPECT_EQ(parseShadowMode("pcf"), std::nullopt);
+}
+
+TEST(LightKeywords, PassKindFromLightMode) {
+    EXPECT_EQ(lightPassKindFromLightMode("ForwardBase"), LightPassKind::ForwardBase);
+    EXPECT_EQ(lightPassKindFromLightMode("FORWARDADD"), LightPassKind::ForwardAdd);
+    EXPECT_EQ(lightPassKindFromLightMode("Deferred"), LightPassKind::DeferredLight);
+    EXPECT_EQ(lightPassKindFromLightMode(""), LightPassKind::DeferredLight);
+    EXPECT_EQ(lightPassKindFromLightMode("ShadowCaster"), std::nullopt);
+}
+
+}  // namespace
+}  // namespace varc::variants

@@ -1,0 +1,283 @@
+// SPDX-License-Identifier: Apache-2.0
+// parsePragmas: directive forms, underscore rules, errors with columns, other pragmas.
+#include <gtest/gtest.h>
+
+#include "VariantsTestSupport.h"
+#include "varc/variants/PragmaParser.h"
+
+namespace varc::variants {
+namespace {
+
+using testing::messages;
+using testing::parse;
+using testing::pragmaLines;
+using Keywords = std::vector<std::string>;
+
+PassKeywords parseOk(const std::vector<std::string>& texts) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> keywords = parse(texts, sink);
+    EXPECT_TRUE(keywords.has_value());
+    EXPECT_FALSE(sink.hasErrors());
+    return keywords.value_or(PassKeywords{});
+}
+
+// The single error |texts| produce; fails the test if there is not exactly one.
+Diagnostic parseError(const std::vector<std::string>& texts, uint32_t hashColumn = 1) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> keywords = parsePragmas(pragmaLines(texts, hashColumn), sink);
+    EXPECT_FALSE(keywords.has_value());
+    EXPECT_EQ(sink.errorCount(), 1u);
+    for (const Diagnostic& diagnostic : sink.diagnostics()) {
+        if (diagnostic.severity == Severity::Error) return diagnostic;
+    }
+    return {};
+}
+
+TEST(PragmaParser, PlainMultiCompileIsOneSet) {
+    PassKeywords kw = parseOk({"multi_compile _ A B"});
+    ASSERT_EQ(kw.sets.size(), 1u);
+    EXPECT_EQ(kw.sets[0].kind, DirectiveKind::MultiCompile);
+    EXPECT_FALSE(kw.sets[0].local);
+    EXPECT_EQ(kw.sets[0].stages, kStageAll);
+    EXPECT_EQ(kw.sets[0].keywords, (Keywords{"", "A", "B"}));
+    EXPECT_EQ(kw.sets[0].directive, "multi_compile");
+    EXPECT_EQ(kw.sets[0].location, (SourceLocation{7, 1, 1}));
+}
+
+TEST(PragmaParser, LocalAndStageSuffixesCombine) {
+    PassKeywords kw = parseOk({"multi_compile_local_fragment _ A", "shader_feature_local_vertex B",
+                               "multi_compile_vertex C D", "shader_feature_local E"});
+    ASSERT_EQ(kw.sets.size(), 4u);
+    EXPECT_TRUE(kw.sets[0].local);
+    EXPECT_EQ(kw.sets[0].stages, kStageFragment);
+    EXPECT_EQ(kw.sets[0].directive, "multi_compile_local_fragment");
+    EXPECT_EQ(kw.sets[1].kind, DirectiveKind::ShaderFeature);
+    EXPECT_TRUE(kw.sets[1].local);
+    EXPECT_EQ(kw.sets[1].stages, kStageVertex);
+    EXPECT_FALSE(kw.sets[2].local);
+    EXPECT_EQ(kw.sets[2].stages, kStageVertex);
+    EXPECT_TRUE(kw.sets[3].local);
+    EXPECT_EQ(kw.sets[3].stages, kStageAll);
+}
+
+TEST(PragmaParser, EveryStageSuffixMapsToItsBit) {
+    const std::pair<const char*, uint32_t> cases[] = {
+        {"vertex", kStageVertex}, {"fragment", kStageFragment}, {"hull", kStageHull},
+        {"domain", kStageDomain}, {"geometry", kStageGeometry}, {"raytracing", kStageRaytracing}};
+    for (const auto& [suffix, bit] : cases) {
+        PassKeywords kw = parseOk({std::string("multi_compile_") + suffix + " _ A"});
+        ASSERT_EQ(kw.sets.size(), 1u) << suffix;
+        EXPECT_EQ(kw.sets[0].stages, bit) << suffix;
+    }
+}
+
+TEST(PragmaParser, ShaderFeatureSingleKeywordImpliesOff) {
+    PassKeywords kw = parseOk({"shader_feature FANCY", "shader_feature RED GREEN"});
+    EXPECT_EQ(kw.sets[0].keywords, (Keywords{"", "FANCY"}));
+    EXPECT_EQ(kw.sets[1].keywords, (Keywords{"RED", "GREEN"}));
+}
+
+TEST(PragmaParser, MultiCompileSingleKeywordIsAlwaysOn) {
+    PassKeywords kw = parseOk({"multi_compile ALWAYS"});
+    EXPECT_EQ(kw.sets[0].keywords, (Keywords{"ALWAYS"}));
+}
+
+TEST(PragmaParser, AllUnderscoreNamesAreTheNoKeywordEntry) {
+    PassKeywords kw = parseOk({"multi_compile ___ UNITY_HDR_ON", "multi_compile A __"});
+    EXPECT_EQ(kw.sets[0].keywords, (Keywords{"", "UNITY_HDR_ON"}));
+    EXPECT_EQ(kw.sets[1].keywords, (Keywords{"A", ""}));
+}
+
+TEST(PragmaParser, SeveralUnderscoreEntriesInOneSetIsAnError) {
+    Diagnostic error = parseError({"multi_compile _ __ A"});
+    EXPECT_NE(error.message.find("no-keyword entry"), std::string::npos) << error.message;
+    EXPECT_EQ(error.location.column, 25u);
+}
+
+TEST(PragmaParser, KeywordRepeatedInSetPointsAtSecondOccurrence) {
+    // Same line as tests/cli/cases/error-duplicate-keyword: '#' at column 13.
+    Diagnostic error = parseError({"multi_compile _ FOG_ON LIGHT_ON FOG_ON"}, 13);
+    EXPECT_EQ(error.location, (SourceLocation{7, 1, 53}));
+    EXPECT_NE(error.message.find("'FOG_ON'"), std::string::npos);
+    ASSERT_EQ(error.notes.size(), 1u);
+    EXPECT_EQ(error.notes[0].location.column, 37u);
+}
+
+TEST(PragmaParser, RepeatedSetInAnyOrderIsAnError) {
+    Diagnostic error = parseError({"multi_compile A B", "shader_feature B A"});
+    EXPECT_NE(error.message.find("duplicate keyword set"), std::string::npos) << error.message;
+    EXPECT_NE(error.message.find("line 1"), std::string::npos) << error.message;
+    EXPECT_EQ(error.location, (SourceLocation{7, 2, 9}));
+    ASSERT_EQ(error.notes.size(), 1u);
+    EXPECT_EQ(error.notes[0].location, (SourceLocation{7, 1, 9}));
+}
+
+TEST(PragmaParser, KeywordInTwoSetsNamesTheFirstDeclaration) {
+    Diagnostic error = parseError({"multi_compile _ A", "multi_compile B A"});
+    EXPECT_NE(error.message.find("'A'"), std::string::npos);
+    EXPECT_NE(error.message.find("line 1, column 25"), std::string::npos) << error.message;
+    EXPECT_EQ(error.location, (SourceLocation{7, 2, 25}));
+    ASSERT_EQ(error.notes.size(), 1u);
+    EXPECT_EQ(error.notes[0].location, (SourceLocation{7, 1, 25}));
+}
+
+TEST(PragmaParser, UserSetSharingAShortcutKeywordIsAnError) {
+    Diagnostic error = parseError({"multi_compile_fwdadd", "multi_compile _ SPOT_X SPOT"});
+    EXPECT_NE(error.message.find("'SPOT'"), std::string::npos);
+    EXPECT_EQ(error.location.column, 32u);
+}
+
+TEST(PragmaParser, UnknownShortcutSuggestsTheClosestName) {
+    Diagnostic error = parseError({"multi_compile_fwdadd_fullshadow"}, 13);
+    EXPECT_EQ(error.location.column, 21u);
+    EXPECT_NE(error.message.find("did you mean 'multi_compile_fwdadd_fullshadows'?"),
+              std::string::npos)
+        << error.message;
+}
+
+TEST(PragmaParser, UnknownShortcutFarFromEverythingHasNoSuggestion) {
+    Diagnostic error = parseError({"multi_compile_zzzzzzzzzzzz"});
+    EXPECT_NE(error.message.find("unknown multi_compile shortcut"), std::string::npos);
+    EXPECT_EQ(error.message.find("did you mean"), std::string::npos) << error.message;
+}
+
+TEST(PragmaParser, MisspelledSuffixFormSuggestsTheSuffixForm) {
+    Diagnostic error = parseError({"multi_compile_fragmnt _ A"});
+    EXPECT_NE(error.message.find("did you mean 'multi_compile_fragment'?"), std::string::npos)
+        << error.message;
+}
+
+TEST(PragmaParser, UnknownShaderFeatureSuffixIsAnError) {
+    Diagnostic error = parseError({"shader_feature_locl A"});
+    EXPECT_NE(error.message.find("did you mean 'shader_feature_local'?"), std::string::npos)
+        << error.message;
+}
+
+TEST(PragmaParser, UnknownShortcutOptionSuggestsTheClosestOption) {
+    Diagnostic error = parseError({"multi_compile_fwdbase nolightmaps"});
+    EXPECT_EQ(error.location.column, 31u);
+    EXPECT_NE(error.message.find("did you mean 'nolightmap'?"), std::string::npos) << error.message;
+}
+
+TEST(PragmaParser, OptionWithoutEffectOnTheShortcutWarns) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> kw = parse({"multi_compile_fog novertexlight"}, sink);
+    ASSERT_TRUE(kw.has_value());
+    ASSERT_EQ(messages(sink, Severity::Warning).size(), 1u);
+    EXPECT_NE(messages(sink, Severity::Warning)[0].find("no effect"), std::string::npos);
+    EXPECT_EQ(kw->sets.size(), 1u);
+}
+
+TEST(PragmaParser, InvalidKeywordNameIsAnError) {
+    Diagnostic error = parseError({"multi_compile _ GOOD 3BAD"});
+    EXPECT_NE(error.message.find("'3BAD'"), std::string::npos);
+    EXPECT_EQ(error.location.column, 30u);
+    EXPECT_EQ(parseError({"shader_feature A-B"}).location.column, 24u);
+}
+
+TEST(PragmaParser, EmptyKeywordDirectiveIsAnError) {
+    EXPECT_NE(parseError({"multi_compile"}).message.find("declares no keywords"),
+              std::string::npos);
+    EXPECT_NE(parseError({"shader_feature_local"}).message.find("declares no keywords"),
+              std::string::npos);
+}
+
+TEST(PragmaParser, DynamicBranchIsRecordedWithoutVariants) {
+    PassKeywords kw = parseOk({"dynamic_branch FAST", "dynamic_branch_local _ X Y"});
+    EXPECT_TRUE(kw.sets.empty());
+    ASSERT_EQ(kw.dynamicBranches.size(), 2u);
+    EXPECT_EQ(kw.dynamicBranches[0].kind, DirectiveKind::DynamicBranch);
+    EXPECT_EQ(kw.dynamicBranches[0].keywords, (Keywords{"", "FAST"}));
+    EXPECT_TRUE(kw.dynamicBranches[1].local);
+}
+
+TEST(PragmaParser, DynamicBranchWinsOverMultiCompileWithAWarning) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> kw =
+        parse({"multi_compile _ A B", "shader_feature C", "dynamic_branch A C"}, sink);
+    ASSERT_TRUE(kw.has_value());
+    EXPECT_EQ(messages(sink, Severity::Warning).size(), 2u);
+    ASSERT_EQ(kw->sets.size(), 1u);  // `shader_feature C` has nothing left and is dropped
+    EXPECT_EQ(kw->sets[0].keywords, (Keywords{"", "B"}));
+    EXPECT_EQ(kw->dynamicBranches.size(), 1u);
+    EXPECT_EQ(sink.diagnostics()[0].notes.size(), 1u);
+}
+
+TEST(PragmaParser, DynamicBranchRejectsStageSuffixes) {
+    EXPECT_NE(parseError({"dynamic_branch_fragment A"}).message.find("no stage suffix"),
+              std::string::npos);
+}
+
+TEST(PragmaParser, SkipVariantsIsCollectedFromAnyPosition) {
+    PassKeywords kw = parseOk({"skip_variants A", "multi_compile _ A B", "skip_variants C D"});
+    EXPECT_EQ(kw.skipped, (Keywords{"A", "C", "D"}));
+    EXPECT_NE(parseError({"skip_variants _"}).message.find("invalid keyword"), std::string::npos);
+}
+
+TEST(PragmaParser, EntryPointsTargetRenderersInstancingAndOthers) {
+    PassKeywords kw = parseOk({"vertex vert", "fragment frag", "geometry geom", "hull hs",
+                               "domain ds", "target 4.5", "exclude_renderers gles d3d9",
+                               "only_renderers vulkan", "instancing_options assumeuniformscaling",
+                               "enable_d3d11_debug_symbols", "surface surf Standard"});
+    EXPECT_EQ(kw.vertexEntry, "vert");
+    EXPECT_EQ(kw.fragmentEntry, "frag");
+    EXPECT_EQ(kw.geometryEntry, "geom");
+    EXPECT_EQ(kw.hullEntry, "hs");
+    EXPECT_EQ(kw.domainEntry, "ds");
+    EXPECT_EQ(kw.target, "4.5");
+    EXPECT_EQ(kw.excludeRenderers, (Keywords{"gles", "d3d9"}));
+    EXPECT_EQ(kw.onlyRenderers, (Keywords{"vulkan"}));
+    EXPECT_EQ(kw.instancingOptions, (Keywords{"assumeuniformscaling"}));
+    EXPECT_EQ(kw.otherPragmas, (Keywords{"enable_d3d11_debug_symbols", "surface surf Standard"}));
+    EXPECT_TRUE(kw.sets.empty());
+}
+
+TEST(PragmaParser, ConflictingEntryPointsAreAnError) {
+    Diagnostic error = parseError({"vertex a", "vertex b"});
+    EXPECT_EQ(error.location, (SourceLocation{7, 2, 16}));
+    EXPECT_TRUE(parseOk({"vertex a", "vertex a"}).vertexEntry == "a");
+    EXPECT_NE(parseError({"fragment"}).message.find("needs a function name"), std::string::npos);
+}
+
+TEST(PragmaParser, ShortcutSetsCarryDirectiveAndPragmaLocation) {
+    PassKeywords kw = parseOk({"target 3.0", "multi_compile_fwdadd_fullshadows"});
+    ASSERT_EQ(kw.sets.size(), 3u);
+    for (const KeywordSetDecl& set : kw.sets) {
+        EXPECT_EQ(set.directive, "multi_compile_fwdadd_fullshadows");
+        EXPECT_EQ(set.location, (SourceLocation{7, 2, 1}));
+        EXPECT_EQ(set.kind, DirectiveKind::MultiCompile);
+    }
+    EXPECT_EQ(kw.sets[0].keywords, (Keywords{"", "SHADOWS_SOFT"}));
+    ASSERT_EQ(kw.rules.size(), 4u);
+    EXPECT_EQ(kw.rules[0].origin, "multi_compile_fwdadd_fullshadows");
+}
+
+TEST(PragmaParser, ShortcutDeclaredTwiceIsOneError) {
+    Diagnostic error = parseError({"multi_compile_fwdbase", "multi_compile_fwdbase"});
+    EXPECT_NE(error.message.find("declared twice"), std::string::npos);
+    EXPECT_EQ(error.location.line, 2u);
+}
+
+TEST(PragmaParser, ProceduralInstancingAddsAKeywordToTheInstancingSet) {
+    PassKeywords kw = parseOk({"multi_compile_instancing", "instancing_options procedural:setup"});
+    ASSERT_EQ(kw.sets.size(), 1u);
+    EXPECT_EQ(kw.sets[0].keywords, (Keywords{"", "INSTANCING_ON", "PROCEDURAL_INSTANCING_ON"}));
+    EXPECT_EQ(parseOk({"multi_compile_instancing"}).sets[0].keywords.size(), 2u);
+}
+
+TEST(PragmaParser, ReportsEveryErrorOfTheBlock) {
+    DiagnosticList sink;
+    EXPECT_FALSE(parse({"multi_compile _ A A", "multi_compile_nope", "multi_compile 1X"}, sink));
+    EXPECT_EQ(sink.errorCount(), 3u);
+}
+
+TEST(PragmaParser, UnknownColumnStaysUnknown) {
+    DiagnosticList sink;
+    std::vector<PragmaLine> lines = {{"multi_compile A A", SourceLocation{3, 4, 0}}};
+    EXPECT_FALSE(parsePragmas(lines, sink));
+    ASSERT_EQ(sink.errorCount(), 1u);
+    EXPECT_EQ(sink.diagnostics()[0].location, (SourceLocation{3, 4, 0}));
+}
+
+}  // namespace
+}  // namespace varc::variants

@@ -1,0 +1,265 @@
+// SPDX-License-Identifier: Apache-2.0
+// Reads one program block's pragmas line by line into PassKeywords (behind parsePragmas).
+#include "pragma/PragmaReader.h"
+
+#include <algorithm>
+
+#include "pragma/DeclarationChecker.h"
+#include "pragma/EditDistance.h"
+
+namespace varc::variants {
+
+namespace {
+
+std::vector<std::string> shortcutDirectives() {
+    std::vector<std::string> names;
+    for (const Shortcut& shortcut : builtinShortcuts()) names.push_back(shortcut.directive());
+    return names;
+}
+
+std::vector<std::string> optionNames() {
+    std::vector<std::string> names;
+    for (const ShortcutOption& option : shortcutOptions()) names.push_back(option.name);
+    return names;
+}
+
+std::string didYouMean(std::string_view name, const std::vector<std::string>& candidates) {
+    std::optional<std::string> suggestion = suggestName(name, candidates);
+    return suggestion ? "; did you mean '" + *suggestion + "'?" : "";
+}
+
+std::vector<std::string> tokenTexts(const std::vector<PragmaToken>& tokens, size_t first) {
+    std::vector<std::string> texts;
+    for (size_t i = first; i < tokens.size(); ++i) texts.emplace_back(tokens[i].text);
+    return texts;
+}
+
+}  // namespace
+
+void PragmaReader::error(SourceLocation location, std::string message,
+                         std::vector<DiagnosticNote> notes) {
+    mFailed = true;
+    mSink.report({Severity::Error, location, std::move(message), std::move(notes)});
+}
+
+void PragmaReader::read(const PragmaLine& line) {
+    std::vector<PragmaToken> tokens = tokenizePragma(line);
+    if (tokens.empty()) return;
+    mHash = line.location;
+    std::string_view name = tokens[0].text;
+    DirectiveForm form = classifyDirective(name);
+    switch (form.status) {
+        case FormStatus::Set:
+            return readKeywordSet(form, tokens);
+        case FormStatus::Shortcut:
+            return readShortcut(form, tokens);
+        case FormStatus::UnknownSuffix:
+            return reportUnknownDirective(tokens[0], keywordDirectiveSpellings());
+        case FormStatus::StageOnDynamicBranch:
+            return error(tokens[0].location,
+                         "'" + std::string(name) + "': dynamic_branch takes no stage suffix");
+        case FormStatus::NotKeywordDirective:
+            break;
+    }
+    if (name == "vertex") return readEntry(mResult.vertexEntry, tokens);
+    if (name == "fragment") return readEntry(mResult.fragmentEntry, tokens);
+    if (name == "geometry") return readEntry(mResult.geometryEntry, tokens);
+    if (name == "hull") return readEntry(mResult.hullEntry, tokens);
+    if (name == "domain") return readEntry(mResult.domainEntry, tokens);
+    if (name == "skip_variants") return readSkip(tokens);
+    readOther(line, tokens);
+}
+
+void PragmaReader::readOther(const PragmaLine& line, const std::vector<PragmaToken>& tokens) {
+    std::string_view name = tokens[0].text;
+    auto append = [&](std::vector<std::string>& list) {
+        std::vector<std::string> rest = tokenTexts(tokens, 1);
+        list.insert(list.end(), rest.begin(), rest.end());
+    };
+    if (name == "exclude_renderers") return append(mResult.excludeRenderers);
+    if (name == "only_renderers") return append(mResult.onlyRenderers);
+    if (name == "instancing_options") return append(mResult.instancingOptions);
+    if (name == "target") {
+        if (tokens.size() < 2) return error(tokens[0].location, "'#pragma target' needs a value");
+        std::string_view text = line.text;
+        mResult.target = std::string(text.substr(tokens[1].text.data() - text.data()));
+        return;
+    }
+    mResult.otherPragmas.push_back(line.text);
+}
+
+void PragmaReader::readKeywordSet(const DirectiveForm& form,
+                                  const std::vector<PragmaToken>& tokens) {
+    DeclaredSet set;
+    set.decl.kind = form.kind;
+    set.decl.local = form.local;
+    set.decl.stages = form.stages;
+    set.decl.directive = std::string(tokens[0].text);
+    set.decl.location = mHash;
+    set.directiveLocation = tokens[0].location;
+    if (tokens.size() == 1) {
+        return error(tokens[0].location,
+                     "'#pragma " + set.decl.directive + "' declares no keywords");
+    }
+    if (!readSetKeywords(tokens, set)) return;
+    // `shader_feature X` and `dynamic_branch X` mean `_ X`; `multi_compile X` stays always-on.
+    bool single = set.decl.keywords.size() == 1 && !set.decl.keywords[0].empty();
+    if (single && form.kind != DirectiveKind::MultiCompile) {
+        set.decl.keywords.insert(set.decl.keywords.begin(), "");
+        set.keywordLocations.insert(set.keywordLocations.begin(), tokens[0].location);
+    }
+    (form.kind == DirectiveKind::DynamicBranch ? mBranches : mSets).push_back(std::move(set));
+}
+
+bool PragmaReader::readSetKeywords(const std::vector<PragmaToken>& tokens, DeclaredSet& set) {
+    bool ok = true;
+    for (size_t i = 1; i < tokens.size(); ++i) {
+        const PragmaToken& token = tokens[i];
+        std::string keyword = isAllUnderscores(token.text) ? "" : std::string(token.text);
+        if (!keyword.empty() && !isIdentifier(keyword)) {
+            error(token.location, "invalid keyword name '" + keyword +
+                                      "': keywords must be identifiers ([A-Za-z_][A-Za-z0-9_]*)");
+            ok = false;
+            continue;
+        }
+        auto& keywords = set.decl.keywords;
+        auto previous = std::find(keywords.begin(), keywords.end(), keyword);
+        if (previous != keywords.end()) {
+            SourceLocation first = set.keywordLocations[previous - keywords.begin()];
+            error(token.location,
+                  keyword.empty() ? "more than one no-keyword entry ('" + std::string(token.text) +
+                                        "') in one set"
+                                  : "keyword '" + keyword + "' appears twice in one set",
+                  {{first, "first appears here"}});
+            ok = false;
+            continue;
+        }
+        keywords.push_back(keyword);
+        set.keywordLocations.push_back(token.location);
+    }
+    return ok;
+}
+
+void PragmaReader::reportUnknownDirective(const PragmaToken& name,
+                                          const std::vector<std::string>& known) {
+    std::vector<std::string> candidates = known;
+    std::vector<std::string> more = name.text.starts_with("multi_compile_")
+                                        ? keywordDirectiveSpellings()
+                                        : std::vector<std::string>{};
+    candidates.insert(candidates.end(), more.begin(), more.end());
+    std::string kind =
+        name.text.starts_with("multi_compile_") ? "multi_compile shortcut" : "keyword directive";
+    error(name.location, "unknown " + kind + " '" + std::string(name.text) + "'" +
+                             didYouMean(name.text, candidates));
+}
+
+void PragmaReader::readShortcut(const DirectiveForm& form, const std::vector<PragmaToken>& tokens) {
+    const Shortcut* shortcut = findShortcut(form.shortcutName);
+    if (shortcut == nullptr) return reportUnknownDirective(tokens[0], shortcutDirectives());
+    std::string directive = shortcut->directive();
+    auto [seen, inserted] = mShortcutsSeen.emplace(directive, tokens[0].location);
+    if (!inserted) {
+        return error(tokens[0].location, "'" + directive + "' is declared twice",
+                     {{seen->second, "first declared here"}});
+    }
+    std::vector<const ShortcutOption*> options;
+    if (!readShortcutOptions(tokens, *shortcut, options)) return;
+    ShortcutExpansion expansion = expandShortcut(*shortcut, options, mHash);
+    for (KeywordSetDecl& decl : expansion.sets) {
+        std::vector<SourceLocation> locations(decl.keywords.size(), tokens[0].location);
+        mSets.push_back({std::move(decl), std::move(locations), tokens[0].location});
+    }
+    mResult.rules.insert(mResult.rules.end(), expansion.rules.begin(), expansion.rules.end());
+}
+
+// Options are validated against the global list; one that names no keyword of this shortcut
+// is accepted with a warning (e.g. `multi_compile_fog novertexlight`).
+bool PragmaReader::readShortcutOptions(const std::vector<PragmaToken>& tokens,
+                                       const Shortcut& shortcut,
+                                       std::vector<const ShortcutOption*>& options) {
+    const std::string directive = shortcut.directive();
+    bool ok = true;
+    for (size_t i = 1; i < tokens.size(); ++i) {
+        const ShortcutOption* option = findShortcutOption(tokens[i].text);
+        if (option == nullptr) {
+            error(tokens[i].location, "unknown option '" + std::string(tokens[i].text) + "' for '" +
+                                          directive + "'" +
+                                          didYouMean(tokens[i].text, optionNames()));
+            ok = false;
+            continue;
+        }
+        bool effective = false;
+        for (const auto& set : shortcut.sets) {
+            for (const std::string& keyword : option->removes) {
+                effective |= std::find(set.begin(), set.end(), keyword) != set.end();
+            }
+        }
+        if (!effective) {
+            mSink.warning(tokens[i].location,
+                          "option '" + option->name + "' has no effect on '" + directive + "'");
+        }
+        options.push_back(option);
+    }
+    return ok;
+}
+
+void PragmaReader::readEntry(std::string& entry, const std::vector<PragmaToken>& tokens) {
+    std::string stage(tokens[0].text);
+    if (tokens.size() < 2)
+        return error(tokens[0].location, "'#pragma " + stage + "' needs a function name");
+    if (tokens.size() > 2) {
+        return error(tokens[2].location, "unexpected '" + std::string(tokens[2].text) +
+                                             "' after '#pragma " + stage + " " +
+                                             std::string(tokens[1].text) + "'");
+    }
+    auto [seen, inserted] = mEntriesSeen.emplace(stage, tokens[1].location);
+    if (!inserted && entry != tokens[1].text) {
+        return error(tokens[1].location,
+                     "'#pragma " + stage + " " + std::string(tokens[1].text) +
+                         "' conflicts with the earlier '" + entry + "'",
+                     {{seen->second, "first declared here"}});
+    }
+    entry = std::string(tokens[1].text);
+}
+
+void PragmaReader::readSkip(const std::vector<PragmaToken>& tokens) {
+    if (tokens.size() == 1) {
+        mSink.warning(tokens[0].location, "'#pragma skip_variants' lists no keywords");
+    }
+    for (size_t i = 1; i < tokens.size(); ++i) {
+        if (!isIdentifier(tokens[i].text) || isAllUnderscores(tokens[i].text)) {
+            error(tokens[i].location,
+                  "invalid keyword name '" + std::string(tokens[i].text) + "' in skip_variants");
+            continue;
+        }
+        mResult.skipped.emplace_back(tokens[i].text);
+    }
+}
+
+// `instancing_options procedural:Fn` anywhere in the block adds PROCEDURAL_INSTANCING_ON to the
+// multi_compile_instancing set (unity-keywords.md §1.1: 3 variants with procedural instancing).
+void PragmaReader::addProceduralInstancing() {
+    bool procedural =
+        std::any_of(mResult.instancingOptions.begin(), mResult.instancingOptions.end(),
+                    [](const std::string& option) { return option.starts_with("procedural:"); });
+    if (!procedural) return;
+    for (DeclaredSet& set : mSets) {
+        if (set.decl.directive != "multi_compile_instancing") continue;
+        set.decl.keywords.push_back("PROCEDURAL_INSTANCING_ON");
+        set.keywordLocations.push_back(set.directiveLocation);
+    }
+}
+
+std::optional<PassKeywords> PragmaReader::finish() {
+    addProceduralInstancing();
+    DeclarationChecker checker(mSink);
+    checker.resolveDynamicBranches(mSets, mBranches);
+    bool unique = checker.checkUnique(mSets);
+    unique = checker.checkUnique(mBranches) && unique;
+    if (mFailed || !unique) return std::nullopt;
+    for (DeclaredSet& set : mSets) mResult.sets.push_back(std::move(set.decl));
+    for (DeclaredSet& set : mBranches) mResult.dynamicBranches.push_back(std::move(set.decl));
+    return std::move(mResult);
+}
+
+}  // namespace varc::variants
