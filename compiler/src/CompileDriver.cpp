@@ -19,6 +19,7 @@
 #include "varc/compiler/GlslLegacyPreamble.h"
 #include "varc/compiler/ParallelFor.h"
 #include "varc/compiler/PassDefines.h"
+#include "varc/compiler/SpirvReflection.h"
 #include "varc/compiler/StagePruner.h"
 #include "varc/compiler/StageEffects.h"
 
@@ -59,6 +60,7 @@ struct StageResult {
 struct CompiledSource {
     bool ok = false;
     std::vector<uint32_t> spirv;
+    pack::ProgramReflection reflection;
     std::vector<Diagnostic> diagnostics;
 };
 
@@ -231,18 +233,28 @@ CompiledSource Builder::compileSource(const SourceProgram& source) const {
                                       "generated SPIR-V is invalid: " + *invalid, {}});
         return result;
     }
+    auto reflection = reflectSpirv(optimized.spirv, compiled.spirv,
+                                   source.stage == variants::kStageVertex);
+    if (!reflection) {
+        result.diagnostics.push_back({Severity::Error, job.pass->pass->program->origin,
+                                      "cannot reflect the generated SPIR-V", {}});
+        return result;
+    }
     result.ok = true;
     result.spirv = std::move(optimized.spirv);
+    result.reflection = std::move(*reflection);
     return result;
 }
 
 bool Builder::compileSources() {
     mCompiled.assign(mSources.size(), {});
     std::atomic<bool> failed{false};
+    std::atomic<size_t> done{0};
     parallelFor(mSources.size(), mThreads, [&](size_t i) {
         if (failed.load() && !mOptions.keepGoing) return;
         mCompiled[i] = compileSource(mSources[i]);
         if (!mCompiled[i].ok) failed.store(true);
+        if (mOptions.progress) mOptions.progress(done.fetch_add(1) + 1, mSources.size());
     }, /*firstAlone=*/true);
     for (size_t i = 0; i < mSources.size(); ++i) {
         const SourceProgram& source = mSources[i];
@@ -285,7 +297,8 @@ BuildOutput Builder::assemble() {
                                                   static_cast<uint32_t>(output.programs.size()));
             if (inserted) {
                 output.programs.push_back({program.stage, program.entryPoint, mCompiled[source].spirv,
-                                           job.shaderIndex, job.passIndex});
+                                           mCompiled[source].reflection, job.shaderIndex,
+                                           job.passIndex});
             }
             finalIds[source] = it->second;
         }

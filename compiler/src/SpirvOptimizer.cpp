@@ -37,6 +37,9 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& spirv, OptimizationLevel 
     if (level == OptimizationLevel::Performance) optimizer.RegisterPerformancePasses();
     if (level == OptimizationLevel::Size) optimizer.RegisterSizePasses();
     optimizer.RegisterPass(spvtools::CreateStripReflectInfoPass());
+    // Renumber ids densely: glslang numbers ids over all code it parsed, so two programs that
+    // differ only in stripped code would otherwise differ in bytes and escape deduplication.
+    optimizer.RegisterPass(spvtools::CreateCompactIdsPass());
     spvtools::ValidatorOptions validatorOptions;
     spvtools::OptimizerOptions options;
     options.set_run_validator(false);  // validated once, explicitly, afterwards

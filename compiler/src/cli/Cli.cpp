@@ -2,10 +2,21 @@
 // The `varc` command-line tool as a library: option parsing, then one command.
 #include "varc/compiler/cli/Cli.h"
 
+#include <unistd.h>
+
+#include <chrono>
 #include <filesystem>
+#include <functional>
+#include <memory>
+#include <mutex>
 #include <ostream>
 
+#include "varc/compiler/CompileDriver.h"
+#include "varc/compiler/Depfile.h"
+#include "varc/compiler/PackAssembler.h"
+#include "varc/compiler/PackWriter.h"
 #include "varc/compiler/ShaderLoader.h"
+#include "varc/compiler/cli/BuildReport.h"
 #include "varc/compiler/cli/DiagnosticPrinter.h"
 #include "varc/compiler/cli/LockCheck.h"
 #include "varc/compiler/cli/LockFile.h"
@@ -111,6 +122,103 @@ int runCheck(const Options& options, Session& session, std::ostream& out, std::o
     return kExitOk;
 }
 
+// Raw bytes count every variant's stages as if stored separately; unique counts each module once.
+PackSizes measureSpirv(const compiler::BuildOutput& build) {
+    PackSizes sizes;
+    for (const compiler::CompiledProgram& program : build.programs) {
+        sizes.uniqueSpirvBytes += program.spirv.size() * sizeof(uint32_t);
+    }
+    for (const compiler::CompiledPass& pass : build.passes) {
+        for (const compiler::CompiledVariant& variant : pass.variants) {
+            for (uint32_t program : variant.programs) {
+                if (program == compiler::kNoProgram) continue;
+                sizes.rawSpirvBytes += build.programs[program].spirv.size() * sizeof(uint32_t);
+            }
+        }
+    }
+    return sizes;
+}
+
+std::vector<std::string> buildDependencies(const std::vector<compiler::LoadedShader>& shaders) {
+    std::vector<std::string> dependencies;
+    for (const compiler::LoadedShader& shader : shaders) {
+        dependencies.push_back(shader.path);
+        for (const compiler::LoadedPass& pass : shader.passes) {
+            dependencies.insert(dependencies.end(), pass.source.dependencies.begin(),
+                                pass.source.dependencies.end());
+        }
+    }
+    return dependencies;
+}
+
+// Prints "[done/total] compiling" on a terminal, at most ~20 times a second.
+std::function<void(size_t, size_t)> progressPrinter(std::ostream& err) {
+    if (!::isatty(STDERR_FILENO)) return {};
+    auto state = std::make_shared<std::pair<std::mutex, std::chrono::steady_clock::time_point>>();
+    return [state, &err](size_t done, size_t total) {
+        std::lock_guard<std::mutex> lock(state->first);
+        auto now = std::chrono::steady_clock::now();
+        if (done != total && now - state->second < std::chrono::milliseconds(50)) return;
+        state->second = now;
+        err << "\r[" << done << "/" << total << "] compiling" << (done == total ? "\n" : "")
+            << std::flush;
+    };
+}
+
+int runBuild(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
+    auto start = std::chrono::steady_clock::now();
+    std::vector<compiler::LoadedShader> shaders;
+    if (!loadAll(options, session, shaders)) {
+        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+        return kExitFailure;
+    }
+    compiler::BuildOptions buildOptions;
+    buildOptions.optimization = *compiler::parseOptimizationLevel(options.optimization);
+    buildOptions.jobs = options.jobs;
+    buildOptions.keepGoing = options.keepGoing;
+    buildOptions.progress = progressPrinter(err);
+    auto build = compiler::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);
+    printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+    if (!build) {
+        err << "varc build: failed; " << options.outputPath << " was not written\n";
+        return kExitFailure;
+    }
+    PackSizes sizes = measureSpirv(*build);
+    std::optional<pack::PackContents> contents;
+    if (compiler::checkStageInterfaces(shaders, *build, session.diagnostics)) {
+        contents = compiler::assemblePack(shaders, *build, session.sourceMap,
+                                          "optimization=" + options.optimization, session.diagnostics);
+    }
+    if (!contents) {
+        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+        err << "varc build: failed; " << options.outputPath << " was not written\n";
+        return kExitFailure;
+    }
+    compiler::PackWriteStats stats;
+    Status written = compiler::writePack(options.outputPath, *contents, {}, &stats);
+    if (!written) {
+        err << "varc: error: " << written.error().detail << "\n";
+        return kExitFailure;
+    }
+    sizes.packBytes = stats.packBytes;
+    if (!options.depfilePath.empty()) {
+        Status depfile = writeFileAtomically(
+            options.depfilePath, compiler::makeDepfile(options.outputPath, buildDependencies(shaders)));
+        if (!depfile) {
+            err << "varc: error: " << depfile.error().detail << "\n";
+            return kExitFailure;
+        }
+    }
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (options.json) {
+        out << buildReportJson(shaders, *build, sizes, seconds).dump() << "\n";
+    } else {
+        printBuildReport(shaders, *build, sizes, seconds, out);
+        out << "wrote " << options.outputPath << "\n";
+    }
+    return kExitOk;
+}
+
 }  // namespace
 
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -121,6 +229,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         case Command::Variants: return runVariants(options, session, out, err);
         case Command::Lock: return runLock(options, session, out, err);
         case Command::Check: return runCheck(options, session, out, err);
+        case Command::Build: return runBuild(options, session, out, err);
         case Command::None: break;
     }
     err << "varc: error: no command given\n";

@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <ostream>
 
@@ -64,6 +65,32 @@ void addCheck(CLI::App& app, Options& options, std::string& growthText) {
     cmd->callback([&options] { options.command = Command::Check; });
 }
 
+void addBuild(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("build", "Compile every variant into a SPIR-V pack");
+    cmd->add_option("-o,--output", options.outputPath, "Pack file to write")->required();
+    cmd->add_option("-j,--jobs", options.jobs, "Worker threads (default: all cores)");
+    cmd->add_option("--optimization", options.optimization,
+                    "Optimisation level; also written -O0, -O (default), -Os")
+        ->check(CLI::IsMember({"-O0", "-O", "-Os"}));
+    cmd->add_option("--depfile", options.depfilePath, "Write a Make-style dependency file");
+    cmd->add_flag("--json", options.json, "Print the build summary as JSON");
+    cmd->add_flag("--keep-going", options.keepGoing, "Compile everything to report all errors");
+    addInputOptions(*cmd, options);
+    cmd->callback([&options] { options.command = Command::Build; });
+}
+
+// CLI11 has no multi-letter short options, so -O0/-O/-Os become --optimization=<same>.
+std::vector<std::string> normalizeArguments(int argc, const char* const* argv) {
+    std::vector<std::string> args;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "-O0" || arg == "-O" || arg == "-Os") arg = "--optimization=" + arg;
+        args.push_back(arg);
+    }
+    std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
+    return args;
+}
+
 }  // namespace
 
 std::optional<int> parseOptions(int argc, const char* const* argv, Options& options,
@@ -74,8 +101,10 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
     addVariants(app, options);
     addLock(app, options);
     addCheck(app, options, growthText);
+    addBuild(app, options);
     try {
-        app.parse(argc, argv);
+        std::vector<std::string> args = normalizeArguments(argc, argv);
+        app.parse(args);
     } catch (const CLI::ParseError& e) {
         int code = app.exit(e, out, err);
         return code == 0 ? kExitOk : kExitUsage;

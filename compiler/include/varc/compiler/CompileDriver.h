@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "varc/compiler/SpirvOptimizer.h"
 #include "varc/core/Diagnostic.h"
 #include "varc/includes/SourceMap.h"
+#include "varc/pack/ProgramReflection.h"
 #include "varc/variants/VariantKey.h"
 
 namespace varc::compiler {
@@ -29,6 +31,9 @@ struct BuildOptions {
     unsigned jobs = 0;         // 0 = the machine's hardware concurrency
     bool keepGoing = false;    // compile everything even after errors, to report them all
     bool pruneStages = true;   // prune each stage to what its entry point reaches before dedup
+    // Called from worker threads after each distinct program compiles: (done, total). Must be
+    // thread-safe; may be empty.
+    std::function<void(size_t, size_t)> progress;
 };
 
 // One optimised, validated SPIR-V module, shared by every variant whose stage compiles to it.
@@ -36,6 +41,7 @@ struct CompiledProgram {
     uint32_t stage = 0;  // variants::StageBits bit
     std::string entryPoint;
     std::vector<uint32_t> spirv;
+    pack::ProgramReflection reflection;
     size_t shaderIndex = 0, passIndex = 0;  // where it was first used (for source info)
 };
 

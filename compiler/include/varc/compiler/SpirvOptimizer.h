@@ -22,7 +22,8 @@ struct SpirvResult {
 };
 
 // Runs HLSL legalisation (always: glslang's HLSL output needs it), then the passes of |level|,
-// then strips reflection-only decorations (HLSL semantics). Deterministic for equal input.
+// then strips reflection-only decorations (HLSL semantics) and compacts ids, so equal programs
+// give equal bytes. Deterministic for equal input.
 SpirvResult optimizeSpirv(const std::vector<uint32_t>& spirv, OptimizationLevel level);
 
 // Validates |spirv| for Vulkan 1.0; returns the validator's message, or nullopt when valid.

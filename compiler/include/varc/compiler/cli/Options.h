@@ -10,7 +10,7 @@
 
 namespace varc::cli {
 
-enum class Command { None, Variants, Lock, Check };
+enum class Command { None, Variants, Lock, Check, Build };
 
 // A growth allowance for `varc check --max-growth`: N variants, or N percent of the lock.
 struct GrowthLimit {
@@ -28,6 +28,12 @@ struct Options {
     std::string lockPath;                  // lock: -o; check: --lock
     std::optional<GrowthLimit> maxGrowth;  // check --max-growth N|N%
     std::optional<uint64_t> budget;        // check --budget N
+    // build
+    std::string outputPath;                // -o OUT.svpack
+    std::string depfilePath;               // --depfile F
+    unsigned jobs = 0;                     // -j N; 0 = hardware concurrency
+    std::string optimization = "-O";       // -O0 | -O | -Os
+    bool keepGoing = false;                // --keep-going
 };
 
 // Exit codes shared by every subcommand.

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: Apache-2.0
+// The in-memory model of a pack, shared by the writer (compiler) and the reader (runtime).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "varc/pack/PackRenderState.h"
+#include "varc/pack/ProgramReflection.h"
+#include "varc/variants/VariantKey.h"
+
+namespace varc::pack {
+
+// Stage slots of a variant, in this order everywhere (matches compiler::stageSlot).
+enum class Stage : uint8_t { Vertex = 0, Fragment = 1, Geometry = 2, Hull = 3, Domain = 4 };
+inline constexpr size_t kStageCount = 5;
+inline constexpr uint32_t kNoProgram = 0xffffffffu;
+
+constexpr size_t stageIndex(Stage stage) { return static_cast<size_t>(stage); }
+constexpr const char* stageName(Stage stage) {
+    constexpr const char* kNames[kStageCount] = {"vertex", "fragment", "geometry", "hull",
+                                                 "domain"};
+    return kNames[stageIndex(stage)];
+}
+
+// Where a program came from, for runtime error messages (variant -> program -> file:line).
+struct SourceInfo {
+    std::string file;                       // the .shader (or .glsl) file of the program block
+    uint32_t line = 0;                      // line of the program block (CGPROGRAM), 1-based
+    std::vector<std::string> dependencies;  // every file included while compiling it
+    friend bool operator==(const SourceInfo&, const SourceInfo&) = default;
+};
+
+// One compiled stage program. Programs are shared by every variant that compiles to them.
+struct PackProgram {
+    Stage stage = Stage::Vertex;
+    std::string entryPoint;       // "vert"
+    std::vector<uint32_t> spirv;  // the module's words
+    ProgramReflection reflection;
+    SourceInfo source;
+    friend bool operator==(const PackProgram&, const PackProgram&) = default;
+};
+
+struct PackVariant {
+    variants::VariantKey key;  // bits index PackPass::keywordTable
+    // Per stage slot: index into PackContents::programs, or kNoProgram.
+    std::array<uint32_t, kStageCount> programs{kNoProgram, kNoProgram, kNoProgram, kNoProgram,
+                                               kNoProgram};
+    friend bool operator==(const PackVariant&, const PackVariant&) = default;
+};
+
+// A declared keyword set: `#pragma multi_compile_local _ FOO BAR` is
+// {"multi_compile_local", {"", "FOO", "BAR"}} ("" = the no-keyword option).
+struct DeclaredSet {
+    std::string directive;
+    std::vector<std::string> keywords;
+    friend bool operator==(const DeclaredSet&, const DeclaredSet&) = default;
+};
+
+struct PackPass {
+    uint32_t index = 0;     // the pass's position in its source shader
+    std::string name;       // `Name "..."`, "" if none
+    std::string lightMode;  // the LightMode tag, "" if none
+    std::vector<std::pair<std::string, std::string>> tags;  // declaration order
+    PackRenderState state;
+    std::vector<std::string> keywordTable;  // sorted, unique, <= 256; bit i = keyword i
+    std::vector<DeclaredSet> sets;          // declaration order
+    std::vector<PackVariant> variants;      // Unity's enumeration order; keys unique
+    friend bool operator==(const PackPass&, const PackPass&) = default;
+};
+
+struct PackShader {
+    std::string name;  // `Shader "Custom/Name"`
+    std::vector<PackPass> passes;
+    friend bool operator==(const PackShader&, const PackShader&) = default;
+};
+
+struct ToolVersion {
+    std::string name;     // "varc", "glslang", "SPIRV-Tools", "zstd"
+    std::string version;  // "0.1.0"
+    friend bool operator==(const ToolVersion&, const ToolVersion&) = default;
+};
+
+// Everything a pack holds. The writer renumbers programs in first-use order (shader, pass,
+// variant in enumeration order, stage) after merging equal ones, and drops unused programs; a
+// reader's decodePack() returns that normalised form.
+struct PackContents {
+    std::vector<ToolVersion> toolchain;
+    uint64_t inputsHash = 0;  // hash of every input of the build (sources, options, versions)
+    std::vector<PackShader> shaders;
+    std::vector<PackProgram> programs;
+    friend bool operator==(const PackContents&, const PackContents&) = default;
+};
+
+}  // namespace varc::pack

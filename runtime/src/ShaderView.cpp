@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: Apache-2.0
+// One shader of an open Pack: its name and passes.
+#include "varc/runtime/ShaderView.h"
+
+#include "AsciiCase.h"
+#include "PackImage.h"
+#include "varc/pack/PackTables.h"
+
+namespace varc::runtime {
+
+using pack::Chunk;
+
+std::string_view ShaderView::name() const {
+    return mImage->string(mImage->get(Chunk::Shaders, mIndex, pack::kShaderName));
+}
+
+size_t ShaderView::passCount() const {
+    return mImage->get(Chunk::Shaders, mIndex, pack::kShaderPassCount);
+}
+
+std::optional<PassView> ShaderView::pass(size_t position) const {
+    if (position >= passCount()) return std::nullopt;
+    uint32_t first = mImage->get(Chunk::Shaders, mIndex, pack::kShaderPassFirst);
+    return PassView(mImage, mIndex, first + static_cast<uint32_t>(position));
+}
+
+std::optional<PassView> ShaderView::pass(std::string_view lightMode) const {
+    for (size_t i = 0; i < passCount(); ++i) {
+        PassView candidate = *pass(i);
+        if (detail::equalsIgnoreAsciiCase(candidate.lightMode(), lightMode)) return candidate;
+    }
+    return std::nullopt;
+}
+
+}  // namespace varc::runtime

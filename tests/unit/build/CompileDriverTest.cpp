@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: Apache-2.0
+// The compile driver: distinct programs per stage, dedup before and after glslang, determinism
+// across thread counts, grouped and mapped errors.
+#include "varc/compiler/CompileDriver.h"
+
+#include <gtest/gtest.h>
+
+#include "varc/compiler/ShaderLoader.h"
+#include "varc/includes/FileSystem.h"
+#include "varc/variants/PassKeywords.h"
+
+namespace varc::compiler {
+namespace {
+
+// Two keywords, each tested by one stage only: 4 variants, 2 vertex + 2 fragment programs.
+constexpr const char* kTwoKeywordShader = R"(Shader "Test/TwoKeywords" {
+    SubShader {
+        Pass {
+            Tags { "LightMode" = "ForwardBase" }
+            CGPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            #pragma multi_compile _ WOBBLE
+            #pragma multi_compile _ TINTED
+            #include "Common.cginc"
+            float4 _Tint;
+            float4 vert(float4 p : POSITION) : SV_POSITION {
+            #ifdef WOBBLE
+                p.x += sin(p.y);
+            #endif
+                return p * scale();
+            }
+            float4 frag() : SV_Target {
+            #ifdef TINTED
+                return _Tint;
+            #else
+                return float4(1, 1, 1, 1);
+            #endif
+            }
+            ENDCG
+        }
+    }
+}
+)";
+
+constexpr const char* kCommon = R"(#ifndef COMMON_INCLUDED
+#define COMMON_INCLUDED
+float scale() { return 2.0; }
+#endif
+)";
+
+class CompileDriverTest : public ::testing::Test {
+protected:
+    std::optional<BuildOutput> build(const std::string& shaderText, BuildOptions options = {}) {
+        mFileSystem.add("shaders/test.shader", shaderText).add("shaders/Common.cginc", kCommon);
+        auto shader = loadShader("shaders/test.shader", mFileSystem, mSourceMap, {}, mDiagnostics);
+        if (!shader) return std::nullopt;
+        mShaders.clear();
+        mShaders.push_back(std::move(*shader));
+        return buildPrograms(mShaders, mSourceMap, options, mDiagnostics);
+    }
+
+    includes::InMemoryFileSystem mFileSystem;
+    includes::SourceMap mSourceMap;
+    DiagnosticList mDiagnostics;
+    std::vector<LoadedShader> mShaders;
+};
+
+TEST_F(CompileDriverTest, KeywordsTouchingOneStageEachGiveTwoProgramsPerStage) {
+    auto output = build(kTwoKeywordShader);
+    ASSERT_TRUE(output) << (mDiagnostics.diagnostics().empty() ? "" : mDiagnostics.diagnostics()[0].message);
+    ASSERT_EQ(output->passes.size(), 1u);
+    const CompiledPass& pass = output->passes[0];
+    EXPECT_EQ(pass.variants.size(), 4u);
+    EXPECT_EQ(pass.stats.distinctSources[stageSlot(variants::kStageVertex)], 2u);
+    EXPECT_EQ(pass.stats.distinctSources[stageSlot(variants::kStageFragment)], 2u);
+    EXPECT_EQ(pass.stats.distinctModules[stageSlot(variants::kStageVertex)], 2u);
+    EXPECT_EQ(pass.stats.distinctModules[stageSlot(variants::kStageFragment)], 2u);
+    EXPECT_EQ(output->compiledSources, 4u);
+    EXPECT_EQ(output->programs.size(), 4u);
+    ASSERT_EQ(pass.setStageEffects.size(), 2u);
+    EXPECT_EQ(pass.setStageEffects[0], static_cast<uint32_t>(variants::kStageVertex));
+    EXPECT_EQ(pass.setStageEffects[1], static_cast<uint32_t>(variants::kStageFragment));
+}
+
+TEST_F(CompileDriverTest, WithoutPruningEveryVariantTextIsDistinctButModulesStillDedup) {
+    BuildOptions options;
+    options.pruneStages = false;
+    auto output = build(kTwoKeywordShader, options);
+    ASSERT_TRUE(output);
+    const CompiledPass& pass = output->passes[0];
+    EXPECT_EQ(pass.stats.distinctSources[stageSlot(variants::kStageVertex)], 4u);
+    EXPECT_EQ(pass.stats.distinctModules[stageSlot(variants::kStageVertex)], 2u);
+    EXPECT_EQ(pass.stats.distinctModules[stageSlot(variants::kStageFragment)], 2u);
+}
+
+TEST_F(CompileDriverTest, OutputIsIdenticalForAnyThreadCount) {
+    BuildOptions one;
+    one.jobs = 1;
+    auto first = build(kTwoKeywordShader, one);
+    BuildOptions four;
+    four.jobs = 4;
+    auto second = build(kTwoKeywordShader, four);
+    ASSERT_TRUE(first && second);
+    ASSERT_EQ(first->programs.size(), second->programs.size());
+    for (size_t i = 0; i < first->programs.size(); ++i) {
+        EXPECT_EQ(first->programs[i].spirv, second->programs[i].spirv) << i;
+    }
+    for (size_t v = 0; v < first->passes[0].variants.size(); ++v) {
+        EXPECT_EQ(first->passes[0].variants[v].programs, second->passes[0].variants[v].programs);
+    }
+}
+
+TEST_F(CompileDriverTest, ReflectsSemanticsAndUniforms) {
+    auto output = build(kTwoKeywordShader);
+    ASSERT_TRUE(output);
+    const CompiledVariant& tinted = output->passes[0].variants[1];  // [TINTED]
+    const auto& vertex = output->programs[tinted.programs[stageSlot(variants::kStageVertex)]];
+    ASSERT_EQ(vertex.reflection.vertexInputs.size(), 1u);
+    EXPECT_EQ(vertex.reflection.vertexInputs[0].semantic, "POSITION");
+    EXPECT_EQ(vertex.reflection.vertexInputs[0].type, "float4");
+    const auto& fragment = output->programs[tinted.programs[stageSlot(variants::kStageFragment)]];
+    ASSERT_EQ(fragment.reflection.uniformBlocks.size(), 1u);
+    ASSERT_EQ(fragment.reflection.uniformBlocks[0].members.size(), 1u);
+    EXPECT_EQ(fragment.reflection.uniformBlocks[0].members[0].name, "_Tint");
+    EXPECT_EQ(fragment.reflection.uniformBlocks[0].members[0].type, "float4");
+}
+
+TEST_F(CompileDriverTest, ErrorInSharedIncludeIsReportedOnceWithVariantCountAndMappedLine) {
+    mFileSystem.add("shaders/Common.cginc", "float scale() { return undefinedValue; }\n");
+    std::string shader = kTwoKeywordShader;
+    shader.replace(shader.find("#include \"Common.cginc\""), 22, "#include \"Broken.cginc\"");
+    mFileSystem.add("shaders/Broken.cginc", "float scale() { return undefinedValue; }\n");
+    mFileSystem.add("shaders/test.shader", shader);
+    auto loaded = loadShader("shaders/test.shader", mFileSystem, mSourceMap, {}, mDiagnostics);
+    ASSERT_TRUE(loaded);
+    mShaders.push_back(std::move(*loaded));
+    BuildOptions options;
+    options.keepGoing = true;
+    EXPECT_FALSE(buildPrograms(mShaders, mSourceMap, options, mDiagnostics));
+    std::vector<Diagnostic> errors;
+    for (const Diagnostic& d : mDiagnostics.diagnostics()) {
+        if (d.severity == Severity::Error) errors.push_back(d);
+    }
+    ASSERT_FALSE(errors.empty());
+    EXPECT_EQ(mSourceMap.path(errors[0].location.file), "shaders/Broken.cginc");
+    EXPECT_EQ(errors[0].location.line, 1u);
+    EXPECT_NE(errors[0].message.find("undefinedValue"), std::string::npos) << errors[0].message;
+    size_t mentions = 0;
+    for (const Diagnostic& d : errors) mentions += d.message.find("undefinedValue") != std::string::npos;
+    EXPECT_EQ(mentions, 1u);
+    ASSERT_FALSE(errors[0].notes.empty());
+    EXPECT_NE(errors[0].notes.back().message.find("variants affected"), std::string::npos)
+        << errors[0].notes.back().message;
+    EXPECT_NE(errors[0].notes.back().message.find("stage of pass 0"), std::string::npos);
+}
+
+TEST_F(CompileDriverTest, MissingEntryPragmaIsAnError) {
+    std::string shader = kTwoKeywordShader;
+    shader.erase(shader.find("#pragma fragment frag"), 21);
+    EXPECT_FALSE(build(shader));
+    ASSERT_TRUE(mDiagnostics.hasErrors());
+    EXPECT_NE(mDiagnostics.diagnostics()[0].message.find("missing #pragma fragment"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace varc::compiler
