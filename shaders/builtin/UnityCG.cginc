@@ -1,6 +1,392 @@
 // SPDX-License-Identifier: Apache-2.0
-// varc built-in include: UnityCG.cginc. Declarations arrive with issue #4 (built-in include library);
-// this file exists so shaders that include it resolve for variant listing.
-#ifndef VARC_UNITYCG_INCLUDED
-#define VARC_UNITYCG_INCLUDED
+// varc built-in: UnityCG.cginc. Unity's common helper library for CG/HLSL programs: transforms,
+// view/light directions, vertex lights (Shade4PointLights), spherical harmonics (ShadeSH9),
+// screen positions and depth, packing, fog and shadow-caster macros. Written for varc from the
+// documented formulas (unity-keywords.md §4-§5, docs/SHADER_ABI.md); not derived from Unity.
+#ifndef UNITY_CG_INCLUDED
+#define UNITY_CG_INCLUDED
+
+#include "HLSLSupport.cginc"
+#include "UnityShaderVariables.cginc"
+#include "UnityInstancing.cginc"
+
+#define UNITY_PI 3.14159265359f
+#define UNITY_TWO_PI 6.28318530718f
+#define UNITY_FOUR_PI 12.56637061436f
+#define UNITY_INV_PI 0.31830988618f
+#define UNITY_INV_TWO_PI 0.15915494309f
+#define UNITY_INV_FOUR_PI 0.07957747155f
+#define UNITY_HALF_PI 1.57079632679f
+#define UNITY_INV_HALF_PI 0.636619772367f
+
+// varc renders in linear colour space (UNITY_COLORSPACE_GAMMA is never defined by the driver).
+#ifdef UNITY_COLORSPACE_GAMMA
+#define unity_ColorSpaceGrey fixed4(0.5, 0.5, 0.5, 0.5)
+#define unity_ColorSpaceDouble fixed4(2.0, 2.0, 2.0, 2.0)
+#define unity_ColorSpaceDielectricSpec half4(0.220916301, 0.220916301, 0.220916301, 1.0 - 0.220916301)
+#define unity_ColorSpaceLuminance half4(0.22, 0.707, 0.071, 0.0)
+#else
+#define unity_ColorSpaceGrey fixed4(0.214041144, 0.214041144, 0.214041144, 0.5)
+#define unity_ColorSpaceDouble fixed4(4.59479380, 4.59479380, 4.59479380, 2.0)
+// Dielectric F0 = 4 % (linear); a = 1 - F0. Used by DiffuseAndSpecularFromMetallic.
+#define unity_ColorSpaceDielectricSpec half4(0.04, 0.04, 0.04, 1.0 - 0.04)
+#define unity_ColorSpaceLuminance half4(0.0396819152, 0.458021790, 0.00609653955, 1.0)
 #endif
+
+// ---------------------------------------------------------------------------------------------
+// Standard vertex inputs.
+// ---------------------------------------------------------------------------------------------
+struct appdata_base {
+    float4 vertex : POSITION;
+    float3 normal : NORMAL;
+    float4 texcoord : TEXCOORD0;
+    UNITY_VERTEX_INPUT_INSTANCE_ID
+};
+struct appdata_tan {
+    float4 vertex : POSITION;
+    float4 tangent : TANGENT;
+    float3 normal : NORMAL;
+    float4 texcoord : TEXCOORD0;
+    UNITY_VERTEX_INPUT_INSTANCE_ID
+};
+struct appdata_full {
+    float4 vertex : POSITION;
+    float4 tangent : TANGENT;
+    float3 normal : NORMAL;
+    float4 texcoord : TEXCOORD0;
+    float4 texcoord1 : TEXCOORD1;
+    float4 texcoord2 : TEXCOORD2;
+    float4 texcoord3 : TEXCOORD3;
+    fixed4 color : COLOR;
+    UNITY_VERTEX_INPUT_INSTANCE_ID
+};
+struct appdata_img {
+    float4 vertex : POSITION;
+    half2 texcoord : TEXCOORD0;
+    UNITY_VERTEX_INPUT_INSTANCE_ID
+};
+
+// Legacy (Unity 4) macro: the object-space normal of a vertex input named `v`.
+#define SCALED_NORMAL v.normal
+
+// Object-space tangent frame of a vertex input named `v` (needs tangent and normal).
+#define TANGENT_SPACE_ROTATION \
+    float3 binormal = cross(normalize(v.normal), normalize(v.tangent.xyz)) * v.tangent.w; \
+    float3x3 rotation = float3x3(v.tangent.xyz, binormal, v.normal)
+
+// ---------------------------------------------------------------------------------------------
+// Colour space. Exact sRGB transfer functions (IEC 61966-2-1).
+// ---------------------------------------------------------------------------------------------
+inline float GammaToLinearSpaceExact(float value) {
+    if (value <= 0.04045F) return value / 12.92F;
+    if (value < 1.0F) return pow((value + 0.055F) / 1.055F, 2.4F);
+    return pow(value, 2.2F);
+}
+inline half3 GammaToLinearSpace(half3 sRGB) {
+    return half3(GammaToLinearSpaceExact(sRGB.r), GammaToLinearSpaceExact(sRGB.g), GammaToLinearSpaceExact(sRGB.b));
+}
+inline float LinearToGammaSpaceExact(float value) {
+    if (value <= 0.0F) return 0.0F;
+    if (value <= 0.0031308F) return 12.92F * value;
+    if (value < 1.0F) return 1.055F * pow(value, 0.4166667F) - 0.055F;
+    return pow(value, 0.45454545F);
+}
+inline half3 LinearToGammaSpace(half3 linRGB) {
+    return half3(LinearToGammaSpaceExact(linRGB.r), LinearToGammaSpaceExact(linRGB.g), LinearToGammaSpaceExact(linRGB.b));
+}
+// Rec. 709 luminance of a linear colour.
+inline half LinearRgbToLuminance(half3 linearRgb) { return dot(linearRgb, half3(0.2126729f, 0.7151522f, 0.0721750f)); }
+inline half Luminance(half3 rgb) { return dot(rgb, unity_ColorSpaceLuminance.rgb); }
+
+// ---------------------------------------------------------------------------------------------
+// Transforms. mul(M, v) with column vectors; matrices as documented in SHADER_ABI.md.
+// ---------------------------------------------------------------------------------------------
+inline float4 UnityObjectToClipPos(in float3 pos) {
+    return mul(UNITY_MATRIX_VP, mul(unity_ObjectToWorld, float4(pos, 1.0)));
+}
+inline float4 UnityObjectToClipPos(float4 pos) { return UnityObjectToClipPos(pos.xyz); }
+inline float4 UnityWorldToClipPos(in float3 pos) { return mul(UNITY_MATRIX_VP, float4(pos, 1.0)); }
+inline float4 UnityViewToClipPos(in float3 pos) { return mul(UNITY_MATRIX_P, float4(pos, 1.0)); }
+inline float3 UnityObjectToViewPos(in float3 pos) {
+    return mul(UNITY_MATRIX_V, mul(unity_ObjectToWorld, float4(pos, 1.0))).xyz;
+}
+inline float3 UnityObjectToViewPos(float4 pos) { return UnityObjectToViewPos(pos.xyz); }
+inline float3 UnityWorldToViewPos(in float3 pos) { return mul(UNITY_MATRIX_V, float4(pos, 1.0)).xyz; }
+
+inline float3 UnityObjectToWorldDir(in float3 dir) { return normalize(mul((float3x3)unity_ObjectToWorld, dir)); }
+inline float3 UnityWorldToObjectDir(in float3 dir) { return normalize(mul((float3x3)unity_WorldToObject, dir)); }
+// Normals transform with the inverse transpose: n_world = n_object * (WorldToObject)3x3.
+inline float3 UnityObjectToWorldNormal(in float3 norm) {
+#ifdef UNITY_ASSUME_UNIFORM_SCALING
+    return UnityObjectToWorldDir(norm);
+#else
+    return normalize(mul(norm, (float3x3)unity_WorldToObject));
+#endif
+}
+
+// ---------------------------------------------------------------------------------------------
+// Light and view directions (not normalised). _WorldSpaceLightPos0 is (dir,0) or (pos,1).
+// ---------------------------------------------------------------------------------------------
+inline float3 UnityWorldSpaceLightDir(in float3 worldPos) {
+    return _WorldSpaceLightPos0.xyz - worldPos * _WorldSpaceLightPos0.w;
+}
+inline float3 WorldSpaceLightDir(in float4 localPos) {
+    return UnityWorldSpaceLightDir(mul(unity_ObjectToWorld, localPos).xyz);
+}
+// Object-space vector from the vertex towards the light (the direction for directional lights).
+inline float3 ObjSpaceLightDir(in float4 v) {
+    float3 objSpaceLightPos = mul(unity_WorldToObject, _WorldSpaceLightPos0).xyz;
+    return objSpaceLightPos - v.xyz * _WorldSpaceLightPos0.w;
+}
+inline float3 UnityWorldSpaceViewDir(in float3 worldPos) { return _WorldSpaceCameraPos.xyz - worldPos; }
+inline float3 WorldSpaceViewDir(in float4 localPos) {
+    return UnityWorldSpaceViewDir(mul(unity_ObjectToWorld, localPos).xyz);
+}
+inline float3 ObjSpaceViewDir(in float4 v) {
+    float3 objSpaceCameraPos = mul(unity_WorldToObject, float4(_WorldSpaceCameraPos.xyz, 1)).xyz;
+    return objSpaceCameraPos - v.xyz;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Vertex lights. Formula: unity-keywords.md §5.1 (Shade4PointLights, ShadeVertexLightsFull).
+// ---------------------------------------------------------------------------------------------
+// Diffuse from four point lights given as SoA world positions; atten = 1/(1 + d^2 * a) with
+// a = unity_4LightAtten0 = 25/range^2; N.L clamped at 0; no range cut-off.
+float3 Shade4PointLights(
+    float4 lightPosX, float4 lightPosY, float4 lightPosZ,
+    float3 lightColor0, float3 lightColor1, float3 lightColor2, float3 lightColor3,
+    float4 lightAttenSq, float3 pos, float3 normal)
+{
+    float4 toLightX = lightPosX - pos.x;
+    float4 toLightY = lightPosY - pos.y;
+    float4 toLightZ = lightPosZ - pos.z;
+    float4 lengthSq = toLightX * toLightX + toLightY * toLightY + toLightZ * toLightZ;
+    lengthSq = max(lengthSq, 0.000001);
+    float4 ndotl = toLightX * normal.x + toLightY * normal.y + toLightZ * normal.z;
+    ndotl = max(float4(0, 0, 0, 0), ndotl * rsqrt(lengthSq));
+    float4 atten = 1.0 / (1.0 + lengthSq * lightAttenSq);
+    float4 diff = ndotl * atten;
+    return lightColor0 * diff.x + lightColor1 * diff.y + lightColor2 * diff.z + lightColor3 * diff.w;
+}
+
+// Legacy Vertex-pass lighting in view space: ambient + sum of lightCount lights from the
+// unity_LightPosition/Atten/SpotDirection/Color arrays (§5.1; spot factor per §5.1).
+float3 ShadeVertexLightsFull(float4 vertex, float3 normal, int lightCount, bool spotLight) {
+    float3 viewpos = UnityObjectToViewPos(vertex.xyz);
+    float3 viewN = normalize(mul((float3x3)UNITY_MATRIX_IT_MV, normal));
+    float3 lightColor = UNITY_LIGHTMODEL_AMBIENT.xyz;
+    for (int i = 0; i < lightCount; i++) {
+        float3 toLight = unity_LightPosition[i].xyz - viewpos.xyz * unity_LightPosition[i].w;
+        float lengthSq = max(dot(toLight, toLight), 0.000001);
+        toLight *= rsqrt(lengthSq);
+        float atten = 1.0 / (1.0 + lengthSq * unity_LightAtten[i].z);
+        if (spotLight) {
+            float rho = max(0, dot(toLight, unity_SpotDirection[i].xyz));
+            atten *= saturate((rho - unity_LightAtten[i].x) * unity_LightAtten[i].y);
+        } else if (unity_LightPosition[i].w != 0 && lengthSq > unity_LightAtten[i].w) {
+            atten = 0; // beyond the point light's range (w = range^2)
+        }
+        lightColor += unity_LightColor[i].rgb * (max(0, dot(viewN, toLight)) * atten);
+    }
+    return lightColor;
+}
+float3 ShadeVertexLights(float4 vertex, float3 normal) {
+    return ShadeVertexLightsFull(vertex, normal, 4, false);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Spherical harmonics. Formula and packing: unity-keywords.md §5.3. normal.w must be 1.
+// ---------------------------------------------------------------------------------------------
+half3 SHEvalLinearL0L1(half4 normal) {
+    half3 x;
+    x.r = dot(unity_SHAr, normal);
+    x.g = dot(unity_SHAg, normal);
+    x.b = dot(unity_SHAb, normal);
+    return x;
+}
+half3 SHEvalLinearL2(half4 normal) {
+    half4 vB = normal.xyzz * normal.yzzx;   // (xy, yz, zz, zx)
+    half3 x1;
+    x1.r = dot(unity_SHBr, vB);
+    x1.g = dot(unity_SHBg, vB);
+    x1.b = dot(unity_SHBb, vB);
+    half vC = normal.x * normal.x - normal.y * normal.y;
+    return x1 + unity_SHC.rgb * vC;
+}
+half3 ShadeSH9(half4 normal) {
+    half3 res = SHEvalLinearL0L1(normal) + SHEvalLinearL2(normal);
+#ifdef UNITY_COLORSPACE_GAMMA
+    res = LinearToGammaSpace(res);
+#endif
+    return res;
+}
+half3 ShadeSH12Order(half4 normal) {  // L0 + L1 only
+    half3 res = SHEvalLinearL0L1(normal);
+#ifdef UNITY_COLORSPACE_GAMMA
+    res = LinearToGammaSpace(res);
+#endif
+    return res;
+}
+half3 ShadeSH3Order(half4 normal) {   // L2 only
+    half3 res = SHEvalLinearL2(normal);
+#ifdef UNITY_COLORSPACE_GAMMA
+    res = LinearToGammaSpace(res);
+#endif
+    return res;
+}
+
+// 1 when the pass samples light-probe SH (LIGHTPROBE_SH outside add/prepass/caster/meta passes).
+#if defined(LIGHTPROBE_SH) && !defined(UNITY_PASS_FORWARDADD) && !defined(UNITY_PASS_PREPASSBASE) && !defined(UNITY_PASS_SHADOWCASTER) && !defined(UNITY_PASS_META)
+#define UNITY_SHOULD_SAMPLE_SH 1
+#else
+#define UNITY_SHOULD_SAMPLE_SH 0
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Texture coordinates, screen positions, depth.
+// ---------------------------------------------------------------------------------------------
+#define TRANSFORM_TEX(tex, name) (tex.xy * name##_ST.xy + name##_ST.zw)
+
+// Homogeneous screen coordinates: xy / w in [0,1], (0,0) = first row/column of render targets.
+inline float4 ComputeNonStereoScreenPos(float4 pos) {
+    float4 o = pos * 0.5f;
+    o.xy = float2(o.x, o.y * _ProjectionParams.x) + o.w;
+    o.zw = pos.zw;
+    return o;
+}
+inline float4 ComputeScreenPos(float4 pos) { return ComputeNonStereoScreenPos(pos); }
+inline float4 ComputeGrabScreenPos(float4 pos) {
+    float4 o = pos * 0.5f;
+    o.xy = float2(o.x, o.y) + o.w;   // grab textures share the framebuffer's row order
+    o.zw = pos.zw;
+    return o;
+}
+
+// Raw depth z in [0,1] -> linear depth: Linear01Depth = eye depth / far, LinearEyeDepth in units.
+inline float Linear01Depth(float z) { return 1.0 / (_ZBufferParams.x * z + _ZBufferParams.y); }
+inline float LinearEyeDepth(float z) { return 1.0 / (_ZBufferParams.z * z + _ZBufferParams.w); }
+#define COMPUTE_EYEDEPTH(o) o = -UnityObjectToViewPos(v.vertex).z
+#define COMPUTE_DEPTH_01 -(UnityObjectToViewPos(v.vertex).z * _ProjectionParams.w)
+#define COMPUTE_VIEW_NORMAL normalize(mul((float3x3)UNITY_MATRIX_IT_MV, v.normal))
+
+// ---------------------------------------------------------------------------------------------
+// Packing helpers.
+// ---------------------------------------------------------------------------------------------
+inline float4 EncodeFloatRGBA(float v) {
+    float4 enc = float4(1.0, 255.0, 65025.0, 16581375.0) * v;
+    enc = frac(enc);
+    enc -= enc.yzww * float4(1.0 / 255.0, 1.0 / 255.0, 1.0 / 255.0, 0.0);
+    return enc;
+}
+inline float DecodeFloatRGBA(float4 enc) {
+    return dot(enc, float4(1.0, 1 / 255.0, 1 / 65025.0, 1 / 16581375.0));
+}
+inline float2 EncodeFloatRG(float v) {
+    float2 enc = float2(1.0, 255.0) * v;
+    enc = frac(enc);
+    enc.x -= enc.y * (1.0 / 255.0);
+    return enc;
+}
+inline float DecodeFloatRG(float2 enc) { return dot(enc, float2(1.0, 1 / 255.0)); }
+
+// Normal maps are plain RGB (UNITY_NO_DXT5nm): n = rgb * 2 - 1.
+inline fixed3 UnpackNormalDXT5nm(fixed4 packednormal) {
+    fixed3 normal;
+    normal.xy = packednormal.wy * 2 - 1;
+    normal.z = sqrt(1 - saturate(dot(normal.xy, normal.xy)));
+    return normal;
+}
+inline fixed3 UnpackNormal(fixed4 packednormal) { return packednormal.xyz * 2 - 1; }
+
+// Point-light shadow cube maps store distance / range in a float .r channel (SHADER_ABI.md §6).
+inline float4 UnityEncodeCubeShadowDepth(float z) { return float4(z, z, z, z); }
+inline float UnityDecodeCubeShadowDepth(float4 vals) { return vals.r; }
+
+// ---------------------------------------------------------------------------------------------
+// Shadow casters. Depth maps (SHADOWS_DEPTH) get a constant bias in clip space; cube maps
+// (SHADOWS_CUBE) write (|p - light| + bias) / range (unity-keywords.md §4.3).
+// ---------------------------------------------------------------------------------------------
+float4 UnityClipSpaceShadowCasterPos(float4 vertex, float3 normal) {
+    float4 wPos = mul(unity_ObjectToWorld, vertex);
+    if (unity_LightShadowBias.z != 0.0) {
+        float3 wNormal = UnityObjectToWorldNormal(normal);
+        float3 wLight = normalize(UnityWorldSpaceLightDir(wPos.xyz));
+        float shadowCos = dot(wNormal, wLight);
+        float shadowSine = sqrt(1 - shadowCos * shadowCos);
+        float normalBias = unity_LightShadowBias.z * shadowSine;
+        wPos.xyz -= wNormal * normalBias;
+    }
+    return mul(UNITY_MATRIX_VP, wPos);
+}
+float4 UnityApplyLinearShadowBias(float4 clipPos) {
+    clipPos.z += saturate(unity_LightShadowBias.x / clipPos.w) * clipPos.w;
+    clipPos.z = min(clipPos.z, clipPos.w);
+    return clipPos;
+}
+#if defined(SHADOWS_CUBE)
+    #define V2F_SHADOW_CASTER_NOPOS float3 vec : TEXCOORD0;
+    #define TRANSFER_SHADOW_CASTER_NOPOS(o, opos) \
+        o.vec = mul(unity_ObjectToWorld, v.vertex).xyz - _LightPositionRange.xyz; \
+        opos = UnityObjectToClipPos(v.vertex);
+    #define SHADOW_CASTER_FRAGMENT(i) \
+        return UnityEncodeCubeShadowDepth((length(i.vec) + unity_LightShadowBias.x) * _LightPositionRange.w);
+#else
+    #define V2F_SHADOW_CASTER_NOPOS
+    #define TRANSFER_SHADOW_CASTER_NOPOS(o, opos) \
+        opos = UnityApplyLinearShadowBias(UnityClipSpaceShadowCasterPos(v.vertex, v.normal));
+    #define SHADOW_CASTER_FRAGMENT(i) return 0;
+#endif
+#define V2F_SHADOW_CASTER V2F_SHADOW_CASTER_NOPOS float4 pos : SV_POSITION
+#define TRANSFER_SHADOW_CASTER(o) TRANSFER_SHADOW_CASTER_NOPOS(o, o.pos)
+#define TRANSFER_SHADOW_CASTER_NORMALOFFSET(o) TRANSFER_SHADOW_CASTER_NOPOS(o, o.pos)
+
+// ---------------------------------------------------------------------------------------------
+// Fog (unity-keywords.md §5.4). The fog coordinate is the eye depth (clip w) in world units.
+// ---------------------------------------------------------------------------------------------
+#if defined(UNITY_PASS_PREPASSBASE) || defined(UNITY_PASS_DEFERRED) || defined(UNITY_PASS_SHADOWCASTER)
+    #undef FOG_LINEAR
+    #undef FOG_EXP
+    #undef FOG_EXP2
+#endif
+#if defined(FOG_LINEAR)
+    #define UNITY_CALC_FOG_FACTOR_RAW(coord) float unityFogFactor = (coord) * unity_FogParams.z + unity_FogParams.w
+#elif defined(FOG_EXP)
+    #define UNITY_CALC_FOG_FACTOR_RAW(coord) float unityFogFactor = exp2(-unity_FogParams.y * (coord))
+#elif defined(FOG_EXP2)
+    #define UNITY_CALC_FOG_FACTOR_RAW(coord) float unityFogFactor = unity_FogParams.x * (coord); unityFogFactor = exp2(-unityFogFactor * unityFogFactor)
+#else
+    #define UNITY_CALC_FOG_FACTOR_RAW(coord) float unityFogFactor = 0.0
+#endif
+#define UNITY_CALC_FOG_FACTOR(coord) UNITY_CALC_FOG_FACTOR_RAW(coord)
+#if defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2)
+    #define UNITY_FOG_COORDS(idx) float1 fogCoord : TEXCOORD##idx;
+    // glslang treats float1 as a scalar, whose .x is not assignable: assign the whole member.
+    #define UNITY_TRANSFER_FOG(o, outpos) o.fogCoord = (outpos).w
+    #define UNITY_FOG_LERP_COLOR(col, fogCol, fogFac) col.rgb = lerp((fogCol).rgb, (col).rgb, saturate(fogFac))
+    #define UNITY_APPLY_FOG_COLOR(coord, col, fogCol) { UNITY_CALC_FOG_FACTOR((coord).x); UNITY_FOG_LERP_COLOR(col, fogCol, unityFogFactor); }
+#else
+    #define UNITY_FOG_COORDS(idx)
+    #define UNITY_TRANSFER_FOG(o, outpos)
+    #define UNITY_APPLY_FOG_COLOR(coord, col, fogCol)
+#endif
+#ifdef UNITY_PASS_FORWARDADD
+    #define UNITY_APPLY_FOG(coord, col) UNITY_APPLY_FOG_COLOR(coord, col, fixed4(0, 0, 0, 0))
+#else
+    #define UNITY_APPLY_FOG(coord, col) UNITY_APPLY_FOG_COLOR(coord, col, unity_FogColor)
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Image-effect vertex program.
+// ---------------------------------------------------------------------------------------------
+struct v2f_img {
+    float4 pos : SV_POSITION;
+    half2 uv : TEXCOORD0;
+};
+v2f_img vert_img(appdata_img v) {
+    v2f_img o;
+    o.pos = UnityObjectToClipPos(v.vertex);
+    o.uv = v.texcoord;
+    return o;
+}
+
+#endif // UNITY_CG_INCLUDED

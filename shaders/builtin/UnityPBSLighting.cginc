@@ -1,6 +1,70 @@
 // SPDX-License-Identifier: Apache-2.0
-// varc built-in include: UnityPBSLighting.cginc. Declarations arrive with issue #4 (built-in include library);
-// this file exists so shaders that include it resolve for variant listing.
-#ifndef VARC_UNITYPBSLIGHTING_INCLUDED
-#define VARC_UNITYPBSLIGHTING_INCLUDED
+// varc built-in: UnityPBSLighting.cginc. Entry point of the physically based lighting library:
+// UNITY_BRDF_PBS (docs/LIGHTING.md §2), UnityLight/UnityIndirect, the metallic/specular helpers,
+// the shadow library, and the Standard lighting functions for surface-style outputs.
+// It declares no light textures (_LightTexture0 etc.): shaders that include it may declare them
+// with the type their light needs (seed 002). Written for varc; not derived from Unity's file.
+#ifndef UNITY_PBS_LIGHTING_INCLUDED
+#define UNITY_PBS_LIGHTING_INCLUDED
+
+#include "UnityShaderVariables.cginc"
+#include "UnityCG.cginc"
+#include "UnityLightingCommon.cginc"
+#include "UnityStandardUtils.cginc"
+#include "UnityStandardBRDF.cginc"
+#include "UnityShadowLibrary.cginc"
+
+// UNITY_BRDF_PBS(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir, light, gi)
+// A shader may #define UNITY_BRDF_PBS itself before including this file. The scalar arguments
+// are cast so that vector arguments truncate as in HLSL (glslang rejects vector->scalar
+// argument conversion; seed 002 passes a float3 smoothness).
+#if !defined(UNITY_BRDF_PBS)
+#define UNITY_BRDF_PBS(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir, light, gi) \
+    BRDF1_Unity_PBS(diffColor, specColor, (half)(oneMinusReflectivity), (half)(smoothness), normal, viewDir, light, gi)
 #endif
+
+// ---------------------------------------------------------------------------------------------
+// Surface outputs and the Standard lighting functions (forward use).
+// ---------------------------------------------------------------------------------------------
+struct SurfaceOutputStandard {
+    fixed3 Albedo;
+    float3 Normal;      // world space, unit length
+    half3 Emission;
+    half Metallic;
+    half Smoothness;
+    half Occlusion;
+    fixed Alpha;
+};
+struct SurfaceOutputStandardSpecular {
+    fixed3 Albedo;
+    fixed3 Specular;
+    float3 Normal;
+    half3 Emission;
+    half Smoothness;
+    half Occlusion;
+    fixed Alpha;
+};
+
+inline half4 LightingStandard(SurfaceOutputStandard s, float3 viewDir, UnityGI gi) {
+    s.Normal = normalize(s.Normal);
+    half oneMinusReflectivity;
+    half3 specColor;
+    s.Albedo = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
+    half outputAlpha;
+    s.Albedo = PreMultiplyAlpha(s.Albedo, s.Alpha, oneMinusReflectivity, outputAlpha);
+    half4 c = UNITY_BRDF_PBS(s.Albedo, specColor, oneMinusReflectivity, s.Smoothness, s.Normal, viewDir, gi.light, gi.indirect);
+    c.a = outputAlpha;
+    return c;
+}
+inline half4 LightingStandardSpecular(SurfaceOutputStandardSpecular s, float3 viewDir, UnityGI gi) {
+    s.Normal = normalize(s.Normal);
+    half oneMinusReflectivity;
+    s.Albedo = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
+    half outputAlpha;
+    s.Albedo = PreMultiplyAlpha(s.Albedo, s.Alpha, oneMinusReflectivity, outputAlpha);
+    half4 c = UNITY_BRDF_PBS(s.Albedo, s.Specular, oneMinusReflectivity, s.Smoothness, s.Normal, viewDir, gi.light, gi.indirect);
+    c.a = outputAlpha;
+    return c;
+}
+
+#endif // UNITY_PBS_LIGHTING_INCLUDED

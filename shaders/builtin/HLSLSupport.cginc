@@ -1,0 +1,119 @@
+// SPDX-License-Identifier: Apache-2.0
+// varc built-in: HLSLSupport.cginc. Portability layer for CG/HLSL programs compiled by glslang's
+// HLSL front end (DX9-compatible mode) to Vulkan SPIR-V: Unity's precision types, sampler
+// aliases, CBUFFER/branch macros, depth and shadow-map declarations. Written for varc from the
+// documented behaviour (docs/SHADER_ABI.md), not derived from Unity's file.
+#ifndef HLSL_SUPPORT_INCLUDED
+#define HLSL_SUPPORT_INCLUDED
+
+// ---------------------------------------------------------------------------------------------
+// Platform facts. The compile driver defines SHADER_API_VULKAN, SHADER_TARGET, UNITY_VERSION,
+// UNITY_PASS_*, SHADER_STAGE_* and the variant's keywords before this file.
+// ---------------------------------------------------------------------------------------------
+#ifndef SHADER_TARGET
+#define SHADER_TARGET 25
+#endif
+#define UNITY_COMPILER_HLSL 1
+#define UNITY_COMPILER_VARC_GLSLANG 1
+// Render-target row 0 is the top of the image (Vulkan); see docs/SHADER_ABI.md §2.
+#define UNITY_UV_STARTS_AT_TOP 1
+// Depth is NOT reversed: 0 at the near plane, 1 at the far plane (Vulkan [0,1] clip depth).
+#define UNITY_NEAR_CLIP_VALUE (0.0)
+#define UNITY_RAW_FAR_CLIP_VALUE (1.0)
+// Normal maps are plain RGB (xyz*0.5+0.5), not DXT5nm-swizzled.
+#define UNITY_NO_DXT5nm 1
+#define UNITY_ALLOWED_MRT_COUNT 8
+#define UNITY_SUPPORT_DEPTH_FETCH 1
+#define UNITY_SAMPLE_FULL_SH_PER_PIXEL 0
+// The falloff lookup stores attenuation in the red channel (unity-keywords.md §4.2).
+#define UNITY_ATTEN_CHANNEL r
+// Vulkan desktop targets branch dynamically and coherently at shader model 3.0 and up.
+#if SHADER_TARGET >= 30
+#define UNITY_FAST_COHERENT_DYNAMIC_BRANCHING 1
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Precision types. glslang has no `fixed`; `half` is 32-bit unless 16-bit types are enabled.
+// ---------------------------------------------------------------------------------------------
+#define fixed half
+#define fixed2 half2
+#define fixed3 half3
+#define fixed4 half4
+#define fixed2x2 half2x2
+#define fixed3x3 half3x3
+#define fixed4x4 half4x4
+
+#define sampler2D_half sampler2D
+#define sampler2D_float sampler2D
+#define samplerCUBE_half samplerCUBE
+#define samplerCUBE_float samplerCUBE
+#define sampler3D_half sampler3D
+#define sampler3D_float sampler3D
+
+// Shadow coordinates are always full precision.
+#define unityShadowCoord float
+#define unityShadowCoord2 float2
+#define unityShadowCoord3 float3
+#define unityShadowCoord4 float4
+#define unityShadowCoord4x4 float4x4
+
+// ---------------------------------------------------------------------------------------------
+// Blocks, flow-control attributes, misc.
+// ---------------------------------------------------------------------------------------------
+#ifndef CBUFFER_START
+#define CBUFFER_START(name) cbuffer name {
+#define CBUFFER_END };
+#endif
+#define UNITY_BRANCH [branch]
+#define UNITY_FLATTEN [flatten]
+#define UNITY_UNROLL [unroll]
+#define UNITY_UNROLLX(n) [unroll(n)]
+#define UNITY_LOOP [loop]
+
+#define UNITY_INITIALIZE_OUTPUT(type, name) name = (type)0;
+#define UNITY_PROJ_COORD(a) a
+#define UNITY_VPOS_TYPE float4
+#define UNITY_POSITION(pos) float4 pos : SV_POSITION
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_FLOAT(idx) sampler2D _UnityFBInput##idx
+
+// ---------------------------------------------------------------------------------------------
+// Textures. Every texture is a combined image sampler (DX9-style sampler2D/samplerCUBE), so a
+// runtime binds one VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER per texture name.
+// tex2D, tex2Dbias, tex2Dlod, tex2Dproj, texCUBE, texCUBEbias, texCUBElod are glslang
+// intrinsics in DX9-compatible mode (--hlsl-dx9-compatible).
+// ---------------------------------------------------------------------------------------------
+#define UNITY_DECLARE_TEX2D(tex) sampler2D tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER(tex) sampler2D tex
+#define UNITY_DECLARE_TEX2D_HALF(tex) sampler2D tex
+#define UNITY_DECLARE_TEX2D_FLOAT(tex) sampler2D tex
+#define UNITY_DECLARE_TEXCUBE(tex) samplerCUBE tex
+#define UNITY_DECLARE_TEXCUBE_NOSAMPLER(tex) samplerCUBE tex
+#define UNITY_DECLARE_TEX3D(tex) sampler3D tex
+#define UNITY_SAMPLE_TEX2D(tex, coord) tex2D(tex, coord)
+#define UNITY_SAMPLE_TEX2D_SAMPLER(tex, samplertex, coord) tex2D(tex, coord)
+#define UNITY_SAMPLE_TEX2D_LOD(tex, coord, lod) tex2Dlod(tex, float4(coord, 0, lod))
+#define UNITY_SAMPLE_TEXCUBE(tex, coord) texCUBE(tex, coord)
+#define UNITY_SAMPLE_TEXCUBE_LOD(tex, coord, lod) texCUBElod(tex, float4(coord, lod))
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER(tex, samplertex, coord) texCUBE(tex, coord)
+#define UNITY_SAMPLE_TEX3D(tex, coord) tex3D(tex, coord)
+
+// Depth textures hold raw (non-linear, non-reversed) depth in .r.
+#define UNITY_DECLARE_DEPTH_TEXTURE(tex) sampler2D_float tex
+#define SAMPLE_DEPTH_TEXTURE(sampler, uv) (tex2D(sampler, uv).r)
+#define SAMPLE_DEPTH_TEXTURE_PROJ(sampler, uv) (tex2Dproj(sampler, uv).r)
+#define SAMPLE_DEPTH_TEXTURE_LOD(sampler, uv) (tex2Dlod(sampler, uv).r)
+#define SAMPLE_RAW_DEPTH_TEXTURE(tex, uv) (tex2D(tex, uv))
+#define SAMPLE_RAW_DEPTH_TEXTURE_PROJ(tex, uv) (tex2Dproj(tex, uv))
+#define SAMPLE_RAW_DEPTH_TEXTURE_LOD(tex, uv) (tex2Dlod(tex, uv))
+
+// Shadow maps: a plain float depth texture compared in the shader (no comparison sampler), so the
+// runtime binds it with an ordinary non-compare sampler. coord = (u, v, depth); 1 = lit.
+#define UNITY_DECLARE_SHADOWMAP(tex) sampler2D_float tex
+#define UNITY_DECLARE_TEXCUBE_SHADOWMAP(tex) samplerCUBE_float tex
+#define UNITY_SAMPLE_SHADOW(tex, coord) ((((coord).z) <= tex2Dlod(tex, float4((coord).xy, 0, 0)).r) ? 1.0 : 0.0)
+#define UNITY_SAMPLE_SHADOW_PROJ(tex, coord) UNITY_SAMPLE_SHADOW(tex, ((coord).xyz / (coord).w))
+// The screen-space shadow mask: .r is the final shadow attenuation of the main directional light.
+#define UNITY_DECLARE_SCREENSPACE_SHADOWMAP(tex) sampler2D tex
+#define UNITY_SAMPLE_SCREEN_SHADOW(tex, uv) tex2Dproj(tex, UNITY_PROJ_COORD(uv)).r
+
+#endif // HLSL_SUPPORT_INCLUDED

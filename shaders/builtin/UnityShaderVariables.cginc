@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: Apache-2.0
+// varc built-in: UnityShaderVariables.cginc. Declares Unity's built-in shader variables, grouped
+// into uniform blocks by update frequency, plus the UNITY_MATRIX_* and legacy-name macros.
+// The runtime fills every member BY NAME through the pack's reflection; docs/SHADER_ABI.md gives
+// each member's meaning, units and space. Written for varc; not derived from Unity's file.
+#ifndef UNITY_SHADER_VARIABLES_INCLUDED
+#define UNITY_SHADER_VARIABLES_INCLUDED
+
+#include "HLSLSupport.cginc"
+
+// ---------------------------------------------------------------------------------------------
+// Per frame: time, ambient, fog.
+// ---------------------------------------------------------------------------------------------
+CBUFFER_START(UnityPerFrame)
+    float4 _Time;                       // (t/20, t, 2t, 3t), t in seconds
+    float4 _SinTime;                    // (sin(t/8), sin(t/4), sin(t/2), sin(t))
+    float4 _CosTime;                    // (cos(t/8), cos(t/4), cos(t/2), cos(t))
+    float4 unity_DeltaTime;             // (dt, 1/dt, smoothDt, 1/smoothDt)
+    half4 glstate_lightmodel_ambient;   // flat ambient colour (linear RGB, a = 1)
+    half4 unity_AmbientSky;             // trilight ambient: sky
+    half4 unity_AmbientEquator;         // trilight ambient: equator
+    half4 unity_AmbientGround;          // trilight ambient: ground
+    half4 unity_IndirectSpecColor;      // average reflection-probe colour
+    half4 unity_FogColor;               // fog colour
+    float4 unity_FogParams;             // (density/sqrt(ln2), density/ln2, -1/(end-start), end/(end-start))
+CBUFFER_END
+
+// ---------------------------------------------------------------------------------------------
+// Per camera.
+// ---------------------------------------------------------------------------------------------
+CBUFFER_START(UnityPerCamera)
+    float3 _WorldSpaceCameraPos;        // camera position, world space
+    float4 _ProjectionParams;           // (1, near, far, 1/far)
+    float4 _ScreenParams;               // (width, height, 1+1/width, 1+1/height) in pixels
+    float4 _ZBufferParams;              // (1-far/near, far/near, x/far, y/far)
+    float4 unity_OrthoParams;           // (ortho half-width, ortho half-height, 0, 1 if ortho else 0)
+    float4 unity_CameraWorldClipPlanes[6]; // left, right, bottom, top, near, far (world, normal inward)
+    float4x4 unity_MatrixV;             // world -> view (right-handed, camera looks down -z)
+    float4x4 unity_MatrixInvV;          // view -> world
+    float4x4 glstate_matrix_projection; // view -> Vulkan clip (y down, z in [0,w])
+    float4x4 unity_MatrixVP;            // glstate_matrix_projection * unity_MatrixV
+    float4x4 unity_CameraProjection;    // the camera's own GL-style projection (no Vulkan fix-up)
+    float4x4 unity_CameraInvProjection; // inverse of unity_CameraProjection
+    float4x4 unity_WorldToCamera;       // world -> camera object space (+z forward)
+    float4x4 unity_CameraToWorld;       // camera object space (+z forward) -> world
+CBUFFER_END
+
+// ---------------------------------------------------------------------------------------------
+// Per draw: the object's transforms.
+// ---------------------------------------------------------------------------------------------
+CBUFFER_START(UnityPerDraw)
+    float4x4 unity_ObjectToWorld;
+    float4x4 unity_WorldToObject;
+    float4 unity_LODFade;               // (fade, fade quantized to 16 levels, 0, 0)
+    float4 unity_WorldTransformParams;  // w = -1 if the object matrix mirrors, else 1
+CBUFFER_END
+
+// ---------------------------------------------------------------------------------------------
+// Per draw, forward base / deferred G-buffer: light probe SH (packing: unity-keywords.md §5.3).
+// ---------------------------------------------------------------------------------------------
+CBUFFER_START(UnityProbes)
+    half4 unity_SHAr;
+    half4 unity_SHAg;
+    half4 unity_SHAb;
+    half4 unity_SHBr;
+    half4 unity_SHBg;
+    half4 unity_SHBb;
+    half4 unity_SHC;
+    half4 unity_ProbesOcclusion;
+CBUFFER_END
+
+// ---------------------------------------------------------------------------------------------
+// Per draw, forward base: the four per-vertex point lights (unity-keywords.md §5.1) and the
+// eight-light arrays of the legacy Vertex pass (view space).
+// ---------------------------------------------------------------------------------------------
+CBUFFER_START(UnityVertexLights)
+    float4 unity_4LightPosX0;           // world x of vertex lights 0..3
+    float4 unity_4LightPosY0;           // world y
+    float4 unity_4LightPosZ0;           // world z
+    half4 unity_4LightAtten0;           // 25 / range^2 per light (0 if unused)
+    half4 unity_LightColor[8];          // colour * intensity (linear); [0..3] = the vertex lights
+    float4 unity_LightPosition[8];      // view space: (pos,1) or (-dir,0)
+    half4 unity_LightAtten[8];          // (cos(spot/2) or -1, 1/(cos(spot/4)-cos(spot/2)) or 1, 25/range^2, range^2)
+    float4 unity_SpotDirection[8];      // view space spot direction (0,0,1,0 for non-spots)
+CBUFFER_END
+
+// ---------------------------------------------------------------------------------------------
+// Per light (one ForwardAdd draw per light; the main directional light in ForwardBase).
+// ---------------------------------------------------------------------------------------------
+CBUFFER_START(UnityLighting)
+    float4 _WorldSpaceLightPos0;        // directional: (direction towards the light, 0); else (position, 1)
+    half4 _LightColor0;                 // colour * intensity (linear)
+    float4 _LightPositionRange;         // (position, 1/range)
+    float4 _LightProjectionParams;      // reserved, (0,0,0,1)
+    float4x4 unity_WorldToLight;        // world -> light space, range-normalised (SHADER_ABI.md §5)
+    float4 unity_OcclusionMaskSelector; // one-hot shadowmask channel of this light
+CBUFFER_END
+
+// ---------------------------------------------------------------------------------------------
+// Per light: real-time shadows.
+// ---------------------------------------------------------------------------------------------
+CBUFFER_START(UnityShadows)
+    float4 unity_ShadowSplitSpheres[4]; // cascade culling spheres (center, radius)
+    float4 unity_ShadowSplitSqRadii;    // squared radii of the four spheres
+    float4 unity_LightShadowBias;       // (depth bias, clamp flag, normal bias, 0) for casters
+    float4 _LightSplitsNear;
+    float4 _LightSplitsFar;
+    float4x4 unity_WorldToShadow[4];    // world -> shadow-map (u, v, depth, 1); [0] for spot lights
+    half4 _LightShadowData;             // (1 - strength, 0, fade scale, fade offset)
+    float4 unity_ShadowFadeCenterAndType; // (fade sphere center, 1 = sphere distance / 0 = view depth)
+    float4 _ShadowMapTexture_TexelSize; // (1/width, 1/height, width, height) of _ShadowMapTexture
+CBUFFER_END
+
+// ---------------------------------------------------------------------------------------------
+// Matrix macros (Unity 5.4+ names) and the legacy names older shaders use.
+// ---------------------------------------------------------------------------------------------
+#define UNITY_MATRIX_M unity_ObjectToWorld
+#define UNITY_MATRIX_I_M unity_WorldToObject
+#define UNITY_MATRIX_V unity_MatrixV
+#define UNITY_MATRIX_I_V unity_MatrixInvV
+#define UNITY_MATRIX_P glstate_matrix_projection
+#define UNITY_MATRIX_VP unity_MatrixVP
+#define UNITY_MATRIX_MVP mul(unity_MatrixVP, unity_ObjectToWorld)
+#define UNITY_MATRIX_MV mul(unity_MatrixV, unity_ObjectToWorld)
+#define UNITY_MATRIX_T_MV transpose(UNITY_MATRIX_MV)
+#define UNITY_MATRIX_IT_MV transpose(mul(unity_WorldToObject, unity_MatrixInvV))
+
+#define glstate_matrix_mvp UNITY_MATRIX_MVP
+#define glstate_matrix_modelview0 UNITY_MATRIX_MV
+#define glstate_matrix_invtrans_modelview0 UNITY_MATRIX_IT_MV
+#define _Object2World unity_ObjectToWorld
+#define _World2Object unity_WorldToObject
+#define _LightMatrix0 unity_WorldToLight
+#define unity_World2Shadow unity_WorldToShadow
+#define _CameraToWorld unity_CameraToWorld
+#define _WorldToCamera unity_WorldToCamera
+
+// varc stores the full ambient colour in glstate_lightmodel_ambient (SHADER_ABI.md §4.1).
+#define UNITY_LIGHTMODEL_AMBIENT (glstate_lightmodel_ambient)
+
+#endif // UNITY_SHADER_VARIABLES_INCLUDED

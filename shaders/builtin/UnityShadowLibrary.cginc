@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: Apache-2.0
+// varc built-in: UnityShadowLibrary.cginc. Real-time shadow-map sampling for spot (SHADOWS_DEPTH)
+// and point (SHADOWS_CUBE) lights, soft filtering (SHADOWS_SOFT), and the shadow-distance fade.
+// Conventions (depth ranges, texture contents): docs/SHADER_ABI.md §4.7 and §6; the exact
+// formulas: docs/LIGHTING.md §6. Sources: unity-keywords.md §4.2-§4.4, seed 002 (fade). Written for varc.
+#ifndef UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED
+#define UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED
+
+#include "HLSLSupport.cginc"
+#include "UnityShaderVariables.cginc"
+
+// ---------------------------------------------------------------------------------------------
+// Spot-light shadows: a depth map rendered with unity_WorldToShadow[0]; 1 = lit.
+// SHADOWS_SCREEN programs declare their own _ShadowMapTexture (AutoLight.cginc or the shader).
+// ---------------------------------------------------------------------------------------------
+#if defined(SHADOWS_DEPTH) && !defined(SHADOWS_SCREEN)
+UNITY_DECLARE_SHADOWMAP(_ShadowMapTexture);
+
+// shadowCoord = mul(unity_WorldToShadow[0], float4(worldPos, 1)). Hard: one depth comparison.
+// Soft: the mean of four comparisons at +-0.5 texel. Result lerp(1 - strength, 1, lit).
+inline fixed UnitySampleShadowmap(float4 shadowCoord) {
+    float3 coord = shadowCoord.xyz / shadowCoord.w;
+#if defined(SHADOWS_SOFT)
+    float2 o = _ShadowMapTexture_TexelSize.xy * 0.5;
+    half lit = 0.25 * (UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(coord.xy + float2(-o.x, -o.y), coord.z))
+                     + UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(coord.xy + float2( o.x, -o.y), coord.z))
+                     + UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(coord.xy + float2(-o.x,  o.y), coord.z))
+                     + UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(coord.xy + float2( o.x,  o.y), coord.z)));
+#else
+    half lit = UNITY_SAMPLE_SHADOW(_ShadowMapTexture, coord);
+#endif
+    return lerp(_LightShadowData.r, 1.0, lit);
+}
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Point-light shadows: a cube map whose .r holds (distance to the nearest occluder) / range,
+// written by the SHADOWS_CUBE caster (UnityCG.cginc). vec = worldPos - lightPos.
+// ---------------------------------------------------------------------------------------------
+#if defined(SHADOWS_CUBE)
+UNITY_DECLARE_TEXCUBE_SHADOWMAP(_ShadowMapTexture);
+
+inline float SampleCubeDistance(float3 vec) {
+    return texCUBElod(_ShadowMapTexture, float4(vec, 0)).r;  // = UnityDecodeCubeShadowDepth
+}
+
+// Hard: lit when the stored distance >= |vec| / range. Soft: mean of four lookups displaced by
+// 1/128 of |vec| along the tetrahedron directions (+,+,+) (+,-,-) (-,+,-) (-,-,+).
+inline half UnitySampleShadowmap(float3 vec) {
+    float mydist = length(vec) * _LightPositionRange.w;
+#if defined(SHADOWS_SOFT)
+    float z = 0.0078125 * length(vec);
+    half lit = 0.25 * ((SampleCubeDistance(vec + float3( z,  z,  z)) >= mydist ? 1.0 : 0.0)
+                     + (SampleCubeDistance(vec + float3( z, -z, -z)) >= mydist ? 1.0 : 0.0)
+                     + (SampleCubeDistance(vec + float3(-z,  z, -z)) >= mydist ? 1.0 : 0.0)
+                     + (SampleCubeDistance(vec + float3(-z, -z,  z)) >= mydist ? 1.0 : 0.0));
+#else
+    half lit = SampleCubeDistance(vec) >= mydist ? 1.0 : 0.0;
+#endif
+    return lerp(_LightShadowData.r, 1.0, lit);
+}
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Shadow-distance fade (seed 002, "Fading Shadows"): the fade metric is the distance to the
+// fade sphere's centre (unity_ShadowFadeCenterAndType.w = 1) or the view depth (w = 0); the fade
+// factor is saturate(dist * _LightShadowData.z + _LightShadowData.w), 0 = full shadow,
+// 1 = shadow gone. Callers apply it as saturate(shadow + fade).
+// ---------------------------------------------------------------------------------------------
+float UnityComputeShadowFadeDistance(float3 wpos, float z) {
+    float sphereDist = distance(wpos, unity_ShadowFadeCenterAndType.xyz);
+    return lerp(z, sphereDist, unity_ShadowFadeCenterAndType.w);
+}
+half UnityComputeShadowFade(float fadeDist) {
+    return saturate(fadeDist * _LightShadowData.z + _LightShadowData.w);
+}
+
+#endif // UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED

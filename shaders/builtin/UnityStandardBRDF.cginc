@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: Apache-2.0
+// varc built-in: UnityStandardBRDF.cginc. varc's physically based BRDF behind UNITY_BRDF_PBS:
+// GGX (Trowbridge-Reitz) distribution, height-correlated Smith-GGX visibility (approximation),
+// Schlick Fresnel, Burley ("Disney") diffuse; Unity's input contract (diffColor, specColor,
+// oneMinusReflectivity, smoothness, normal, viewDir, UnityLight, UnityIndirect). The exact
+// formula, for CPU re-implementation, is docs/LIGHTING.md §2. Written for varc.
+#ifndef UNITY_STANDARD_BRDF_INCLUDED
+#define UNITY_STANDARD_BRDF_INCLUDED
+
+#include "UnityCG.cginc"
+#include "UnityStandardUtils.cginc"
+#include "UnityLightingCommon.cginc"
+
+// ---------------------------------------------------------------------------------------------
+// Small helpers (docs/LIGHTING.md §2).
+// ---------------------------------------------------------------------------------------------
+inline half Pow4(half x) { return x * x * x * x; }
+inline half Pow5(half x) { return x * x * x * x * x; }
+inline half DotClamped(half3 a, half3 b) { return max(0.0h, dot(a, b)); }
+inline half LambertTerm(half3 normal, half3 lightDir) { return DotClamped(normal, lightDir); }
+inline half BlinnTerm(half3 normal, half3 halfDir) { return DotClamped(normal, halfDir); }
+// x / |x|, with |x|^2 clamped to >= 0.001 so a zero vector stays finite.
+inline float3 Unity_SafeNormalize(float3 inVec) {
+    float dp3 = max(0.001f, dot(inVec, inVec));
+    return inVec * rsqrt(dp3);
+}
+// Smoothness s -> perceptual roughness 1 - s -> roughness alpha = (1 - s)^2.
+inline float SmoothnessToPerceptualRoughness(float smoothness) { return (1 - smoothness); }
+inline float PerceptualRoughnessToRoughness(float perceptualRoughness) { return perceptualRoughness * perceptualRoughness; }
+inline half RoughnessToPerceptualRoughness(half roughness) { return sqrt(roughness); }
+inline half SmoothnessToRoughness(half smoothness) { return (1 - smoothness) * (1 - smoothness); }
+
+// Schlick 1994: F(cos) = F0 + (1 - F0)(1 - cos)^5.
+inline half3 FresnelTerm(half3 F0, half cosA) {
+    half t = Pow5(1 - cosA);
+    return F0 + (1 - F0) * t;
+}
+inline half3 FresnelLerp(half3 F0, half3 F90, half cosA) {
+    half t = Pow5(1 - cosA);
+    return lerp(F0, F90, t);
+}
+
+// Burley 2012 diffuse, without the 1/pi (varc's light units, docs/LIGHTING.md §2):
+// Fd90 = 0.5 + 2 LdotH^2 rho; Fd = (1 + (Fd90-1)(1-NdotL)^5)(1 + (Fd90-1)(1-NdotV)^5).
+half DisneyDiffuse(half NdotV, half NdotL, half LdotH, half perceptualRoughness) {
+    half fd90 = 0.5 + 2 * LdotH * LdotH * perceptualRoughness;
+    half lightScatter = (1 + (fd90 - 1) * Pow5(1 - NdotL));
+    half viewScatter = (1 + (fd90 - 1) * Pow5(1 - NdotV));
+    return lightScatter * viewScatter;
+}
+
+// Height-correlated Smith-GGX visibility V = G / (4 NdotL NdotV), Hammon 2017 approximation:
+// V = 0.5 / (NdotL (NdotV (1-a) + a) + NdotV (NdotL (1-a) + a) + 1e-5).
+inline float SmithJointGGXVisibilityTerm(float NdotL, float NdotV, float roughness) {
+    float a = roughness;
+    float lambdaV = NdotL * (NdotV * (1 - a) + a);
+    float lambdaL = NdotV * (NdotL * (1 - a) + a);
+    return 0.5f / (lambdaV + lambdaL + 1e-5f);
+}
+
+// GGX / Trowbridge-Reitz (Walter et al. 2007): D = a^2 / (pi ((NdotH^2)(a^2 - 1) + 1)^2).
+inline float GGXTerm(float NdotH, float roughness) {
+    float a2 = roughness * roughness;
+    float d = (NdotH * a2 - NdotH) * NdotH + 1.0f;
+    return UNITY_INV_PI * a2 / (d * d + 1e-7f);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The BRDF (docs/LIGHTING.md §2). Returns (rgb, 1).
+// ---------------------------------------------------------------------------------------------
+half4 BRDF1_Unity_PBS(half3 diffColor, half3 specColor, half oneMinusReflectivity, half smoothness,
+                      float3 normal, float3 viewDir, UnityLight light, UnityIndirect gi)
+{
+    float perceptualRoughness = SmoothnessToPerceptualRoughness(smoothness);
+    float roughness = max(PerceptualRoughnessToRoughness(perceptualRoughness), 0.002);
+    float3 halfDir = Unity_SafeNormalize(float3(light.dir) + viewDir);
+
+    half nv = saturate(abs(dot(normal, viewDir)));
+    float nl = saturate(dot(normal, light.dir));
+    float nh = saturate(dot(normal, halfDir));
+    half lh = saturate(dot(light.dir, halfDir));
+
+    half diffuseTerm = DisneyDiffuse(nv, nl, lh, perceptualRoughness) * nl;
+
+    float V = SmithJointGGXVisibilityTerm(nl, nv, roughness);
+    float D = GGXTerm(nh, roughness);
+    float specularTerm = V * D * UNITY_PI;            // pi: diffuse carries no 1/pi
+    specularTerm = max(0, specularTerm * nl);
+    specularTerm *= any(specColor) ? 1.0 : 0.0;       // specColor = 0 disables specular exactly
+
+    half surfaceReduction = 1.0 / (roughness * roughness + 1.0);
+    half grazingTerm = saturate(smoothness + (1 - oneMinusReflectivity));
+
+    half3 color = diffColor * (gi.diffuse + light.color * diffuseTerm)
+                + specularTerm * light.color * FresnelTerm(specColor, lh)
+                + surfaceReduction * gi.specular * FresnelLerp(specColor, grazingTerm, nv);
+    return half4(color, 1);
+}
+
+// varc ships one BRDF; the quality tiers of Unity's Standard shader all map to it.
+#define BRDF2_Unity_PBS BRDF1_Unity_PBS
+#define BRDF3_Unity_PBS BRDF1_Unity_PBS
+
+#endif // UNITY_STANDARD_BRDF_INCLUDED
