@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: Apache-2.0
+// checkVk: turns a VkResult into a Status (error tier 2), naming the call and the call site.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <source_location>
+
+#include "varc/core/Result.h"
+
+namespace varc::runtime {
+
+// The enumerator name of |result|, e.g. "VK_ERROR_OUT_OF_DEVICE_MEMORY"; "VkResult(unknown)" for
+// values this build does not name (checkVk then prints the number).
+const char* vkResultName(VkResult result);
+
+// Returns Ok for VK_SUCCESS and the other non-negative success codes (VK_INCOMPLETE, ...), whose
+// meaning depends on the call; callers that wait with finite timeouts check VK_TIMEOUT
+// themselves. A negative |result| becomes ErrorCode::VulkanError whose detail names |call|, the
+// result and |where|, e.g.
+//     "vkCreateImage failed: VK_ERROR_OUT_OF_DEVICE_MEMORY (RenderTarget.cpp:87)".
+// Typical use:
+//     checkVk(vkCreateFence(device, &info, nullptr, &fence), "vkCreateFence",
+//             std::source_location::current())
+Status checkVk(VkResult result, const char* call,
+               std::source_location where = std::source_location::current());
+
+}  // namespace varc::runtime

@@ -1,0 +1,201 @@
+// SPDX-License-Identifier: Apache-2.0
+// Shared helpers for the lavapipe tests: a strict-validation fixture and a minimal pipeline.
+#include "VulkanTestSupport.h"
+
+#include <array>
+#include <utility>
+
+#include "varc/runtime/vulkan/CheckVk.h"
+
+namespace varc::runtime::testing {
+
+std::string spirvPath(const std::string& shaderName) {
+    return std::string(VARC_VULKAN_TEST_SPIRV_DIR) + "/" + shaderName + ".spv";
+}
+
+void VulkanTest::SetUp() {
+    ContextOptions options;
+    options.enableValidation = true;
+    options.applicationName = "varc_vulkan_tests";
+    options.onMessage = [this](const ValidationMessage& message) {
+        if (!mExpectMessages) ADD_FAILURE() << "Vulkan validation: " << toString(message);
+    };
+    Result<VulkanContext> created = VulkanContext::create(options);
+    ASSERT_TRUE(created.ok()) << created.error().detail;
+    mContext.emplace(std::move(*created));
+}
+
+void VulkanTest::TearDown() {
+    if (!mContext) return;
+    EXPECT_EQ(mContext->validationMessageCount(), 0u) << mContext->validationReport();
+    // Messages from device and instance destruction (e.g. leaked objects) reach onMessage.
+    mContext.reset();
+}
+
+namespace {
+
+std::array<VkPipelineShaderStageCreateInfo, 2> shaderStages(const PipelineDesc& desc) {
+    std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+    for (VkPipelineShaderStageCreateInfo& stage : stages) {
+        stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+        stage.pName = "main";
+    }
+    stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+    stages[0].module = desc.vertex;
+    stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+    stages[1].module = desc.fragment;
+    return stages;
+}
+
+// The fixed-function state of a test pipeline. It points into itself, so it stays put.
+struct FixedState {
+    explicit FixedState(const PipelineDesc& desc) {
+        vertexInput.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+        vertexInput.vertexBindingDescriptionCount = static_cast<uint32_t>(desc.bindings.size());
+        vertexInput.pVertexBindingDescriptions = desc.bindings.data();
+        vertexInput.vertexAttributeDescriptionCount = static_cast<uint32_t>(desc.attributes.size());
+        vertexInput.pVertexAttributeDescriptions = desc.attributes.data();
+        assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+        assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+        viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+        viewport.viewportCount = 1;
+        viewport.scissorCount = 1;
+        raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+        raster.polygonMode = VK_POLYGON_MODE_FILL;
+        raster.cullMode = VK_CULL_MODE_NONE;
+        raster.lineWidth = 1.0f;
+        multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+        multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+        depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+        depth.depthTestEnable = desc.depthTest ? VK_TRUE : VK_FALSE;
+        depth.depthWriteEnable = desc.depthTest ? VK_TRUE : VK_FALSE;
+        depth.depthCompareOp = VK_COMPARE_OP_LESS;
+        blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                         VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+        blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
+        blend.attachmentCount = 1;
+        blend.pAttachments = &blendAttachment;
+        dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+        dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
+        dynamic.pDynamicStates = dynamicStates.data();
+    }
+    FixedState(const FixedState&) = delete;
+    FixedState& operator=(const FixedState&) = delete;
+
+    VkPipelineVertexInputStateCreateInfo vertexInput{};
+    VkPipelineInputAssemblyStateCreateInfo assembly{};
+    VkPipelineViewportStateCreateInfo viewport{};
+    VkPipelineRasterizationStateCreateInfo raster{};
+    VkPipelineMultisampleStateCreateInfo multisample{};
+    VkPipelineDepthStencilStateCreateInfo depth{};
+    VkPipelineColorBlendAttachmentState blendAttachment{};
+    VkPipelineColorBlendStateCreateInfo blend{};
+    std::array<VkDynamicState, 2> dynamicStates{VK_DYNAMIC_STATE_VIEWPORT,
+                                                VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{};
+};
+
+}  // namespace
+
+Result<UniqueHandle<VkPipeline>> createPipeline(const VulkanContext& context,
+                                                const PipelineDesc& desc) {
+    std::array<VkPipelineShaderStageCreateInfo, 2> stages = shaderStages(desc);
+    FixedState fixed(desc);
+    VkGraphicsPipelineCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+    info.stageCount = static_cast<uint32_t>(stages.size());
+    info.pStages = stages.data();
+    info.pVertexInputState = &fixed.vertexInput;
+    info.pInputAssemblyState = &fixed.assembly;
+    info.pViewportState = &fixed.viewport;
+    info.pRasterizationState = &fixed.raster;
+    info.pMultisampleState = &fixed.multisample;
+    info.pDepthStencilState = &fixed.depth;
+    info.pColorBlendState = &fixed.blend;
+    info.pDynamicState = &fixed.dynamic;
+    info.layout = desc.layout;
+    info.renderPass = desc.renderPass;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    if (Status status = checkVk(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1,
+                                                          &info, nullptr, &pipeline),
+                                "vkCreateGraphicsPipelines", std::source_location::current());
+        !status) {
+        return status.error();
+    }
+    return UniqueHandle<VkPipeline>(context.device(), pipeline);
+}
+
+Result<UniqueHandle<VkPipelineLayout>> createPipelineLayout(const VulkanContext& context,
+                                                            VkDescriptorSetLayout setLayout,
+                                                            uint32_t pushConstantBytes) {
+    VkPushConstantRange range{VK_SHADER_STAGE_FRAGMENT_BIT, 0, pushConstantBytes};
+    VkPipelineLayoutCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+    info.setLayoutCount = setLayout != VK_NULL_HANDLE ? 1 : 0;
+    info.pSetLayouts = &setLayout;
+    info.pushConstantRangeCount = pushConstantBytes > 0 ? 1 : 0;
+    info.pPushConstantRanges = &range;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    if (Status status = checkVk(vkCreatePipelineLayout(context.device(), &info, nullptr, &layout),
+                                "vkCreatePipelineLayout", std::source_location::current());
+        !status) {
+        return status.error();
+    }
+    return UniqueHandle<VkPipelineLayout>(context.device(), layout);
+}
+
+Result<TextureBinding> bindTexture(const VulkanContext& context, VkImageView view,
+                                   VkSampler sampler) {
+    VkDevice device = context.device();
+    TextureBinding binding;
+    VkDescriptorSetLayoutBinding slot{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                      VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+    VkDescriptorSetLayoutCreateInfo layoutInfo{};
+    layoutInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+    layoutInfo.bindingCount = 1;
+    layoutInfo.pBindings = &slot;
+    VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+    if (Status s = checkVk(vkCreateDescriptorSetLayout(device, &layoutInfo, nullptr, &layout),
+                           "vkCreateDescriptorSetLayout", std::source_location::current());
+        !s) {
+        return s.error();
+    }
+    binding.layout = UniqueHandle<VkDescriptorSetLayout>(device, layout);
+
+    VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
+    VkDescriptorPoolCreateInfo poolInfo{};
+    poolInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+    poolInfo.maxSets = 1;
+    poolInfo.poolSizeCount = 1;
+    poolInfo.pPoolSizes = &size;
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    if (Status s = checkVk(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool),
+                           "vkCreateDescriptorPool", std::source_location::current());
+        !s) {
+        return s.error();
+    }
+    binding.pool = UniqueHandle<VkDescriptorPool>(device, pool);
+
+    VkDescriptorSetAllocateInfo allocateInfo{};
+    allocateInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+    allocateInfo.descriptorPool = pool;
+    allocateInfo.descriptorSetCount = 1;
+    allocateInfo.pSetLayouts = &layout;
+    if (Status s = checkVk(vkAllocateDescriptorSets(device, &allocateInfo, &binding.set),
+                           "vkAllocateDescriptorSets", std::source_location::current());
+        !s) {
+        return s.error();
+    }
+    VkDescriptorImageInfo imageInfo{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    VkWriteDescriptorSet write{};
+    write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    write.dstSet = binding.set;
+    write.dstBinding = 0;
+    write.descriptorCount = 1;
+    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    write.pImageInfo = &imageInfo;
+    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+    return binding;
+}
+
+}  // namespace varc::runtime::testing
