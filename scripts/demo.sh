@@ -25,7 +25,28 @@ else
 fi
 
 echo
+echo "== varc's lighting shader library (shaders/) =="
+"$varc" variants shaders
+"$varc" check --lock shaders/variants.lock shaders
+echo
+echo "== varc build: the library into one pack (every variant, SPIR-V validated) =="
+"$varc" build -o "$out/library.svpack" shaders
+
+fixture_packs=()
+if [ -d "$fixtures" ]; then
+    echo
+    echo "== varc build: the seed fixtures, one pack each =="
+    for dir in "$fixtures"/*/; do
+        name=$(basename "$dir")
+        "$varc" build -o "$out/$name.svpack" "$dir"
+        fixture_packs+=("$out/$name.svpack")
+    done
+fi
+
+echo
 echo "== summary =="
 echo "variant listings: $out/fixtures-variants.json"
 echo "lock file:        $out/fixtures.lock"
-echo "Compiling packs and rendering the validation scenes arrive with issues #3-#5."
+echo "library pack:     $out/library.svpack"
+for pack in "${fixture_packs[@]}"; do echo "fixture pack:     $pack"; done
+echo "Rendering the validation scenes arrives with issues #5-#6."

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Builds shaders into a pack with `varc build` exactly as a user would: no -I flags and no
+# VARC_BUILTIN_INCLUDE_DIR, so includes of Unity's built-in files (UnityCG.cginc, AutoLight.cginc,
+# ...) must come from varc's own built-in directory. `varc build` compiles every variant and
+# validates every SPIR-V module with SPIRV-Tools (compiler/src/CompileDriver.cpp,
+# Builder::compileSource -> validateSpirv); an invalid module fails the build.
+# Then checks the build summary against `varc variants`: every variant of every pass is in the
+# pack (the per-pass counts of `varc build --json` add up to the total of `varc variants --json`),
+# and the pack file was written.
+# Usage: build_check.sh VARC PACK PATH...
+# Exit: 0 built and consistent; 1 otherwise (varc's output is printed).
+set -uo pipefail
+
+varc="$1"
+pack="$2"
+shift 2
+unset VARC_BUILTIN_INCLUDE_DIR
+
+fail() { echo "FAIL: $*"; exit 1; }
+
+# Total variant count: the last "variants" member of `varc variants --json` is the grand total.
+if ! listing=$("$varc" variants --json "$@" 2>&1); then
+    echo "$listing"; fail "varc variants $*"
+fi
+expected=$(grep -o '"variants":[0-9]*' <<<"$listing" | tail -n 1 | cut -d: -f2)
+[[ -n "$expected" && "$expected" -gt 0 ]] || fail "no variants listed for $*"
+
+rm -f "$pack"
+summary=$("$varc" build --json -j 2 -o "$pack" "$@" 2>"$pack.log")
+status=$?
+if [[ $status -ne 0 ]]; then
+    cat "$pack.log"; fail "varc build exited with $status for $*"
+fi
+[[ -s "$pack" ]] || fail "varc build did not write $pack"
+
+# Sum of the per-pass variant counts in the build summary.
+built=$(grep -o '"variants":[0-9]*' <<<"$summary" | cut -d: -f2 | awk '{ n += $1 } END { print n + 0 }')
+compiled=$(grep -o '"compiled_sources":[0-9]*' <<<"$summary" | cut -d: -f2)
+echo "$*: $built of $expected variants built, $compiled programs compiled to SPIR-V and validated, pack $(stat -c %s "$pack") bytes"
+[[ "$built" == "$expected" ]] || fail "build summary has $built variants, varc variants lists $expected"
+[[ -n "$compiled" && "$compiled" -gt 0 ]] || fail "no SPIR-V modules compiled"
