@@ -112,7 +112,7 @@ CompileOutput compileProgram(const FrontendInput& input) {
 }
 
 std::string glslangVersionString() {
-    return "glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
+    return std::to_string(GLSLANG_VERSION_MAJOR) + "." +
            std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH);
 }
 

@@ -56,6 +56,6 @@ std::optional<std::string> validateSpirv(const std::vector<uint32_t>& spirv) {
     return message.empty() ? std::string("invalid SPIR-V") : message;
 }
 
-std::string spirvToolsVersionString() { return spvSoftwareVersionDetailsString(); }
+std::string spirvToolsVersionString() { return spvSoftwareVersionString(); }
 
 }  // namespace varc::compiler

@@ -11,6 +11,8 @@
 #   stderr.grep    optional: lines that must each appear in standard error (fixed strings)
 #   stdout.grep    optional: lines that must each appear in standard output
 #   setup          optional: bash run first (cwd = repo root) with $VARC, $CASE and $TMP set
+#   verify         optional: bash run last, same environment; the case fails unless it exits 0
+#                  (for checks on files the command wrote, or on what it must not have written)
 # The command runs with the repository root as its working directory, so fixtures are named
 # `../shared/fixtures/...` exactly as CI lays them out. VARC_UPDATE_GOLDENS=1 rewrites
 # stdout/stderr from the actual output.
@@ -57,6 +59,11 @@ for stream in stdout stderr; do
         done < "$case_dir/$stream.grep"
     fi
 done
+if [ -f "$case_dir/verify" ]; then
+    if ! VARC=$varc CASE=$case_dir TMP=$tmp bash "$case_dir/verify"; then
+        echo "verify failed"; status=1
+    fi
+fi
 if [ $status != 0 ]; then
     echo "--- command: varc ${args[*]}"
     echo "--- stdout:"; cat "$tmp/stdout"

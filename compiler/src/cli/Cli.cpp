@@ -21,6 +21,7 @@
 #include "varc/compiler/cli/LockCheck.h"
 #include "varc/compiler/cli/LockFile.h"
 #include "varc/compiler/cli/Options.h"
+#include "varc/compiler/cli/PackCommands.h"
 #include "varc/compiler/cli/ShaderInputs.h"
 #include "varc/compiler/cli/VariantReport.h"
 #include "varc/core/AtomicFile.h"
@@ -230,6 +231,9 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         case Command::Lock: return runLock(options, session, out, err);
         case Command::Check: return runCheck(options, session, out, err);
         case Command::Build: return runBuild(options, session, out, err);
+        case Command::Info: return runInfo(options, out, err);
+        case Command::Extract: return runExtract(options, out, err);
+        case Command::Lookup: return runLookup(options, out, err);
         case Command::None: break;
     }
     err << "varc: error: no command given\n";

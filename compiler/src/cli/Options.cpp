@@ -79,6 +79,43 @@ void addBuild(CLI::App& app, Options& options) {
     cmd->callback([&options] { options.command = Command::Build; });
 }
 
+void addInfo(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("info", "Describe a pack: shaders, passes, variants, programs");
+    cmd->add_flag("--json", options.json, "Print JSON");
+    cmd->add_option("pack", options.packPath, "Pack file")->required()->type_name("PACK");
+    cmd->callback([&options] { options.command = Command::Info; });
+}
+
+void addExtract(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("extract", "Write every program as .spv plus manifest.json");
+    cmd->add_option("pack", options.packPath, "Pack file")->required()->type_name("PACK");
+    cmd->add_option("-o,--output", options.outputPath, "Directory to write")->required()->type_name("DIR");
+    cmd->callback([&options] { options.command = Command::Extract; });
+}
+
+void addLookup(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("lookup", "Find the variant for keywords or a light");
+    cmd->add_option("pack", options.packPath, "Pack file")->required()->type_name("PACK");
+    cmd->add_option("--shader", options.lookupShader, "Shader name")->required();
+    cmd->add_option("--pass", options.lookupPass, "Pass index or LightMode")->required()->type_name("N|LIGHTMODE");
+    auto* keywords = cmd->add_option("--keywords", options.lookupKeywords,
+                                     "Enabled keywords, space-separated (with --light: the material's)");
+    auto* light = cmd->add_option("--light", options.lookupLight, "Light type: directional, point or spot");
+    cmd->add_flag("--cookie", options.lookupCookie, "The light has a cookie")->needs(light);
+    cmd->add_option("--shadows", options.lookupShadows, "none, hard or soft")->needs(light);
+    cmd->add_option("--vertex-lights", options.lookupVertexLights, "Point lights shaded per vertex")
+        ->needs(light);
+    cmd->add_flag("--hdr", options.lookupHdr, "The camera renders HDR")->needs(light);
+    cmd->add_option("--policy", options.lookupPolicy, "exact, closest (default), first or strict");
+    cmd->add_flag("--json", options.json, "Print JSON");
+    cmd->callback([&options, keywords, light] {
+        options.command = Command::Lookup;
+        if (keywords->count() == 0 && light->count() == 0) {
+            throw CLI::RequiredError("lookup needs --keywords or --light");
+        }
+    });
+}
+
 // CLI11 has no multi-letter short options, so -O0/-O/-Os become --optimization=<same>.
 std::vector<std::string> normalizeArguments(int argc, const char* const* argv) {
     std::vector<std::string> args;
@@ -102,6 +139,9 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
     addLock(app, options);
     addCheck(app, options, growthText);
     addBuild(app, options);
+    addInfo(app, options);
+    addExtract(app, options);
+    addLookup(app, options);
     try {
         std::vector<std::string> args = normalizeArguments(argc, argv);
         app.parse(args);

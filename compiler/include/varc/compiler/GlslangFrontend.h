@@ -44,7 +44,7 @@ PreprocessOutput preprocessProgram(const FrontendInput& input);
 // Parses, links (auto-mapped bindings and locations) and generates SPIR-V 1.0 for Vulkan 1.0.
 CompileOutput compileProgram(const FrontendInput& input);
 
-// "glslang 12.0.0" — the front end's version, recorded in pack headers.
+// "12.0.0" — the front end's version, recorded in pack headers.
 std::string glslangVersionString();
 
 }  // namespace varc::compiler

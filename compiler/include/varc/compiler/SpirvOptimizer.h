@@ -29,7 +29,7 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& spirv, OptimizationLevel 
 // Validates |spirv| for Vulkan 1.0; returns the validator's message, or nullopt when valid.
 std::optional<std::string> validateSpirv(const std::vector<uint32_t>& spirv);
 
-// "SPIRV-Tools v2023.1 ..." for pack headers.
+// "v2023.1" for pack headers.
 std::string spirvToolsVersionString();
 
 }  // namespace varc::compiler

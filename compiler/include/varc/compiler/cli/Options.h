@@ -10,7 +10,7 @@
 
 namespace varc::cli {
 
-enum class Command { None, Variants, Lock, Check, Build };
+enum class Command { None, Variants, Lock, Check, Build, Info, Extract, Lookup };
 
 // A growth allowance for `varc check --max-growth`: N variants, or N percent of the lock.
 struct GrowthLimit {
@@ -34,6 +34,17 @@ struct Options {
     unsigned jobs = 0;                     // -j N; 0 = hardware concurrency
     std::string optimization = "-O";       // -O0 | -O | -Os
     bool keepGoing = false;                // --keep-going
+    // info / extract / lookup
+    std::string packPath;                  // the PACK argument
+    std::string lookupShader;              // --shader NAME
+    std::string lookupPass;                // --pass N|LIGHTMODE
+    std::string lookupKeywords;            // --keywords "A B" (with --light: the material's)
+    std::string lookupLight;               // --light directional|point|spot
+    bool lookupCookie = false;             // --cookie
+    std::string lookupShadows = "none";    // --shadows none|hard|soft
+    int lookupVertexLights = 0;            // --vertex-lights N
+    bool lookupHdr = false;                // --hdr
+    std::string lookupPolicy = "closest";  // --policy exact|closest|first|strict
 };
 
 // Exit codes shared by every subcommand.
