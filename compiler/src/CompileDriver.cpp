@@ -9,6 +9,7 @@
 #include "varc/compiler/CompileDriver.h"
 
 #include <atomic>
+#include <ctime>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -59,10 +60,18 @@ struct StageResult {
 
 struct CompiledSource {
     bool ok = false;
+    double seconds = 0;  // CPU time of compileSource on its worker thread
     std::vector<uint32_t> spirv;
     pack::ProgramReflection reflection;
     std::vector<Diagnostic> diagnostics;
 };
+
+// CPU time of the calling thread: unlike wall time, not inflated by other processes.
+double threadCpuSeconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
+}
 
 shaderlab::ProgramLanguage languageOf(const PassJob& job) {
     return job.pass->pass->program->language;
@@ -252,7 +261,9 @@ bool Builder::compileSources() {
     std::atomic<size_t> done{0};
     parallelFor(mSources.size(), mThreads, [&](size_t i) {
         if (failed.load() && !mOptions.keepGoing) return;
+        double start = threadCpuSeconds();
         mCompiled[i] = compileSource(mSources[i]);
+        mCompiled[i].seconds = threadCpuSeconds() - start;
         if (!mCompiled[i].ok) failed.store(true);
         if (mOptions.progress) mOptions.progress(done.fetch_add(1) + 1, mSources.size());
     }, /*firstAlone=*/true);
@@ -287,6 +298,7 @@ void Builder::fillStats(const PassJob& job, CompiledPass& pass,
 BuildOutput Builder::assemble() {
     BuildOutput output;
     output.compiledSources = mSources.size();
+    for (const CompiledSource& compiled : mCompiled) output.compileSeconds += compiled.seconds;
     std::map<std::vector<uint32_t>, uint32_t> byBytes;
     std::vector<uint32_t> finalIds(mSources.size(), kNoProgram);
     for (const PassJob& job : mJobs) {

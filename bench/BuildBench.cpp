@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: Apache-2.0
+// Full builds of the seed fixtures and varc's shader library, against two yardsticks:
+//   - the naive way: one glslangValidator process per variant and stage (what a shell loop
+//     over variants does); target: varc at least 50x faster;
+//   - the in-process floor: the distinct programs' own compile time (glslang + optimiser +
+//     validator + reflection, summed by the driver) divided by the worker count; target: a
+//     parallel build within 1.5x of it.
+// Run from anywhere: ./build/bench/varc_bench_build. Results go in docs/PERFORMANCE.md.
+#include <benchmark/benchmark.h>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "varc/compiler/CompileDriver.h"
+#include "varc/compiler/GlslLegacyPreamble.h"
+#include "varc/compiler/PassDefines.h"
+#include "varc/compiler/ShaderLoader.h"
+#include "varc/core/Diagnostic.h"
+#include "varc/includes/FileSystem.h"
+
+namespace varc {
+namespace {
+
+// The inputs, loaded once: loading is not what these benchmarks measure.
+struct Inputs {
+    includes::DiskFileSystem fileSystem;
+    includes::SourceMap sourceMap;
+    std::vector<compiler::LoadedShader> shaders;
+    uint64_t variants = 0;
+    bool ok = true;
+};
+
+std::vector<std::string> shaderFiles() {
+    std::vector<std::string> roots = {VARC_SOURCE_DIR "/../shared/fixtures", VARC_SOURCE_DIR "/shaders"};
+    std::vector<std::string> files;
+    for (const std::string& root : roots) {
+        if (!std::filesystem::is_directory(root)) continue;
+        for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+            if (entry.path().extension() == ".shader") files.push_back(entry.path().string());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+Inputs& inputs() {
+    static Inputs* loaded = [] {
+        auto* in = new Inputs;
+        includes::IncludeOptions options;
+        options.builtinDir = VARC_SOURCE_DIR "/shaders/builtin";
+        DiagnosticList diagnostics;
+        for (const std::string& file : shaderFiles()) {
+            auto shader = compiler::loadShader(file, in->fileSystem, in->sourceMap, options, diagnostics);
+            if (!shader) continue;
+            in->variants += shader->variantCount();
+            in->shaders.push_back(std::move(*shader));
+        }
+        in->ok = !diagnostics.hasErrors() && !in->shaders.empty();
+        return in;
+    }();
+    return *loaded;
+}
+
+void BM_VarcBuild(benchmark::State& state) {
+    Inputs& in = inputs();
+    if (!in.ok) return state.SkipWithError("inputs failed to load");
+    compiler::BuildOptions options;
+    options.jobs = static_cast<unsigned>(state.range(0));
+    std::optional<compiler::BuildOutput> output;
+    for (auto _ : state) {
+        DiagnosticList diagnostics;
+        output = compiler::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
+        if (!output) return state.SkipWithError("build failed");
+    }
+    state.counters["variants"] = static_cast<double>(in.variants);
+    state.counters["distinct"] = static_cast<double>(output->compiledSources);
+    state.counters["modules"] = static_cast<double>(output->programs.size());
+    // The in-process floor for this thread count, from the last iteration's own compile times.
+    state.counters["floor_s"] = output->compileSeconds / options.jobs;
+}
+BENCHMARK(BM_VarcBuild)->Arg(1)->Arg(2)->Iterations(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// One glslangValidator process per (pass, variant, stage), on the same spliced source and
+// predefined macros varc uses: the start-up-bound baseline the issue measures (~110 ms each).
+bool compileWithValidator(const compiler::LoadedPass& pass, const std::vector<std::string>& keywords,
+                          uint32_t stage, const std::string& entry, const std::string& dir) {
+    bool glsl = pass.pass->program->language == shaderlab::ProgramLanguage::Glsl;
+    compiler::DefineContext context{pass.pass->lightMode(), pass.keywords.target,
+                                    pass.pass->program->language, stage, keywords};
+    std::string source = compiler::makePreamble(context);
+    if (glsl) source = "#version 140\n" + source + compiler::legacyGlslPreamble(pass.source.text, stage);
+    source += pass.source.text;
+    std::string path = dir + (glsl ? "/program.glsl" : "/program.hlsl");
+    std::ofstream(path) << source;
+    std::string stageName = stage == variants::kStageVertex ? "vert" : "frag";
+    std::string command = "glslangValidator -V --quiet --auto-map-bindings --auto-map-locations "
+                          "--target-env vulkan1.0 -S " + stageName + " ";
+    command += glsl ? "-R " : "-D --hlsl-dx9-compatible -e " + entry + " ";
+    command += path + " -o " + dir + "/program.spv > /dev/null 2>&1";
+    return std::system(command.c_str()) == 0;
+}
+
+void BM_GlslangValidatorPerVariant(benchmark::State& state) {
+    Inputs& in = inputs();
+    if (!in.ok) return state.SkipWithError("inputs failed to load");
+    std::string dir = std::filesystem::temp_directory_path() / ("varc-bench-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    size_t processes = 0, failures = 0;
+    for (auto _ : state) {
+        for (const compiler::LoadedShader& shader : in.shaders) {
+            for (const compiler::LoadedPass& pass : shader.passes) {
+                bool glsl = pass.pass->program->language == shaderlab::ProgramLanguage::Glsl;
+                pass.space->forEach([&](const variants::VariantKey& key) {
+                    std::vector<std::string> keywords = pass.space->table().namesOf(key);
+                    for (uint32_t stage : {uint32_t(variants::kStageVertex), uint32_t(variants::kStageFragment)}) {
+                        const std::string& entry = stage == variants::kStageVertex ? pass.keywords.vertexEntry
+                                                                                    : pass.keywords.fragmentEntry;
+                        ++processes;
+                        if (!compileWithValidator(pass, keywords, stage, glsl ? "main" : entry, dir)) ++failures;
+                    }
+                    return true;
+                });
+            }
+        }
+    }
+    std::filesystem::remove_all(dir);
+    state.counters["processes"] = static_cast<double>(processes);
+    state.counters["failures"] = static_cast<double>(failures);
+    if (failures) state.SkipWithError("some programs failed under glslangValidator");
+}
+BENCHMARK(BM_GlslangValidatorPerVariant)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace varc
