@@ -38,6 +38,17 @@ EShMessages messagesFor(const FrontendInput& input) {
     return static_cast<EShMessages>(messages);
 }
 
+uint32_t descriptorSetOfStage(uint32_t stage) {
+    switch (stage) {
+        case variants::kStageVertex: return 0;
+        case variants::kStageFragment: return 1;
+        case variants::kStageGeometry: return 2;
+        case variants::kStageHull: return 3;
+        case variants::kStageDomain: return 4;
+    }
+    return 0;
+}
+
 // Default version for sources without `#version`: HLSL ignores it; see GlslLegacyPreamble.h.
 int defaultVersion(const FrontendInput& input) { return isHlsl(input) ? 100 : kLegacyGlslVersion; }
 
@@ -59,6 +70,9 @@ std::unique_ptr<glslang::TShader> makeShader(const FrontendInput& input, const c
     if (isHlsl(input)) shader->setEnvTargetHlslFunctionality1();
     shader->setAutoMapBindings(true);
     shader->setAutoMapLocations(true);
+    // One descriptor set per stage (docs/SHADER_ABI.md §1): bindings are numbered per program, so
+    // two stages sharing set 0 would give one binding two meanings in a pipeline layout.
+    shader->setResourceSetBinding({std::to_string(descriptorSetOfStage(input.stage))});
     return shader;
 }
 
