@@ -5,16 +5,19 @@
 # ...) must come from varc's own built-in directory. `varc build` compiles every variant and
 # validates every SPIR-V module with SPIRV-Tools (compiler/src/CompileDriver.cpp,
 # Builder::compileSource -> validateSpirv); an invalid module fails the build.
-# Then checks the build summary against `varc variants`: every variant of every pass is in the
-# pack (the per-pass counts of `varc build --json` add up to the total of `varc variants --json`),
-# and the pack file was written.
-# Usage: build_check.sh VARC PACK PATH...
-# Exit: 0 built and consistent; 1 otherwise (varc's output is printed).
+# Then checks the result against `varc variants`, twice:
+#   * the build summary: the per-pass counts of `varc build --json` add up to the total of
+#     `varc variants --json`;
+#   * the pack itself, with PACK_CHECK (pack_check.cpp): it opens the pack with the runtime's
+#     reader, validates every variant's vertex and fragment SPIR-V again, and counts the variants.
+# Usage: build_check.sh VARC PACK_CHECK PACK PATH...
+# Exit: 0 built, valid and complete; 1 otherwise (the tools' output is printed).
 set -uo pipefail
 
 varc="$1"
-pack="$2"
-shift 2
+check="$2"
+pack="$3"
+shift 3
 unset VARC_BUILTIN_INCLUDE_DIR
 
 fail() { echo "FAIL: $*"; exit 1; }
@@ -40,3 +43,13 @@ compiled=$(grep -o '"compiled_sources":[0-9]*' <<<"$summary" | cut -d: -f2)
 echo "$*: $built of $expected variants built, $compiled programs compiled to SPIR-V and validated, pack $(stat -c %s "$pack") bytes"
 [[ "$built" == "$expected" ]] || fail "build summary has $built variants, varc variants lists $expected"
 [[ -n "$compiled" && "$compiled" -gt 0 ]] || fail "no SPIR-V modules compiled"
+
+# The pack, read back by the runtime: every variant present, every program valid.
+report=$("$check" "$pack")
+status=$?
+if [[ $status -ne 0 ]]; then
+    echo "$report"; fail "$check rejected $pack (exit $status)"
+fi
+in_pack=$(sed -n 's/^variants=\([0-9]*\) .*/\1/p' <<<"$report")
+echo "pack: $(tail -n 1 <<<"$report")"
+[[ "$in_pack" == "$expected" ]] || fail "the pack holds $in_pack variants, varc variants lists $expected"
