@@ -135,6 +135,9 @@ std::optional<pack::ResourceBinding> resourceOf(const SpirvModule& module, const
     if (!type) return std::nullopt;
     resource.name = module.name(variable.id);
     resource.dim = pack::ResourceDim::None;
+    const Decorations& decorations = module.decorations(variable.id);
+    resource.set = decorations.get(DescriptorSet);
+    resource.binding = decorations.get(Binding);
     if (type->op == OpTypeSampler) {
         resource.kind = pack::ResourceKind::Sampler;
     } else if (type->op == OpTypeSampledImage || type->op == OpTypeImage) {

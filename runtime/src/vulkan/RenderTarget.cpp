@@ -89,21 +89,25 @@ VkAttachmentDescription attachment(VkFormat format, LoadOp op, VkImageLayout ste
     return description;
 }
 
-Result<UniqueHandle<VkRenderPass>> createRenderPass(VkDevice device, VkFormat color,
+Result<UniqueHandle<VkRenderPass>> createRenderPass(VkDevice device, const std::vector<VkFormat>& colors,
                                                     VkFormat depthStencil, LoadOp op) {
-    std::vector<VkAttachmentDescription> attachments{
-        attachment(color, op, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false)};
+    std::vector<VkAttachmentDescription> attachments;
+    std::vector<VkAttachmentReference> colorRefs;
+    for (VkFormat color : colors) {
+        colorRefs.push_back({static_cast<uint32_t>(attachments.size()), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+        attachments.push_back(attachment(color, op, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false));
+    }
+    VkAttachmentReference depthRef{static_cast<uint32_t>(attachments.size()),
+                                   VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     if (depthStencil != VK_FORMAT_UNDEFINED) {
         attachments.push_back(
             attachment(depthStencil, op, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, true));
     }
-    VkAttachmentReference colorRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-    VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
     VkSubpassDescription subpass{};
     subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-    subpass.colorAttachmentCount = 1;
-    subpass.pColorAttachments = &colorRef;
-    subpass.pDepthStencilAttachment = attachments.size() > 1 ? &depthRef : nullptr;
+    subpass.colorAttachmentCount = static_cast<uint32_t>(colorRefs.size());
+    subpass.pColorAttachments = colorRefs.data();
+    subpass.pDepthStencilAttachment = depthStencil != VK_FORMAT_UNDEFINED ? &depthRef : nullptr;
     std::array<VkSubpassDependency, 2> dependencies = passDependencies();
 
     VkRenderPassCreateInfo info{};
@@ -198,21 +202,28 @@ Status RenderTarget::createImages(const VulkanContext& context) {
                              std::to_string(limits.maxFramebufferWidth) + "x" +
                              std::to_string(limits.maxFramebufferHeight) + " limit");
     }
-    VkFormat color = colorFormat();
-    if (!supportsOptimal(context.physicalDevice(), color, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT)) {
-        return makeError(ErrorCode::Unsupported,
-                         std::string("colour format ") + toString(mDesc.color) +
-                             " cannot be a colour attachment on " + context.deviceName());
-    }
     DeviceImageDesc colorDesc;
-    colorDesc.format = color;
     colorDesc.width = mDesc.width;
     colorDesc.height = mDesc.height;
     colorDesc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                       VK_IMAGE_USAGE_SAMPLED_BIT;
-    Result<DeviceImage> colorImage = createDeviceImage(context, colorDesc, mDesc.name + " colour");
-    if (!colorImage) return colorImage.error();
-    mColor = std::move(*colorImage);
+    for (uint32_t i = 0; i < colorAttachmentCount(); ++i) {
+        ColorFormat format = attachmentFormat(i);
+        colorDesc.format = toVkFormat(format);
+        if (!supportsOptimal(context.physicalDevice(), colorDesc.format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT)) {
+            return makeError(ErrorCode::Unsupported,
+                             std::string("colour format ") + toString(format) +
+                                 " cannot be a colour attachment on " + context.deviceName());
+        }
+        Result<DeviceImage> colorImage =
+            createDeviceImage(context, colorDesc, mDesc.name + " colour " + std::to_string(i));
+        if (!colorImage) return colorImage.error();
+        if (i == 0) {
+            mColor = std::move(*colorImage);
+        } else {
+            mExtraColors.push_back(std::move(*colorImage));
+        }
+    }
     if (!mDesc.depthStencil) return Ok{};
 
     mDepthFormat = pickDepthStencilFormat(context.physicalDevice());
@@ -231,14 +242,20 @@ Status RenderTarget::createImages(const VulkanContext& context) {
     return Ok{};
 }
 
+ColorFormat RenderTarget::attachmentFormat(uint32_t attachment) const {
+    return attachment == 0 ? mDesc.color : mDesc.extraColors.at(attachment - 1);
+}
+
 Status RenderTarget::createRenderPasses(const VulkanContext& context) {
+    std::vector<VkFormat> colors;
+    for (uint32_t i = 0; i < colorAttachmentCount(); ++i) colors.push_back(toVkFormat(attachmentFormat(i)));
     Result<UniqueHandle<VkRenderPass>> clearPass =
-        createRenderPass(context.device(), colorFormat(), mDepthFormat, LoadOp::Clear);
+        createRenderPass(context.device(), colors, mDepthFormat, LoadOp::Clear);
     if (!clearPass) return clearPass.error();
     mClearPass = std::move(*clearPass);
     context.nameObject(mClearPass, mDesc.name + " clear pass");
     Result<UniqueHandle<VkRenderPass>> loadPass =
-        createRenderPass(context.device(), colorFormat(), mDepthFormat, LoadOp::Load);
+        createRenderPass(context.device(), colors, mDepthFormat, LoadOp::Load);
     if (!loadPass) return loadPass.error();
     mLoadPass = std::move(*loadPass);
     context.nameObject(mLoadPass, mDesc.name + " load pass");
@@ -247,6 +264,7 @@ Status RenderTarget::createRenderPasses(const VulkanContext& context) {
 
 Status RenderTarget::createFramebuffer(const VulkanContext& context) {
     std::vector<VkImageView> views{mColor.view.get()};
+    for (const DeviceImage& extra : mExtraColors) views.push_back(extra.view.get());
     if (mDepth.view) views.push_back(mDepth.view.get());
     VkFramebufferCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
@@ -286,35 +304,38 @@ VkViewport RenderTarget::viewport() const {
 VkRect2D RenderTarget::area() const { return VkRect2D{{0, 0}, {mDesc.width, mDesc.height}}; }
 
 void RenderTarget::begin(VkCommandBuffer commands, LoadOp op) const {
-    std::array<VkClearValue, 2> clears{};
+    std::vector<VkClearValue> clears(colorAttachmentCount() + 1);  // extra colours clear to 0
     const std::array<float, 4>& c = mDesc.clearColor;
     clears[0].color = {{c[0], c[1], c[2], c[3]}};
-    clears[1].depthStencil = {mDesc.clearDepth, mDesc.clearStencil};
+    clears.back().depthStencil = {mDesc.clearDepth, mDesc.clearStencil};
     VkRenderPassBeginInfo info{};
     info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
     info.renderPass = renderPass(op);
     info.framebuffer = mFramebuffer.get();
     info.renderArea = area();
-    info.clearValueCount = op == LoadOp::Clear ? (mDepth.view ? 2u : 1u) : 0u;
+    uint32_t clearCount = colorAttachmentCount() + (mDepth.view ? 1u : 0u);
+    info.clearValueCount = op == LoadOp::Clear ? clearCount : 0u;
     info.pClearValues = clears.data();
     vkCmdBeginRenderPass(commands, &info, VK_SUBPASS_CONTENTS_INLINE);
 }
 
 void RenderTarget::end(VkCommandBuffer commands) const { vkCmdEndRenderPass(commands); }
 
-Result<Image> RenderTarget::readback(VulkanContext& context) const {
-    VkDeviceSize size = VkDeviceSize{mDesc.width} * mDesc.height * bytesPerPixel(mDesc.color);
+Result<Image> RenderTarget::readback(VulkanContext& context, uint32_t attachment) const {
+    VARC_CHECK(attachment < colorAttachmentCount()) << "no colour attachment " << attachment;
+    ColorFormat format = attachmentFormat(attachment);
+    VkDeviceSize size = VkDeviceSize{mDesc.width} * mDesc.height * bytesPerPixel(format);
     Result<Buffer> buffer = Buffer::create(context, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                            MemoryLocation::HostVisible, mDesc.name + " readback");
     if (!buffer) return buffer.error();
     Status copied = context.submitAndWait(
-        [&](VkCommandBuffer commands) { recordReadback(commands, buffer->handle()); });
+        [&](VkCommandBuffer commands) { recordReadback(commands, buffer->handle(), attachment); });
     if (!copied) return copied.error();
-    return convertReadback(buffer->mapped(), mDesc.width, mDesc.height, mDesc.color);
+    return convertReadback(buffer->mapped(), mDesc.width, mDesc.height, format);
 }
 
-void RenderTarget::recordReadback(VkCommandBuffer commands, VkBuffer destination) const {
-    VkImage image = mColor.image.get();
+void RenderTarget::recordReadback(VkCommandBuffer commands, VkBuffer destination, uint32_t attachment) const {
+    VkImage image = attachment == 0 ? mColor.image.get() : mExtraColors[attachment - 1].image.get();
     transitionLayout(
         commands, image, VK_IMAGE_ASPECT_COLOR_BIT,
         {VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "varc/compiler/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
 #include "varc/variants/PassKeywords.h"
@@ -124,6 +126,43 @@ TEST_F(CompileDriverTest, ReflectsSemanticsAndUniforms) {
     ASSERT_EQ(fragment.reflection.uniformBlocks[0].members.size(), 1u);
     EXPECT_EQ(fragment.reflection.uniformBlocks[0].members[0].name, "_Tint");
     EXPECT_EQ(fragment.reflection.uniformBlocks[0].members[0].type, "float4");
+}
+
+// SHADER_ABI.md §1: each stage's descriptors live in their own set (vertex 0, fragment 1), and
+// the reflection reports every resource's real set and binding.
+TEST_F(CompileDriverTest, ReflectsOneDescriptorSetPerStageWithRealBindings) {
+    auto output = build(R"(Shader "Test/Textured" {
+    SubShader {
+        Pass {
+            CGPROGRAM
+            #pragma vertex vert
+            #pragma fragment frag
+            float4x4 _Transform;
+            sampler2D _MainTex;
+            sampler2D _DetailTex;
+            float4 vert(float4 p : POSITION) : SV_POSITION { return mul(_Transform, p); }
+            float4 frag(float4 p : SV_POSITION) : SV_Target {
+                return tex2D(_MainTex, p.xy) * tex2D(_DetailTex, p.yx);
+            }
+            ENDCG
+        }
+    }
+}
+)");
+    ASSERT_TRUE(output);
+    const CompiledVariant& variant = output->passes[0].variants[0];
+    const auto& vertex = output->programs[variant.programs[stageSlot(variants::kStageVertex)]].reflection;
+    const auto& fragment = output->programs[variant.programs[stageSlot(variants::kStageFragment)]].reflection;
+    ASSERT_EQ(vertex.uniformBlocks.size(), 1u);
+    EXPECT_EQ(vertex.uniformBlocks[0].set, 0u);
+    ASSERT_EQ(fragment.resources.size(), 2u);
+    std::set<uint32_t> bindings;
+    for (const pack::ResourceBinding& resource : fragment.resources) {
+        EXPECT_EQ(resource.set, 1u) << resource.name;
+        EXPECT_EQ(resource.kind, pack::ResourceKind::CombinedImageSampler) << resource.name;
+        bindings.insert(resource.binding);
+    }
+    EXPECT_EQ(bindings.size(), 2u) << "two textures share a binding";
 }
 
 TEST_F(CompileDriverTest, ErrorInSharedIncludeIsReportedOnceWithVariantCountAndMappedLine) {

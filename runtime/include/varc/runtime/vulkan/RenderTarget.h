@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "varc/core/Result.h"
 #include "varc/runtime/vulkan/DeviceImage.h"
@@ -36,6 +37,8 @@ struct RenderTargetDesc {
     uint32_t width = 256;
     uint32_t height = 256;
     ColorFormat color = ColorFormat::Rgba8Unorm;
+    // Further colour attachments 1..N (multiple render targets, e.g. a G-buffer); cleared to 0.
+    std::vector<ColorFormat> extraColors;
     // Adds a VK_FORMAT_D32_SFLOAT_S8_UINT attachment, or D24_UNORM_S8_UINT where D32S8 is not
     // supported.
     bool depthStencil = true;
@@ -61,6 +64,7 @@ public:
     uint32_t height() const { return mDesc.height; }
     const RenderTargetDesc& desc() const { return mDesc; }
     VkFormat colorFormat() const { return toVkFormat(mDesc.color); }
+    uint32_t colorAttachmentCount() const { return 1 + static_cast<uint32_t>(mDesc.extraColors.size()); }
     // VK_FORMAT_UNDEFINED without a depth/stencil attachment.
     VkFormat depthStencilFormat() const { return mDepthFormat; }
     VkRenderPass renderPass(LoadOp op = LoadOp::Clear) const;
@@ -77,18 +81,20 @@ public:
     // Copies the colour image to a host-visible buffer and waits. 8-bit formats give Rgba8
     // images of the stored bytes (still sRGB-encoded for Rgba8Srgb); float formats give
     // RgbaFloat images (half floats converted exactly). Errors: ErrorCode::VulkanError.
-    Result<Image> readback(VulkanContext& context) const;
+    Result<Image> readback(VulkanContext& context, uint32_t attachment = 0) const;
 
 private:
     Status createImages(const VulkanContext& context);
     Status createRenderPasses(const VulkanContext& context);
     Status createFramebuffer(const VulkanContext& context);
     Status clearOnce(VulkanContext& context) const;
-    void recordReadback(VkCommandBuffer commands, VkBuffer destination) const;
+    void recordReadback(VkCommandBuffer commands, VkBuffer destination, uint32_t attachment) const;
+    ColorFormat attachmentFormat(uint32_t attachment) const;
 
     RenderTargetDesc mDesc;
     VkFormat mDepthFormat = VK_FORMAT_UNDEFINED;
     DeviceImage mColor;
+    std::vector<DeviceImage> mExtraColors;
     DeviceImage mDepth;
     UniqueHandle<VkRenderPass> mClearPass;
     UniqueHandle<VkRenderPass> mLoadPass;

@@ -1,0 +1,20 @@
+# SPDX-License-Identifier: Apache-2.0
+# varc::render: pipelines, uniforms and descriptors for pack variants on Vulkan (issue #5).
+# Included from runtime/CMakeLists.txt. Never links glslang.
+find_package(glm CONFIG REQUIRED)
+
+add_library(varc_render STATIC
+    src/render/DescriptorSlots.cpp
+    src/render/DrawResources.cpp
+    src/render/RenderStateResolver.cpp
+    src/render/ShaderValues.cpp
+    src/render/UniformBlockWriter.cpp
+    src/render/VariantPipeline.cpp
+    src/render/VertexLayout.cpp
+)
+add_library(varc::render ALIAS varc_render)
+target_include_directories(varc_render
+    PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include
+    PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
+target_link_libraries(varc_render PUBLIC varc::runtime varc::vulkan glm::glm)
+varc_target_defaults(varc_render)
