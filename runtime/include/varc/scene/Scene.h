@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: Apache-2.0
+// Scene: the camera, objects, materials and lights of a validation scene (issue #5 §5), in Unity's
+// conventions, and the JSON reader for it.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "varc/core/Result.h"
+
+namespace varc::scene {
+
+enum class MeshKind { Sphere, Cube, Plane };
+enum class LightType { Directional, Point, Spot };
+enum class LightRenderMode { Auto, Important, NotImportant };
+enum class RenderPath { Forward, Deferred, SinglePass };
+
+// Unity conventions: left-handed, y up, metres; local +z forward; Euler angles in degrees applied
+// as Unity does (rotation = Ry(y) * Rx(x) * Rz(z), i.e. z first, then x, then y). The rotation
+// matrices have the usual form (Ry(90°) maps +z to +x, Rx(90°) maps +z to -y, Rz(90°) maps +x
+// to +y), which in a left-handed world are clockwise turns seen from the axis' positive end.
+struct Transform {
+    glm::vec3 position{0.0f};
+    glm::vec3 rotationDegrees{0.0f};
+    glm::vec3 scale{1.0f};
+    glm::mat3 rotation() const;      // Ry(y) * Rx(x) * Rz(z)
+    glm::mat4 localToWorld() const;  // T * R * S, column vectors (glm)
+    glm::mat4 rigidToWorld() const;  // T * R (no scale): light and camera frames
+};
+
+struct Camera {
+    glm::vec3 position{0.0f, 0.0f, -5.0f};
+    glm::vec3 target{0.0f};
+    float fovY = 60.0f;  // degrees, vertical
+    float nearPlane = 0.1f, farPlane = 100.0f;
+    uint32_t width = 256, height = 256;
+    bool hdr = false;
+    RenderPath path = RenderPath::Forward;
+    glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};  // linear clear colour
+};
+
+// A material property: a float, a vector/colour, or a texture name ("white", "black", ...).
+using PropertyValue = std::variant<float, glm::vec4, std::string>;
+
+struct Material {
+    std::string shader;                               // e.g. "Custom/My First Lighting Shader"
+    std::map<std::string, PropertyValue> properties;  // "_Tint" -> vec4, "_Smoothness" -> 0.5
+};
+
+struct Object {
+    std::string name;  // "" allowed
+    MeshKind mesh = MeshKind::Sphere;
+    Transform transform;
+    Material material;
+};
+
+struct Light {
+    LightType type = LightType::Directional;
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    Transform transform;          // position and rotation used; light travels along local +z
+    float range = 10.0f;          // point, spot
+    float spotAngle = 30.0f;      // degrees, full cone angle
+    std::string cookie = "none";  // "none" | "default" | a texture name
+    float cookieSize = 10.0f;     // directional cookies: metres covered by one cookie tile
+    LightRenderMode renderMode = LightRenderMode::Auto;
+    glm::vec3 finalColor() const { return color * intensity; }  // linear
+    glm::vec3 forward() const;  // unit world direction the light travels (local +z)
+    // Whether the light draws with a cookie. Spot lights always have one (the default disc when
+    // |cookie| is "none", SHADER_ABI.md §6); directional and point lights when |cookie| != "none".
+    bool hasCookie() const { return type == LightType::Spot || cookie != "none"; }
+};
+
+struct Scene {
+    Camera camera;
+    glm::vec3 ambient{0.0f};  // linear flat ambient colour
+    int pixelLightCount = 4;  // quality.pixel_light_count
+    std::vector<Object> objects;
+    std::vector<Light> lights;
+};
+
+// Parses the scene JSON format of issue #5 §5. Every field is optional (defaults as in the
+// structs above) except each object's "mesh" and each light's "type"; unknown keys are errors.
+// Besides the issue's keys: camera "background" [r,g,b(,a)], light "cookie_size", object
+// "name". Colours are [r,g,b] or [r,g,b,a]; material properties are numbers, arrays of 1-4
+// numbers (padded with 0, alpha 1 for 3) or texture-name strings. Every error message starts
+// with "<path>: " and names the JSON pointer, e.g.
+//   "scenes/a.json: /lights/2/type: expected one of directional, point, spot, got 'pointy'".
+// Never throws; errors are ErrorCode::InvalidInput.
+// Example: parseScene(R"({"objects":[{"mesh":"sphere"}]})", "a.json") -> one default sphere.
+Result<Scene> parseScene(std::string_view json, const std::string& path);
+
+// Reads |path| and parses it with parseScene. ErrorCode::IoError when unreadable.
+Result<Scene> loadScene(const std::string& path);
+
+const char* toString(MeshKind kind);
+const char* toString(LightType type);
+
+}  // namespace varc::scene

@@ -1,0 +1,353 @@
+// SPDX-License-Identifier: Apache-2.0
+// SceneParser: the scene JSON format of issue #5 §5 → Scene, with JSON-pointer error messages.
+#include <cmath>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "varc/scene/Scene.h"
+
+namespace varc::scene {
+namespace {
+
+using nlohmann::json;
+
+// Collects the first error; every read* returns false after reporting it.
+class Reader {
+public:
+    explicit Reader(std::string path) : mPath(std::move(path)) {}
+
+    bool fail(const std::string& pointer, const std::string& message) {
+        if (mError.empty()) mError = mPath + ": " + (pointer.empty() ? "/" : pointer) + ": " + message;
+        return false;
+    }
+    const std::string& error() const { return mError; }
+
+    // Fails when |value| (an object) has a key outside |allowed|.
+    bool onlyKeys(const json& value, const std::string& pointer,
+                  std::initializer_list<const char*> allowed) {
+        if (!value.is_object()) return fail(pointer, "expected an object, got " + typeName(value));
+        for (const auto& [key, unused] : value.items()) {
+            bool known = false;
+            for (const char* name : allowed) known = known || key == name;
+            if (!known) {
+                std::string list;
+                for (const char* name : allowed) list += (list.empty() ? "" : ", ") + std::string(name);
+                return fail(pointer + "/" + key, "unknown key (expected one of " + list + ")");
+            }
+        }
+        return true;
+    }
+
+    bool readFloat(const json& value, const std::string& pointer, float& out) {
+        if (!value.is_number()) return fail(pointer, "expected a number, got " + typeName(value));
+        const double d = value.get<double>();
+        if (!std::isfinite(d)) return fail(pointer, "expected a finite number");
+        out = static_cast<float>(d);
+        return true;
+    }
+
+    bool readPositive(const json& value, const std::string& pointer, float& out) {
+        if (!readFloat(value, pointer, out)) return false;
+        if (!(out > 0.0f)) return fail(pointer, "expected a number > 0, got " + value.dump());
+        return true;
+    }
+
+    bool readVec3(const json& value, const std::string& pointer, glm::vec3& out) {
+        if (!value.is_array() || value.size() != 3) {
+            return fail(pointer, "expected an array of 3 numbers, got " + value.dump());
+        }
+        for (size_t i = 0; i < 3; ++i) {
+            if (!readFloat(value[i], pointer + "/" + std::to_string(i), out[static_cast<int>(i)])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    // [r, g, b] (alpha 1) or [r, g, b, a].
+    bool readColor(const json& value, const std::string& pointer, glm::vec4& out) {
+        if (!value.is_array() || value.size() < 3 || value.size() > 4) {
+            return fail(pointer, "expected a colour [r, g, b] or [r, g, b, a], got " + value.dump());
+        }
+        out = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        for (size_t i = 0; i < value.size(); ++i) {
+            if (!readFloat(value[i], pointer + "/" + std::to_string(i), out[static_cast<int>(i)])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    bool readBool(const json& value, const std::string& pointer, bool& out) {
+        if (!value.is_boolean()) return fail(pointer, "expected true or false, got " + value.dump());
+        out = value.get<bool>();
+        return true;
+    }
+
+    bool readString(const json& value, const std::string& pointer, std::string& out) {
+        if (!value.is_string()) return fail(pointer, "expected a string, got " + typeName(value));
+        out = value.get<std::string>();
+        return true;
+    }
+
+    // A non-negative integer in [lo, hi].
+    bool readInt(const json& value, const std::string& pointer, int64_t lo, int64_t hi,
+                 int64_t& out) {
+        if (!value.is_number_integer()) {
+            return fail(pointer, "expected an integer, got " + value.dump());
+        }
+        out = value.get<int64_t>();
+        if (out < lo || out > hi) {
+            return fail(pointer, "expected an integer in [" + std::to_string(lo) + ", " +
+                                     std::to_string(hi) + "], got " + value.dump());
+        }
+        return true;
+    }
+
+    // One of |names| (mapped to the matching entry of |values|).
+    template <typename E>
+    bool readEnum(const json& value, const std::string& pointer,
+                  std::initializer_list<std::pair<const char*, E>> options, E& out) {
+        std::string list;
+        for (const auto& option : options) list += (list.empty() ? "" : ", ") + std::string(option.first);
+        if (!value.is_string()) {
+            return fail(pointer, "expected one of " + list + ", got " + value.dump());
+        }
+        const std::string text = value.get<std::string>();
+        for (const auto& option : options) {
+            if (text == option.first) {
+                out = option.second;
+                return true;
+            }
+        }
+        return fail(pointer, "expected one of " + list + ", got '" + text + "'");
+    }
+
+    static std::string typeName(const json& value) { return value.type_name(); }
+
+private:
+    std::string mPath;
+    std::string mError;
+};
+
+bool readTransform(Reader& r, const json& value, const std::string& pointer, Transform& out) {
+    if (value.contains("position") && !r.readVec3(value["position"], pointer + "/position", out.position)) {
+        return false;
+    }
+    if (value.contains("rotation") &&
+        !r.readVec3(value["rotation"], pointer + "/rotation", out.rotationDegrees)) {
+        return false;
+    }
+    if (value.contains("scale") && !r.readVec3(value["scale"], pointer + "/scale", out.scale)) {
+        return false;
+    }
+    return true;
+}
+
+bool readCamera(Reader& r, const json& value, const std::string& p, Camera& c) {
+    if (!r.onlyKeys(value, p, {"position", "target", "fov_y", "near", "far", "width", "height",
+                               "hdr", "path", "background"})) {
+        return false;
+    }
+    if (value.contains("position") && !r.readVec3(value["position"], p + "/position", c.position)) return false;
+    if (value.contains("target") && !r.readVec3(value["target"], p + "/target", c.target)) return false;
+    if (value.contains("fov_y")) {
+        if (!r.readPositive(value["fov_y"], p + "/fov_y", c.fovY)) return false;
+        if (c.fovY >= 180.0f) return r.fail(p + "/fov_y", "expected a number < 180");
+    }
+    if (value.contains("near") && !r.readPositive(value["near"], p + "/near", c.nearPlane)) return false;
+    if (value.contains("far") && !r.readPositive(value["far"], p + "/far", c.farPlane)) return false;
+    if (c.farPlane <= c.nearPlane) return r.fail(p + "/far", "expected far > near");
+    int64_t size = 0;
+    if (value.contains("width")) {
+        if (!r.readInt(value["width"], p + "/width", 1, 16384, size)) return false;
+        c.width = static_cast<uint32_t>(size);
+    }
+    if (value.contains("height")) {
+        if (!r.readInt(value["height"], p + "/height", 1, 16384, size)) return false;
+        c.height = static_cast<uint32_t>(size);
+    }
+    if (value.contains("hdr") && !r.readBool(value["hdr"], p + "/hdr", c.hdr)) return false;
+    if (value.contains("path") &&
+        !r.readEnum<RenderPath>(value["path"], p + "/path",
+                                {{"forward", RenderPath::Forward},
+                                 {"deferred", RenderPath::Deferred},
+                                 {"single_pass", RenderPath::SinglePass}},
+                                c.path)) {
+        return false;
+    }
+    if (value.contains("background") &&
+        !r.readColor(value["background"], p + "/background", c.background)) {
+        return false;
+    }
+    if (glm::length(c.target - c.position) == 0.0f) {
+        return r.fail(p + "/target", "the camera target equals its position");
+    }
+    return true;
+}
+
+bool readProperty(Reader& r, const json& value, const std::string& p, PropertyValue& out) {
+    if (value.is_number()) {
+        float f = 0.0f;
+        if (!r.readFloat(value, p, f)) return false;
+        out = f;
+        return true;
+    }
+    if (value.is_string()) {
+        out = value.get<std::string>();
+        return true;
+    }
+    if (value.is_array() && !value.empty() && value.size() <= 4) {
+        glm::vec4 v(0.0f);
+        if (value.size() == 3) v.w = 1.0f;
+        for (size_t i = 0; i < value.size(); ++i) {
+            if (!r.readFloat(value[i], p + "/" + std::to_string(i), v[static_cast<int>(i)])) return false;
+        }
+        out = v;
+        return true;
+    }
+    return r.fail(p, "expected a number, an array of 1 to 4 numbers or a texture name, got " +
+                         value.dump());
+}
+
+bool readMaterial(Reader& r, const json& value, const std::string& p, Material& m) {
+    if (!r.onlyKeys(value, p, {"shader", "properties"})) return false;
+    if (value.contains("shader") && !r.readString(value["shader"], p + "/shader", m.shader)) return false;
+    if (!value.contains("properties")) return true;
+    const json& props = value["properties"];
+    if (!props.is_object()) return r.fail(p + "/properties", "expected an object");
+    for (const auto& [name, prop] : props.items()) {
+        PropertyValue v;
+        if (!readProperty(r, prop, p + "/properties/" + name, v)) return false;
+        m.properties[name] = std::move(v);
+    }
+    return true;
+}
+
+bool readObject(Reader& r, const json& value, const std::string& p, Object& o) {
+    if (!r.onlyKeys(value, p, {"name", "mesh", "position", "rotation", "scale", "material"})) return false;
+    if (value.contains("name") && !r.readString(value["name"], p + "/name", o.name)) return false;
+    if (!value.contains("mesh")) return r.fail(p, "missing key 'mesh'");
+    if (!r.readEnum<MeshKind>(value["mesh"], p + "/mesh",
+                              {{"sphere", MeshKind::Sphere}, {"cube", MeshKind::Cube},
+                               {"plane", MeshKind::Plane}},
+                              o.mesh)) {
+        return false;
+    }
+    if (!readTransform(r, value, p, o.transform)) return false;
+    return !value.contains("material") || readMaterial(r, value["material"], p + "/material", o.material);
+}
+
+bool readLight(Reader& r, const json& value, const std::string& p, Light& l) {
+    if (!r.onlyKeys(value, p, {"type", "color", "intensity", "position", "rotation", "range",
+                               "spot_angle", "cookie", "cookie_size", "render_mode"})) {
+        return false;
+    }
+    if (!value.contains("type")) return r.fail(p, "missing key 'type'");
+    if (!r.readEnum<LightType>(value["type"], p + "/type",
+                               {{"directional", LightType::Directional},
+                                {"point", LightType::Point},
+                                {"spot", LightType::Spot}},
+                               l.type)) {
+        return false;
+    }
+    if (value.contains("color")) {
+        glm::vec4 c;
+        if (!r.readColor(value["color"], p + "/color", c)) return false;
+        l.color = glm::vec3(c);
+    }
+    if (value.contains("intensity")) {
+        if (!r.readFloat(value["intensity"], p + "/intensity", l.intensity)) return false;
+        if (l.intensity < 0.0f) return r.fail(p + "/intensity", "expected a number >= 0");
+    }
+    if (!readTransform(r, value, p, l.transform)) return false;
+    if (value.contains("range") && !r.readPositive(value["range"], p + "/range", l.range)) return false;
+    if (value.contains("spot_angle")) {
+        if (!r.readPositive(value["spot_angle"], p + "/spot_angle", l.spotAngle)) return false;
+        if (l.spotAngle >= 180.0f) return r.fail(p + "/spot_angle", "expected a number < 180");
+    }
+    if (value.contains("cookie") && !r.readString(value["cookie"], p + "/cookie", l.cookie)) return false;
+    if (value.contains("cookie_size") &&
+        !r.readPositive(value["cookie_size"], p + "/cookie_size", l.cookieSize)) {
+        return false;
+    }
+    return !value.contains("render_mode") ||
+           r.readEnum<LightRenderMode>(value["render_mode"], p + "/render_mode",
+                                       {{"auto", LightRenderMode::Auto},
+                                        {"important", LightRenderMode::Important},
+                                        {"not_important", LightRenderMode::NotImportant}},
+                                       l.renderMode);
+}
+
+bool readScene(Reader& r, const json& root, Scene& scene) {
+    if (!r.onlyKeys(root, "", {"camera", "ambient", "quality", "objects", "lights"})) return false;
+    if (root.contains("camera") && !readCamera(r, root["camera"], "/camera", scene.camera)) return false;
+    if (root.contains("ambient")) {
+        const json& a = root["ambient"];
+        if (!r.onlyKeys(a, "/ambient", {"color"})) return false;
+        glm::vec4 c;
+        if (a.contains("color")) {
+            if (!r.readColor(a["color"], "/ambient/color", c)) return false;
+            scene.ambient = glm::vec3(c);
+        }
+    }
+    if (root.contains("quality")) {
+        const json& q = root["quality"];
+        if (!r.onlyKeys(q, "/quality", {"pixel_light_count"})) return false;
+        int64_t count = 0;
+        if (q.contains("pixel_light_count")) {
+            if (!r.readInt(q["pixel_light_count"], "/quality/pixel_light_count", 0, 64, count)) return false;
+            scene.pixelLightCount = static_cast<int>(count);
+        }
+    }
+    for (const char* key : {"objects", "lights"}) {
+        if (root.contains(key) && !root[key].is_array()) {
+            return r.fail(std::string("/") + key, "expected an array");
+        }
+    }
+    if (root.contains("objects")) {
+        for (size_t i = 0; i < root["objects"].size(); ++i) {
+            Object o;
+            if (!readObject(r, root["objects"][i], "/objects/" + std::to_string(i), o)) return false;
+            scene.objects.push_back(std::move(o));
+        }
+    }
+    if (root.contains("lights")) {
+        for (size_t i = 0; i < root["lights"].size(); ++i) {
+            Light l;
+            if (!readLight(r, root["lights"][i], "/lights/" + std::to_string(i), l)) return false;
+            scene.lights.push_back(std::move(l));
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+Result<Scene> parseScene(std::string_view text, const std::string& path) {
+    json root;
+    try {
+        root = json::parse(text.begin(), text.end());
+    } catch (const json::exception& e) {
+        return makeError(ErrorCode::InvalidInput, path + ": /: invalid JSON: " + e.what());
+    }
+    Reader reader(path);
+    Scene scene;
+    if (!readScene(reader, root, scene)) return makeError(ErrorCode::InvalidInput, reader.error());
+    return scene;
+}
+
+Result<Scene> loadScene(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return makeError(ErrorCode::IoError, path + ": cannot read the scene file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) return makeError(ErrorCode::IoError, path + ": cannot read the scene file");
+    return parseScene(text.str(), path);
+}
+
+}  // namespace varc::scene

@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: Apache-2.0
+// parseScene / loadScene: the issue #5 §5 format, defaults, and JSON-pointer error messages.
+#include <gtest/gtest.h>
+
+#include "varc/scene/Scene.h"
+
+namespace varc::scene {
+namespace {
+
+std::string errorOf(std::string_view json) {
+    auto scene = parseScene(json, "scenes/a.json");
+    EXPECT_FALSE(scene.ok());
+    return scene.ok() ? std::string() : scene.error().detail;
+}
+
+TEST(SceneParser, ReadsTheIssueExample) {
+    auto scene = parseScene(R"({
+        "camera": {"position": [0, 1, -4], "target": [0, 0.5, 0], "fov_y": 50, "near": 0.3,
+                   "far": 50, "width": 128, "height": 96, "hdr": true, "path": "forward"},
+        "ambient": {"color": [0.1, 0.2, 0.3]},
+        "quality": {"pixel_light_count": 2},
+        "objects": [{"mesh": "cube", "position": [1, 2, 3], "rotation": [0, 45, 0],
+                     "scale": [2, 2, 2],
+                     "material": {"shader": "Custom/My First Lighting Shader",
+                                  "properties": {"_Tint": [1, 0.5, 0.25, 1], "_Smoothness": 0.5,
+                                                 "_MainTex": "white"}}}],
+        "lights": [{"type": "spot", "color": [1, 0.9, 0.8], "intensity": 2, "position": [0, 3, 0],
+                    "rotation": [90, 0, 0], "range": 7, "spot_angle": 40, "cookie": "default",
+                    "render_mode": "important"}]
+    })", "a.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().detail;
+    EXPECT_EQ(scene->camera.position, glm::vec3(0, 1, -4));
+    EXPECT_EQ(scene->camera.fovY, 50.0f);
+    EXPECT_EQ(scene->camera.nearPlane, 0.3f);
+    EXPECT_EQ(scene->camera.width, 128u);
+    EXPECT_EQ(scene->camera.height, 96u);
+    EXPECT_TRUE(scene->camera.hdr);
+    EXPECT_EQ(scene->ambient, glm::vec3(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(scene->pixelLightCount, 2);
+    ASSERT_EQ(scene->objects.size(), 1u);
+    const Object& o = scene->objects[0];
+    EXPECT_EQ(o.mesh, MeshKind::Cube);
+    EXPECT_EQ(o.transform.rotationDegrees, glm::vec3(0, 45, 0));
+    EXPECT_EQ(o.material.shader, "Custom/My First Lighting Shader");
+    EXPECT_EQ(std::get<glm::vec4>(o.material.properties.at("_Tint")), glm::vec4(1, 0.5f, 0.25f, 1));
+    EXPECT_EQ(std::get<float>(o.material.properties.at("_Smoothness")), 0.5f);
+    EXPECT_EQ(std::get<std::string>(o.material.properties.at("_MainTex")), "white");
+    ASSERT_EQ(scene->lights.size(), 1u);
+    const Light& l = scene->lights[0];
+    EXPECT_EQ(l.type, LightType::Spot);
+    EXPECT_EQ(l.finalColor(), glm::vec3(2.0f, 1.8f, 1.6f));
+    EXPECT_EQ(l.range, 7.0f);
+    EXPECT_EQ(l.spotAngle, 40.0f);
+    EXPECT_EQ(l.cookie, "default");
+    EXPECT_EQ(l.renderMode, LightRenderMode::Important);
+}
+
+TEST(SceneParser, EmptyObjectGivesDefaults) {
+    auto scene = parseScene("{}", "a.json");
+    ASSERT_TRUE(scene.ok());
+    EXPECT_EQ(scene->camera.position, glm::vec3(0, 0, -5));
+    EXPECT_EQ(scene->camera.width, 256u);
+    EXPECT_EQ(scene->pixelLightCount, 4);
+    EXPECT_TRUE(scene->objects.empty());
+}
+
+TEST(SceneParser, ColourWithThreeComponentsGetsAlphaOne) {
+    auto scene = parseScene(R"({"objects":[{"mesh":"sphere","material":{"properties":{"_Color":[0.5,0.5,0.5]}}}]})", "a.json");
+    ASSERT_TRUE(scene.ok());
+    EXPECT_EQ(std::get<glm::vec4>(scene->objects[0].material.properties.at("_Color")),
+              glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+}
+
+TEST(SceneParser, BadEnumNamesPointerAndChoices) {
+    EXPECT_EQ(errorOf(R"({"lights":[{"type":"point"},{"type":"spot"},{"type":"pointy"}]})"),
+              "scenes/a.json: /lights/2/type: expected one of directional, point, spot, got 'pointy'");
+}
+
+TEST(SceneParser, UnknownKeysAreErrors) {
+    EXPECT_EQ(errorOf(R"({"camera":{"fov":60}})").rfind("scenes/a.json: /camera/fov: unknown key", 0), 0u);
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","colour":[1,1,1]}]})")
+                  .rfind("scenes/a.json: /objects/0/colour: unknown key", 0), 0u);
+    EXPECT_EQ(errorOf(R"({"sky":1})").rfind("scenes/a.json: /sky: unknown key", 0), 0u);
+}
+
+TEST(SceneParser, MissingRequiredKeys) {
+    EXPECT_EQ(errorOf(R"({"objects":[{}]})"), "scenes/a.json: /objects/0: missing key 'mesh'");
+    EXPECT_EQ(errorOf(R"({"lights":[{"color":[1,1,1]}]})"), "scenes/a.json: /lights/0: missing key 'type'");
+}
+
+TEST(SceneParser, WrongTypesAndRanges) {
+    EXPECT_EQ(errorOf(R"({"camera":{"position":[0,1]}})"),
+              "scenes/a.json: /camera/position: expected an array of 3 numbers, got [0,1]");
+    EXPECT_EQ(errorOf(R"({"camera":{"position":[0,"1",2]}})"),
+              "scenes/a.json: /camera/position/1: expected a number, got string");
+    EXPECT_EQ(errorOf(R"({"camera":{"width":0}})"),
+              "scenes/a.json: /camera/width: expected an integer in [1, 16384], got 0");
+    EXPECT_EQ(errorOf(R"({"camera":{"near":1,"far":0.5}})"), "scenes/a.json: /camera/far: expected far > near");
+    EXPECT_EQ(errorOf(R"({"lights":[{"type":"point","range":-1}]})"),
+              "scenes/a.json: /lights/0/range: expected a number > 0, got -1");
+    EXPECT_EQ(errorOf(R"({"quality":{"pixel_light_count":1.5}})"),
+              "scenes/a.json: /quality/pixel_light_count: expected an integer, got 1.5");
+    EXPECT_EQ(errorOf(R"({"objects":{}})"), "scenes/a.json: /objects: expected an array");
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","material":{"properties":{"_X":[]}}}]})")
+                  .rfind("scenes/a.json: /objects/0/material/properties/_X: expected a number", 0), 0u);
+}
+
+TEST(SceneParser, SyntaxErrorNamesPath) {
+    EXPECT_EQ(errorOf("{\"camera\": ").rfind("scenes/a.json: /: invalid JSON", 0), 0u);
+}
+
+TEST(SceneParser, LoadSceneReportsUnreadableFile) {
+    auto scene = loadScene("/nonexistent/varc/scene.json");
+    ASSERT_FALSE(scene.ok());
+    EXPECT_EQ(scene.error().code, ErrorCode::IoError);
+    EXPECT_NE(scene.error().detail.find("/nonexistent/varc/scene.json"), std::string::npos);
+}
+
+TEST(SceneParser, ShippedScenesParse) {
+    for (const char* name : {"directional", "point", "spot", "point-cookie", "directional-cookie",
+                             "vertex-lights", "many-lights", "simple-diffuse", "glsl-vertex-lights"}) {
+        const std::string path = std::string(VARC_SOURCE_DIR) + "/tests/scenes/forward/" + name + ".json";
+        auto scene = loadScene(path);
+        EXPECT_TRUE(scene.ok()) << scene.error().detail;
+    }
+}
+
+}  // namespace
+}  // namespace varc::scene
