@@ -21,3 +21,16 @@ target_link_libraries(varc_scene
     PUBLIC glm::glm varc::core
     PRIVATE nlohmann_json::nlohmann_json)
 varc_target_defaults(varc_scene)
+
+add_library(varc_reference STATIC
+    src/reference/ImageCompare.cpp
+    src/reference/Rasterizer.cpp
+    src/reference/ReferenceRenderer.cpp
+    src/reference/Shading.cpp
+)
+add_library(varc::reference ALIAS varc_reference)
+target_include_directories(varc_reference
+    PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include
+    PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
+target_link_libraries(varc_reference PUBLIC varc::scene varc::core varc::vulkan glm::glm)
+varc_target_defaults(varc_reference)

@@ -1,0 +1,282 @@
+// SPDX-License-Identifier: Apache-2.0
+// ReferenceRenderer: per-object forward passes on the visibility buffer, with the attachment's
+// quantisation between passes.
+#include "varc/reference/ReferenceRenderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "varc/reference/Shading.h"
+#include "varc/scene/CameraMatrices.h"
+#include "varc/scene/Mesh.h"
+
+namespace varc::reference {
+namespace {
+
+using scene::PropertyValue;
+
+Status readColorProperty(const PropertyValue& value, const std::string& name, glm::vec4& out) {
+    if (const auto* v = std::get_if<glm::vec4>(&value)) {
+        out = *v;
+        return Ok{};
+    }
+    return makeError(ErrorCode::InvalidInput, "material property " + name + ": expected a colour");
+}
+
+Status readFloatProperty(const PropertyValue& value, const std::string& name, float& out) {
+    if (const auto* v = std::get_if<float>(&value)) {
+        out = *v;
+        return Ok{};
+    }
+    return makeError(ErrorCode::InvalidInput, "material property " + name + ": expected a number");
+}
+
+Status readTextureProperty(const PropertyValue& value, const std::string& name, glm::vec4& out) {
+    const auto* v = std::get_if<std::string>(&value);
+    if (v == nullptr) return makeError(ErrorCode::InvalidInput, "material property " + name + ": expected a texture name");
+    if (*v == "white") {
+        out = glm::vec4(1.0f);
+    } else if (*v == "black") {
+        out = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    } else {
+        return makeError(ErrorCode::Unsupported,
+                         "material property " + name + ": the CPU reference knows the textures "
+                         "'white' and 'black', not '" + *v + "'");
+    }
+    return Ok{};
+}
+
+// The per-vertex and per-pass data of one object's draws.
+struct ObjectDraw {
+    MaterialParams material;
+    std::vector<glm::vec3> worldPos, worldNormal, vertexTerm;
+    const scene::Mesh* mesh = nullptr;
+    bool vertexLightsOn = false;
+    std::array<glm::vec4, 7> sh{};
+    PassLight base;
+    std::vector<PassLight> adds;
+};
+
+// The interpolated inputs of one fragment.
+struct Varyings {
+    glm::vec3 p, normal, vertexTerm;
+};
+
+glm::vec3 lightDirection(const PassLight& light, const glm::vec3& p) {
+    return glm::normalize(glm::vec3(light.worldSpaceLightPos) - p * light.worldSpaceLightPos.w);
+}
+
+glm::vec3 maxZero(const glm::vec3& v) { return glm::max(v, glm::vec3(0.0f)); }
+
+// One pass of one fragment: LIGHTING.md §8.1, §8.2, §8.5.
+glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight& light, bool base,
+                    const glm::vec3& cameraPos, const glm::vec3& ambient,
+                    const LightTextureSet& textures, const ReferenceOptions& options) {
+    const MaterialParams& m = draw.material;
+    const glm::vec3 n = glm::normalize(in.normal);
+    const glm::vec3 l = lightDirection(light, in.p);
+    switch (m.model) {
+        case ShaderModel::ForwardPbs: {
+            const glm::vec3 v = glm::normalize(cameraPos - in.p);
+            const SurfaceColors surface =
+                diffuseAndSpecularFromMetallic(glm::vec3(m.mainTex) * glm::vec3(m.color), m.metallic);
+            const glm::vec3 e = light.color * lightAttenuation(light, textures, in.p);
+            glm::vec3 indirect(0.0f);
+            if (base) {
+                if (draw.vertexLightsOn) indirect = in.vertexTerm;
+                indirect += maxZero(scene::shadeSH9(draw.sh, n));
+            }
+            return {brdfPbs(surface, m.smoothness, n, v, l, e, indirect, glm::vec3(0.0f)), 1.0f};
+        }
+        case ShaderModel::SimpleDiffuse: {
+            const glm::vec4 albedo = m.mainTex * m.color;
+            const float atten = lightAttenuation(light, textures, in.p);
+            glm::vec3 c = glm::vec3(albedo) * light.color *
+                          (std::clamp(glm::dot(n, l), 0.0f, 1.0f) * atten);
+            if (base) c += glm::vec3(albedo) * in.vertexTerm;
+            return {c, albedo.a};
+        }
+        case ShaderModel::GlslBlinnPhong: {
+            const glm::vec3 v = glm::normalize(cameraPos - in.p);
+            const glm::vec3 toLight = glm::vec3(light.worldSpaceLightPos) - in.p * light.worldSpaceLightPos.w;
+            float falloff = 1.0f;
+            if (light.worldSpaceLightPos.w != 0.0f) {
+                const float invRange = light.positionRange.w;
+                const float t = glm::dot(toLight, toLight) * invRange * invRange;
+                falloff = options.falloffOverride ? options.falloffOverride(t)
+                                                  : std::clamp((1.0f - t) / 0.36f, 0.0f, 1.0f) / (1.0f + 25.0f * t);
+            }
+            const glm::vec3 kd(m.color);
+            const float ndotl = glm::dot(n, l);
+            glm::vec3 specular(0.0f);
+            if (ndotl > 0.0f) {
+                const glm::vec3 h = glm::normalize(l + v);
+                specular = m.specColor * std::pow(std::max(0.0f, glm::dot(n, h)), m.shininess);
+            }
+            glm::vec3 c = light.color * falloff * (kd * std::max(0.0f, ndotl) + specular);
+            if (base) {
+                const glm::vec3 a = options.lightProbeSh ? maxZero(scene::shadeSH9(draw.sh, n)) : ambient;
+                c += kd * (a + in.vertexTerm);
+            }
+            return {c, 1.0f};
+        }
+    }
+    return glm::vec4(0.0f);
+}
+
+// Per-vertex terms (interpolated by the GPU): vertex lights, and SimpleDiffuse's ambient.
+glm::vec3 vertexTerm(const ObjectDraw& draw, const VertexLights& lights, const glm::vec3& ambient,
+                     const glm::vec3& p, const glm::vec3& n, const ReferenceOptions& options) {
+    glm::vec3 term(0.0f);
+    if (draw.material.model == ShaderModel::SimpleDiffuse) {
+        term = options.lightProbeSh ? maxZero(scene::shadeSH9(draw.sh, n)) : ambient;
+    }
+    if (draw.vertexLightsOn) term += shade4PointLights(lights, p, n);
+    return term;
+}
+
+Result<ObjectDraw> prepareObject(const scene::Scene& scene, const scene::Object& object,
+                                 const ReferenceOptions& options) {
+    ObjectDraw draw;
+    auto material = resolveMaterial(object.material);
+    if (!material) return material.error();
+    draw.material = *material;
+    scene::ForwardLightAssignment lights = scene::assignForwardLights(scene, object);
+    if (options.editAssignment) options.editAssignment(lights);
+    draw.base = noPassLight();
+    if (lights.mainDirectional >= 0) {
+        auto main = passLightFor(scene.lights[lights.mainDirectional]);
+        if (!main) return main.error();
+        draw.base = *main;
+    }
+    for (int index : lights.addLights) {
+        auto add = passLightFor(scene.lights[index]);
+        if (!add) return add.error();
+        draw.adds.push_back(*add);
+    }
+    draw.vertexLightsOn = !lights.vertexLights.empty();
+    draw.sh = scene::packedSH(scene, object, lights.shLights);
+    const VertexLights vertexLights = vertexLightsFor(scene, lights.vertexLights);
+
+    draw.mesh = &scene::builtinMesh(object.mesh);
+    const glm::mat4 objectToWorld = object.transform.localToWorld();
+    // UnityObjectToWorldNormal: normalize(mul(n, (float3x3)unity_WorldToObject)).
+    const glm::mat3 normalMatrix = glm::transpose(glm::mat3(glm::inverse(objectToWorld)));
+    for (size_t i = 0; i < draw.mesh->positions.size(); ++i) {
+        const glm::vec3 p(objectToWorld * glm::vec4(draw.mesh->positions[i], 1.0f));
+        const glm::vec3 n = glm::normalize(normalMatrix * draw.mesh->normals[i]);
+        draw.worldPos.push_back(p);
+        draw.worldNormal.push_back(n);
+        draw.vertexTerm.push_back(vertexTerm(draw, vertexLights, scene.ambient, p, n, options));
+    }
+    return draw;
+}
+
+float quantize8(float v) { return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f); }
+float toHalf(float v) { return runtime::halfToFloat(runtime::floatToHalf(v)); }
+
+// The attachment after all passes: LDR in 8-bit units (0..255), HDR in half-rounded floats.
+glm::vec4 accumulate(const glm::vec4& base, const std::vector<glm::vec4>& adds, bool hdr) {
+    glm::vec4 dst;
+    for (int c = 0; c < 4; ++c) dst[c] = hdr ? toHalf(base[c]) : quantize8(base[c]);
+    for (const glm::vec4& add : adds) {
+        for (int c = 0; c < 4; ++c) {
+            dst[c] = hdr ? toHalf(dst[c] + toHalf(add[c])) : std::min(255.0f, dst[c] + quantize8(add[c]));
+        }
+    }
+    return hdr ? dst : dst / 255.0f;
+}
+
+}  // namespace
+
+Result<MaterialParams> resolveMaterial(const scene::Material& material) {
+    MaterialParams p;
+    std::string colorName = "_Color";
+    if (material.shader == "Custom/My First Lighting Shader") {
+        colorName = "_Tint";
+        p.smoothness = 0.1f;
+    } else if (material.shader == "varc/Forward") {
+        p.model = ShaderModel::ForwardPbs;
+    } else if (material.shader == "varc/SimpleDiffuse") {
+        p.model = ShaderModel::SimpleDiffuse;
+    } else if (material.shader == "varc/GlslVertexLights") {
+        p.model = ShaderModel::GlslBlinnPhong;
+    } else {
+        return makeError(ErrorCode::Unsupported,
+                         "the CPU reference has no model of shader '" + material.shader + "'");
+    }
+    for (const auto& [name, value] : material.properties) {
+        Status status = Ok{};
+        if (name == colorName) {
+            status = readColorProperty(value, name, p.color);
+        } else if (name == "_MainTex") {
+            status = readTextureProperty(value, name, p.mainTex);
+        } else if (name == "_Metallic") {
+            status = readFloatProperty(value, name, p.metallic);
+        } else if (name == "_Smoothness") {
+            status = readFloatProperty(value, name, p.smoothness);
+        } else if (name == "_SpecColor") {
+            glm::vec4 c;
+            status = readColorProperty(value, name, c);
+            p.specColor = glm::vec3(c);
+        } else if (name == "_Shininess") {
+            status = readFloatProperty(value, name, p.shininess);
+        }
+        if (!status) return status.error();
+    }
+    return p;
+}
+
+Result<ReferenceImage> renderReference(const scene::Scene& scene, const ReferenceOptions& options) {
+    if (scene.camera.path != scene::RenderPath::Forward) {
+        return makeError(ErrorCode::Unsupported, "the CPU reference renders the forward path only");
+    }
+    std::vector<ObjectDraw> draws;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        auto draw = prepareObject(scene, scene.objects[i], options);
+        if (!draw) {
+            return makeError(draw.error().code,
+                             "/objects/" + std::to_string(i) + ": " + draw.error().detail);
+        }
+        draws.push_back(std::move(*draw));
+    }
+    LightTextureSet textures;
+    if (options.falloffOverride) textures.setFalloffOverride(options.falloffOverride);
+
+    const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);
+    ReferenceImage out;
+    out.visibility = rasterizeScene(scene, camera);
+    out.classes = classifyPixels(scene, out.visibility);
+    const uint32_t w = scene.camera.width, h = scene.camera.height;
+    out.color = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
+    const bool hdr = scene.camera.hdr;
+    const glm::vec4 background = accumulate(scene.camera.background, {}, hdr);
+    for (uint32_t y = 0; y < h; ++y) {
+        for (uint32_t x = 0; x < w; ++x) {
+            const SurfaceSample& s = out.visibility.at(x, y);
+            glm::vec4 c = background;
+            if (s.object >= 0) {
+                const ObjectDraw& draw = draws[static_cast<size_t>(s.object)];
+                Varyings in{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+                for (int k = 0; k < 3; ++k) {
+                    const uint32_t v = draw.mesh->indices[3 * s.triangle + static_cast<uint32_t>(k)];
+                    in.p += s.bary[k] * draw.worldPos[v];
+                    in.normal += s.bary[k] * draw.worldNormal[v];
+                    in.vertexTerm += s.bary[k] * draw.vertexTerm[v];
+                }
+                const glm::vec4 base = shadePass(draw, in, draw.base, true, scene.camera.position,
+                                                 scene.ambient, textures, options);
+                std::vector<glm::vec4> adds;
+                for (const PassLight& light : draw.adds) {
+                    adds.push_back(shadePass(draw, in, light, false, scene.camera.position,
+                                             scene.ambient, textures, options));
+                }
+                c = accumulate(base, adds, hdr);
+            }
+            out.color.setPixelFloat(x, y, {c.r, c.g, c.b, c.a});
+        }
+    }
+    return out;
+}
+
+}  // namespace varc::reference
