@@ -4,9 +4,12 @@
 find_package(glm CONFIG REQUIRED)
 
 add_library(varc_render STATIC
+    src/render/BuiltinTextures.cpp
     src/render/DescriptorSlots.cpp
     src/render/DrawResources.cpp
+    src/render/ForwardRenderer.cpp
     src/render/RenderStateResolver.cpp
+    src/render/SceneValues.cpp
     src/render/ShaderValues.cpp
     src/render/UniformBlockWriter.cpp
     src/render/VariantPipeline.cpp
@@ -16,5 +19,5 @@ add_library(varc::render ALIAS varc_render)
 target_include_directories(varc_render
     PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include
     PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
-target_link_libraries(varc_render PUBLIC varc::runtime varc::vulkan glm::glm)
+target_link_libraries(varc_render PUBLIC varc::runtime varc::vulkan varc::scene glm::glm)
 varc_target_defaults(varc_render)

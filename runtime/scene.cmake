@@ -26,6 +26,7 @@ add_library(varc_reference STATIC
     src/reference/ImageCompare.cpp
     src/reference/Rasterizer.cpp
     src/reference/ReferenceRenderer.cpp
+    src/reference/SceneTolerance.cpp
     src/reference/Shading.cpp
 )
 add_library(varc::reference ALIAS varc_reference)

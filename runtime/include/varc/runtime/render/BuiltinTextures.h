@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: Apache-2.0
+// The textures the runtime provides by name (SHADER_ABI.md §6): white/black/bump defaults, the
+// light falloff table, and the default spot, directional and point (cube) cookies.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "varc/runtime/render/DrawResources.h"
+#include "varc/runtime/vulkan/Texture.h"
+
+namespace varc::runtime {
+
+class BuiltinTextures {
+public:
+    static Result<BuiltinTextures> create(VulkanContext& context);
+
+    // "white", "black", "bump" (2D) and "white" (cube), linear-repeat sampled.
+    std::optional<TextureBinding> named(std::string_view name, pack::ResourceDim dim) const;
+    TextureBinding falloff() const;           // 1024 x 1, linear, clamp
+    TextureBinding spotCookie() const;        // linear, clamp
+    TextureBinding directionalCookie() const; // linear, repeat
+    TextureBinding pointCookie() const;       // cube, linear, clamp
+
+private:
+    std::optional<Texture> mWhite, mBlack, mBump, mWhiteCube, mFalloff, mSpot, mDirectional, mPoint;
+    UniqueHandle<VkSampler> mRepeat, mClamp;
+};
+
+}  // namespace varc::runtime

@@ -1,0 +1,265 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "varc/runtime/render/ForwardRenderer.h"
+
+#include <deque>
+
+#include "varc/runtime/PassView.h"
+#include "varc/runtime/ShaderView.h"
+#include "varc/runtime/render/RenderStateResolver.h"
+#include "varc/runtime/render/SceneValues.h"
+#include "varc/runtime/render/VertexLayout.h"
+#include "varc/runtime/vulkan/RenderTarget.h"
+#include "varc/scene/Mesh.h"
+#include "varc/variants/LightKeywords.h"
+
+namespace varc::runtime {
+
+namespace {
+
+struct GpuMesh {
+    Buffer vertices;
+    Buffer indices;
+    uint32_t indexCount = 0;
+};
+
+Result<GpuMesh> uploadMesh(VulkanContext& context, const scene::Mesh& mesh) {
+    std::vector<MeshVertex> vertices(mesh.positions.size());
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        MeshVertex& v = vertices[i];
+        v = MeshVertex{{mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z},
+                       {mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z},
+                       {mesh.tangents[i].x, mesh.tangents[i].y, mesh.tangents[i].z, mesh.tangents[i].w},
+                       {mesh.uvs[i].x, mesh.uvs[i].y},
+                       {1.0f, 1.0f, 1.0f, 1.0f}};
+    }
+    GpuMesh gpu;
+    auto vertexBuffer = Buffer::createWithData(context, std::as_bytes(std::span(vertices)),
+                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "mesh vertices");
+    if (!vertexBuffer) return vertexBuffer.error();
+    auto indexBuffer = Buffer::createWithData(context, std::as_bytes(std::span(mesh.indices)),
+                                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "mesh indices");
+    if (!indexBuffer) return indexBuffer.error();
+    gpu.vertices = std::move(*vertexBuffer);
+    gpu.indices = std::move(*indexBuffer);
+    gpu.indexCount = static_cast<uint32_t>(mesh.indices.size());
+    return gpu;
+}
+
+variants::LightType toVariantLight(scene::LightType type) {
+    switch (type) {
+        case scene::LightType::Directional: return variants::LightType::Directional;
+        case scene::LightType::Point: return variants::LightType::Point;
+        case scene::LightType::Spot: return variants::LightType::Spot;
+    }
+    return variants::LightType::Directional;
+}
+
+// One recorded draw: everything bind() and vkCmdDrawIndexed need.
+struct Draw {
+    const VariantPipeline* pipeline = nullptr;
+    const GpuMesh* mesh = nullptr;
+    std::array<const ShaderValues*, 4> layers{};  // light, object, material, camera
+    TextureLookup textures;
+};
+
+}  // namespace
+
+struct ForwardRenderer::State {
+    VulkanContext* context = nullptr;
+    std::vector<const Pack*> packs;
+    std::optional<BuiltinTextures> textures;
+    std::optional<DrawResources> resources;
+    std::map<scene::MeshKind, GpuMesh> meshes;
+    struct TargetKey {
+        uint32_t width, height;
+        bool hdr;
+        std::array<float, 4> background;
+        auto operator<=>(const TargetKey&) const = default;
+    };
+    std::map<TargetKey, RenderTarget> targets;
+    struct CachedPipeline {
+        const Pack* pack;
+        std::string variant;
+        pack::PackRenderState state;
+        bool hdr;
+        VariantPipeline pipeline;
+    };
+    std::deque<CachedPipeline> pipelines;
+
+    Result<const RenderTarget*> target(const scene::Camera& camera);
+    Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
+                                            const pack::PackRenderState& state, const RenderTarget& target,
+                                            bool hdr);
+    std::optional<ShaderView> findShader(const std::string& name, const Pack** owner) const;
+};
+
+Result<const RenderTarget*> ForwardRenderer::State::target(const scene::Camera& camera) {
+    const glm::vec4& b = camera.background;
+    TargetKey key{camera.width, camera.height, camera.hdr, {b.r, b.g, b.b, b.a}};
+    auto it = targets.find(key);
+    if (it == targets.end()) {
+        RenderTargetDesc desc;
+        desc.width = camera.width;
+        desc.height = camera.height;
+        desc.color = camera.hdr ? ColorFormat::Rgba16Float : ColorFormat::Rgba8Unorm;
+        desc.clearColor = key.background;
+        desc.name = "forward target";
+        auto created = RenderTarget::create(*context, desc);
+        if (!created) return created.error();
+        it = targets.emplace(key, std::move(*created)).first;
+    }
+    return &it->second;
+}
+
+Result<const VariantPipeline*> ForwardRenderer::State::pipeline(const Pack* pack, const VariantView& variant,
+                                                                const pack::PackRenderState& state,
+                                                                const RenderTarget& target, bool hdr) {
+    std::string name = variant.describe();
+    for (const CachedPipeline& cached : pipelines) {
+        if (cached.pack == pack && cached.hdr == hdr && cached.variant == name && cached.state == state) {
+            return &cached.pipeline;
+        }
+    }
+    auto created = VariantPipeline::create(*context, variant, state, {target.renderPass(LoadOp::Clear), true, 1});
+    if (!created) return created.error();
+    pipelines.push_back({pack, name, state, hdr, std::move(*created)});
+    return &pipelines.back().pipeline;
+}
+
+std::optional<ShaderView> ForwardRenderer::State::findShader(const std::string& name, const Pack** owner) const {
+    for (const Pack* pack : packs) {
+        if (auto shader = pack->findShader(name)) {
+            *owner = pack;
+            return shader;
+        }
+    }
+    return std::nullopt;
+}
+
+ForwardRenderer::ForwardRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
+ForwardRenderer::ForwardRenderer(ForwardRenderer&&) noexcept = default;
+ForwardRenderer& ForwardRenderer::operator=(ForwardRenderer&&) noexcept = default;
+ForwardRenderer::~ForwardRenderer() = default;
+
+Result<ForwardRenderer> ForwardRenderer::create(VulkanContext& context, std::vector<const Pack*> packs) {
+    auto state = std::make_unique<State>();
+    state->context = &context;
+    state->packs = std::move(packs);
+    auto textures = BuiltinTextures::create(context);
+    if (!textures) return textures.error();
+    state->textures.emplace(std::move(*textures));
+    auto resources = DrawResources::create(context);
+    if (!resources) return resources.error();
+    state->resources.emplace(std::move(*resources));
+    for (scene::MeshKind kind : {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
+        auto mesh = uploadMesh(context, scene::builtinMesh(kind));
+        if (!mesh) return mesh.error();
+        state->meshes.emplace(kind, std::move(*mesh));
+    }
+    return ForwardRenderer(std::move(state));
+}
+
+Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
+    State& s = *mState;
+    auto target = s.target(scene.camera);
+    if (!target) return target.error();
+    scene::CameraMatrices matrices = scene::cameraMatrices(scene.camera);
+    ShaderValues camera = cameraValues(scene, matrices);
+    const BuiltinTextures& builtin = *s.textures;
+
+    // Stable storage for the values the draws point at.
+    std::deque<ShaderValues> values;
+    std::deque<std::map<std::string, std::string>> materialTextures;
+    std::vector<Draw> draws;
+    RenderedFrame frame;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const scene::Object& object = scene.objects[o];
+        std::string what = "object " + std::to_string(o) + (object.name.empty() ? "" : " '" + object.name + "'") +
+                           " (shader \"" + object.material.shader + "\")";
+        const Pack* pack = nullptr;
+        std::optional<ShaderView> shader = s.findShader(object.material.shader, &pack);
+        if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
+        scene::ForwardLightAssignment assignment = scene::assignForwardLights(scene, object);
+        const ShaderValues& objectValues_ = values.emplace_back(objectValues(scene, object, matrices, assignment));
+        std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
+        const ShaderValues& material = values.emplace_back(materialValues(object.material, textureNames));
+
+        auto addDraw = [&](const char* lightMode, const scene::Light* light) -> Status {
+            std::optional<PassView> pass = shader->pass(std::string_view(lightMode));
+            if (!pass) return makeError(ErrorCode::NotFound, what + ": the shader has no " + lightMode + " pass");
+            variants::LightDescription description;
+            description.type = light ? toVariantLight(light->type) : variants::LightType::Directional;
+            description.cookie = light && light->type != scene::LightType::Spot && light->cookie != "none";
+            description.vertexLightCount = static_cast<int>(assignment.vertexLights.size());
+            description.hdr = scene.camera.hdr;
+            description.lightProbes = true;
+            auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
+            if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
+            pack::PackRenderState state = resolveRenderState(pass->renderState(), material);
+            auto pipeline = s.pipeline(pack, *variant, state, **target, scene.camera.hdr);
+            if (!pipeline) return makeError(pipeline.error().code, what + ": " + pipeline.error().detail);
+            const ShaderValues& lightValues = values.emplace_back(forwardLightValues(light));
+            Draw draw;
+            draw.pipeline = *pipeline;
+            draw.mesh = &s.meshes.at(object.mesh);
+            draw.layers = {&lightValues, &objectValues_, &material, &camera};
+            scene::LightType type = light ? light->type : scene::LightType::Directional;
+            bool cookie = light && light->cookie != "none";
+            draw.textures = [&builtin, &textureNames, type, cookie](std::string_view name,
+                                                                    pack::ResourceDim dim) -> std::optional<TextureBinding> {
+                if (name == "_LightTexture0") {
+                    if (type == scene::LightType::Spot) return builtin.spotCookie();
+                    if (type == scene::LightType::Point) return cookie ? builtin.pointCookie() : builtin.falloff();
+                    return cookie ? builtin.directionalCookie() : builtin.named("white", dim);
+                }
+                if (name == "_LightTextureB0") return builtin.falloff();
+                auto it = textureNames.find(std::string(name));
+                // Unset textures default to white, as Unity's Properties defaults mostly do.
+                return builtin.named(it == textureNames.end() ? "white" : it->second, dim);
+            };
+            draws.push_back(std::move(draw));
+            frame.variants.push_back(variant->describe());
+            return Ok{};
+        };
+        const scene::Light* main = assignment.mainDirectional >= 0
+                                       ? &scene.lights[static_cast<size_t>(assignment.mainDirectional)]
+                                       : nullptr;
+        if (Status added = addDraw("ForwardBase", main); !added) return added.error();
+        for (int index : assignment.addLights) {
+            if (Status added = addDraw("ForwardAdd", &scene.lights[static_cast<size_t>(index)]); !added) {
+                return added.error();
+            }
+        }
+    }
+
+    const RenderTarget& rt = **target;
+    Status bound = Ok{};
+    Status submitted = s.context->submitAndWait([&](VkCommandBuffer commands) {
+        rt.begin(commands, LoadOp::Clear);
+        VkViewport viewport = rt.viewport();
+        VkRect2D area = rt.area();
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &area);
+        for (const Draw& draw : draws) {
+            vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.pipeline->pipeline());
+            bound = s.resources->bind(commands, *draw.pipeline, draw.layers, draw.textures);
+            if (!bound) break;
+            VkBuffer vertexBuffer = draw.mesh->vertices.handle();
+            VkDeviceSize offset = 0;
+            vkCmdBindVertexBuffers(commands, 0, 1, &vertexBuffer, &offset);
+            vkCmdBindIndexBuffer(commands, draw.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+            vkCmdDrawIndexed(commands, draw.mesh->indexCount, 1, 0, 0, 0);
+            ++frame.draws;
+        }
+        rt.end(commands);
+    });
+    if (Status reset = s.resources->reset(); !reset) return reset.error();
+    if (!bound) return bound.error();
+    if (!submitted) return submitted.error();
+    auto image = rt.readback(*s.context);
+    if (!image) return image.error();
+    frame.image = std::move(*image);
+    return frame;
+}
+
+}  // namespace varc::runtime

@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: Apache-2.0
+// The forward renderer on lavapipe: Unity's light rules observed in rendered pixels, and the
+// validation scenes compared with the CPU reference (issue #5).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "VulkanTestSupport.h"
+#include "varc/reference/ImageCompare.h"
+#include "varc/reference/ReferenceRenderer.h"
+#include "varc/reference/SceneTolerance.h"
+#include "varc/runtime/Pack.h"
+#include "varc/runtime/render/ForwardRenderer.h"
+#include "varc/scene/Scene.h"
+
+namespace varc::runtime {
+namespace {
+
+constexpr const char* kSeedShader = "Custom/My First Lighting Shader";
+
+scene::Object sphere(glm::vec3 position) {
+    scene::Object object;
+    object.mesh = scene::MeshKind::Sphere;
+    object.transform.position = position;
+    object.material.shader = kSeedShader;
+    object.material.properties = {{"_Tint", glm::vec4(0.8f, 0.7f, 0.6f, 1.0f)},
+                                  {"_MainTex", std::string("white")},
+                                  {"_Metallic", 0.0f},
+                                  {"_Smoothness", 0.3f}};
+    return object;
+}
+
+scene::Light pointLight(glm::vec3 position, glm::vec3 color, float range) {
+    scene::Light light;
+    light.type = scene::LightType::Point;
+    light.transform.position = position;
+    light.color = color;
+    light.range = range;
+    return light;
+}
+
+// One sphere in front of the camera, black background, no ambient, HDR so sums are not clamped.
+scene::Scene oneSphere() {
+    scene::Scene scene;
+    scene.camera.position = {0, 0, -2.5f};
+    scene.camera.width = scene.camera.height = 64;
+    scene.camera.hdr = true;
+    scene.objects.push_back(sphere({0, 0, 0}));
+    return scene;
+}
+
+float maxAbsDifference(const Image& a, const Image& b) {
+    float worst = 0;
+    for (size_t i = 0; i < a.floats().size(); ++i) worst = std::max(worst, std::abs(a.floats()[i] - b.floats()[i]));
+    return worst;
+}
+
+float sum(const Image& image) {
+    float total = 0;
+    for (size_t i = 0; i < image.floats().size(); i += 4) total += image.floats()[i] + image.floats()[i + 1] + image.floats()[i + 2];
+    return total;
+}
+
+class ForwardRenderTest : public testing::VulkanTest {
+protected:
+    void SetUp() override {
+        VulkanTest::SetUp();
+        if (HasFatalFailure()) return;
+        auto pack = Pack::open(VARC_TEST_PACK_DIR "/library.svpack");
+        ASSERT_TRUE(pack) << pack.error().detail;
+        mPack.emplace(std::move(*pack));
+        auto renderer = ForwardRenderer::create(context(), {&*mPack});
+        ASSERT_TRUE(renderer) << renderer.error().detail;
+        mRenderer.emplace(std::move(*renderer));
+    }
+    void TearDown() override {
+        mRenderer.reset();
+        VulkanTest::TearDown();
+    }
+
+    RenderedFrame render(const scene::Scene& scene) {
+        auto frame = mRenderer->render(scene);
+        EXPECT_TRUE(frame) << frame.error().detail;
+        return frame ? std::move(*frame) : RenderedFrame{};
+    }
+
+    std::optional<Pack> mPack;
+    std::optional<ForwardRenderer> mRenderer;
+};
+
+TEST_F(ForwardRenderTest, APointLightOutOfRangeChangesNothing) {
+    scene::Scene scene = oneSphere();
+    scene.lights.push_back(pointLight({-1.0f, 1.0f, -1.0f}, glm::vec3(1.0f), 5.0f));
+    RenderedFrame lit = render(scene);
+    scene.lights.push_back(pointLight({30.0f, 0.0f, 0.0f}, glm::vec3(1.0f), 2.0f));  // 29.5 m from the sphere
+    RenderedFrame withFarLight = render(scene);
+    ASSERT_GT(sum(lit.image), 1.0f) << "the in-range light must light the sphere";
+    EXPECT_EQ(maxAbsDifference(lit.image, withFarLight.image), 0.0f);
+    EXPECT_EQ(lit.draws, withFarLight.draws);
+}
+
+TEST_F(ForwardRenderTest, TwoPixelLightsAddUp) {
+    scene::Scene first = oneSphere(), second = oneSphere(), both = oneSphere();
+    scene::Light a = pointLight({-1.2f, 0.8f, -1.0f}, {1.0f, 0.5f, 0.2f}, 6.0f);
+    scene::Light b = pointLight({1.2f, -0.4f, -1.0f}, {0.2f, 0.4f, 1.0f}, 6.0f);
+    a.renderMode = b.renderMode = scene::LightRenderMode::Important;
+    first.lights = {a};
+    second.lights = {b};
+    both.lights = {a, b};
+    RenderedFrame imageA = render(first), imageB = render(second), imageAB = render(both);
+    ASSERT_EQ(imageAB.draws, 3u) << "base pass plus one add pass per point light";
+    float worst = 0;
+    for (size_t i = 0; i < imageAB.image.floats().size(); i += 4) {
+        for (size_t c = 0; c < 3; ++c) {
+            float expected = imageA.image.floats()[i + c] + imageB.image.floats()[i + c];
+            worst = std::max(worst, std::abs(imageAB.image.floats()[i + c] - expected));
+        }
+    }
+    EXPECT_LT(worst, 2e-3f) << "half-float sums of two additive passes";
+    EXPECT_GT(sum(imageA.image), 1.0f);
+    EXPECT_GT(sum(imageB.image), 1.0f);
+}
+
+TEST_F(ForwardRenderTest, WithNoPixelLightsAPointLightStillLightsThroughVertexLights) {
+    scene::Scene dark = oneSphere();
+    dark.pixelLightCount = 0;
+    scene::Scene lit = dark;
+    lit.lights.push_back(pointLight({-1.0f, 1.0f, -1.5f}, glm::vec3(1.0f), 8.0f));
+    RenderedFrame darkFrame = render(dark), litFrame = render(lit);
+    ASSERT_EQ(litFrame.variants.size(), 1u) << "no add pass when pixel_light_count is 0";
+    EXPECT_NE(litFrame.variants[0].find("VERTEXLIGHT_ON"), std::string::npos) << litFrame.variants[0];
+    EXPECT_GT(sum(litFrame.image), sum(darkFrame.image) + 1.0f);
+}
+
+TEST_F(ForwardRenderTest, UnknownShaderIsAClearError) {
+    scene::Scene scene = oneSphere();
+    scene.objects[0].material.shader = "Custom/Missing";
+    auto frame = mRenderer->render(scene);
+    ASSERT_FALSE(frame);
+    EXPECT_NE(frame.error().detail.find("Custom/Missing"), std::string::npos) << frame.error().detail;
+}
+
+// Every validation scene matches the CPU reference within the issue's tolerances.
+TEST_F(ForwardRenderTest, ValidationScenesMatchTheCpuReference) {
+    std::vector<std::string> scenes;
+    for (const auto& entry : std::filesystem::directory_iterator(VARC_TEST_SCENE_DIR "/forward")) {
+        if (entry.path().extension() == ".json") scenes.push_back(entry.path().string());
+    }
+    ASSERT_GE(scenes.size(), 5u);
+    for (const std::string& path : scenes) {
+        SCOPED_TRACE(path);
+        auto scene = scene::loadScene(path);
+        ASSERT_TRUE(scene) << scene.error().detail;
+        RenderedFrame frame = render(*scene);
+        auto expected = reference::renderReference(*scene);
+        ASSERT_TRUE(expected) << expected.error().detail;
+        reference::CompareResult result = reference::compareImages(frame.image, expected->color, expected->classes,
+                                                                   reference::toleranceFor(*scene));
+        EXPECT_TRUE(result.passed) << result.message;
+        EXPECT_GT(result.interiorPixels, 100u) << "the scene must show lit objects";
+    }
+}
+
+}  // namespace
+}  // namespace varc::runtime
