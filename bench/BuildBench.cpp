@@ -73,6 +73,9 @@ void BM_VarcBuild(benchmark::State& state) {
     if (!in.ok) return state.SkipWithError("inputs failed to load");
     compiler::BuildOptions options;
     options.jobs = static_cast<unsigned>(state.range(0));
+    // Second argument: 1 = -O (SPIRV-Tools performance passes, the default), 0 = -O0 (no
+    // optimiser: what glslangValidator -V produces, the like-for-like comparison).
+    options.optimization = state.range(1) ? compiler::OptimizationLevel::Performance : compiler::OptimizationLevel::None;
     std::optional<compiler::BuildOutput> output;
     for (auto _ : state) {
         DiagnosticList diagnostics;
@@ -85,7 +88,15 @@ void BM_VarcBuild(benchmark::State& state) {
     // The in-process floor for this thread count, from the last iteration's own compile times.
     state.counters["floor_s"] = output->compileSeconds / options.jobs;
 }
-BENCHMARK(BM_VarcBuild)->Arg(1)->Arg(2)->Iterations(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_VarcBuild)
+    ->ArgNames({"jobs", "optimize"})
+    ->Args({1, 1})
+    ->Args({2, 1})
+    ->Args({1, 0})
+    ->Args({2, 0})
+    ->Iterations(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // One glslangValidator process per (pass, variant, stage), on the same spliced source and
 // predefined macros varc uses: the start-up-bound baseline the issue measures (~110 ms each).

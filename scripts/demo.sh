@@ -44,9 +44,25 @@ if [ -d "$fixtures" ]; then
 fi
 
 echo
+echo "== varc info and lookup: what the runtime sees =="
+"$varc" info "$out/library.svpack"
+if [ ${#fixture_packs[@]} -gt 0 ]; then
+    "$varc" lookup "${fixture_packs[0]}" --shader "Custom/My First Lighting Shader" --pass ForwardAdd \
+        --light spot
+fi
+
+echo
+echo "== varc validate: the forward scenes on lavapipe against the CPU reference =="
+pack_args=(--pack "$out/library.svpack")
+for pack in "${fixture_packs[@]}"; do pack_args+=(--pack "$pack"); done
+validate_status=0
+"$varc" validate "${pack_args[@]}" --scenes tests/scenes/forward --out "$out/scenes" || validate_status=$?
+
+echo
 echo "== summary =="
 echo "variant listings: $out/fixtures-variants.json"
 echo "lock file:        $out/fixtures.lock"
 echo "library pack:     $out/library.svpack"
 for pack in "${fixture_packs[@]}"; do echo "fixture pack:     $pack"; done
-echo "Rendering the validation scenes arrives with issues #5-#6."
+echo "rendered scenes:  $out/scenes/<scene>.png, .reference.png (CPU), .diff.png"
+exit $validate_status

@@ -22,6 +22,7 @@
 #include "varc/compiler/cli/LockFile.h"
 #include "varc/compiler/cli/Options.h"
 #include "varc/compiler/cli/PackCommands.h"
+#include "varc/compiler/cli/RenderCommands.h"
 #include "varc/compiler/cli/ShaderInputs.h"
 #include "varc/compiler/cli/VariantReport.h"
 #include "varc/core/AtomicFile.h"
@@ -234,6 +235,8 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         case Command::Info: return runInfo(options, out, err);
         case Command::Extract: return runExtract(options, out, err);
         case Command::Lookup: return runLookup(options, out, err);
+        case Command::Render: return runRender(options, out, err);
+        case Command::Validate: return runValidate(options, out, err);
         case Command::None: break;
     }
     err << "varc: error: no command given\n";

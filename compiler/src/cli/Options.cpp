@@ -116,6 +116,24 @@ void addLookup(CLI::App& app, Options& options) {
     });
 }
 
+void addRender(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene with pack variants on Vulkan");
+    cmd->add_option("packs", options.packPaths, "Pack files")->required()->type_name("PACK");
+    cmd->add_option("--scene", options.scenePath, "Scene JSON")->required();
+    cmd->add_option("-o,--output", options.outputPath, "PNG to write")->required();
+    cmd->add_option("--reference", options.referencePath, "Also render the CPU reference to this PNG");
+    cmd->add_option("--diff", options.diffPath, "Also compare and write the diff image here");
+    cmd->callback([&options] { options.command = Command::Render; });
+}
+
+void addValidate(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("validate", "Render every scene and compare with the CPU reference");
+    cmd->add_option("--pack", options.packPaths, "Pack files (repeat)")->required();
+    cmd->add_option("--scenes", options.scenesDir, "Scene folder (default tests/scenes/forward)");
+    cmd->add_option("--out", options.outputPath, "Folder for the PNGs (default validate-out)");
+    cmd->callback([&options] { options.command = Command::Validate; });
+}
+
 // CLI11 has no multi-letter short options, so -O0/-O/-Os become --optimization=<same>.
 std::vector<std::string> normalizeArguments(int argc, const char* const* argv) {
     std::vector<std::string> args;
@@ -142,6 +160,8 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
     addInfo(app, options);
     addExtract(app, options);
     addLookup(app, options);
+    addRender(app, options);
+    addValidate(app, options);
     try {
         std::vector<std::string> args = normalizeArguments(argc, argv);
         app.parse(args);

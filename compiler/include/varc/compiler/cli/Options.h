@@ -10,7 +10,7 @@
 
 namespace varc::cli {
 
-enum class Command { None, Variants, Lock, Check, Build, Info, Extract, Lookup };
+enum class Command { None, Variants, Lock, Check, Build, Info, Extract, Lookup, Render, Validate };
 
 // A growth allowance for `varc check --max-growth`: N variants, or N percent of the lock.
 struct GrowthLimit {
@@ -45,6 +45,12 @@ struct Options {
     int lookupVertexLights = 0;            // --vertex-lights N
     bool lookupHdr = false;                // --hdr
     std::string lookupPolicy = "closest";  // --policy exact|closest|first|strict
+    // render / validate
+    std::vector<std::string> packPaths;    // render: PACK...; validate: --pack P...
+    std::string scenePath;                 // render --scene S.json
+    std::string referencePath;             // render --reference ref.png
+    std::string diffPath;                  // render --diff d.png
+    std::string scenesDir;                 // validate --scenes DIR
 };
 
 // Exit codes shared by every subcommand.
