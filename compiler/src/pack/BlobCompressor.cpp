@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <thread>
 
 #include "varc/core/Check.h"
 
@@ -39,18 +40,28 @@ CCtxPtr makeContext(int level, const std::string& dictionary) {
 }
 
 // Each blob compressed with |dictionary| (or none); an entry is empty when compression does
-// not make that blob smaller.
+// not make that blob smaller. Blobs are compressed independently, on every core: each frame
+// depends only on its blob, the level and the dictionary, so the bytes never depend on the
+// thread count or on scheduling.
 std::vector<std::string> compressAll(const std::vector<std::string>& blobs, int level,
                                      const std::string& dictionary) {
-    CCtxPtr context = makeContext(level, dictionary);
     std::vector<std::string> out(blobs.size());
-    for (size_t i = 0; i < blobs.size(); ++i) {
-        std::string frame(ZSTD_compressBound(blobs[i].size()), '\0');
-        size_t size = ZSTD_compress2(context.get(), frame.data(), frame.size(), blobs[i].data(),
-                                     blobs[i].size());
-        VARC_CHECK(!ZSTD_isError(size)) << "ZSTD_compress2: " << ZSTD_getErrorName(size);
-        if (size < blobs[i].size()) out[i] = frame.substr(0, size);
-    }
+    auto worker = [&](size_t first, size_t stride) {
+        CCtxPtr context = makeContext(level, dictionary);
+        for (size_t i = first; i < blobs.size(); i += stride) {
+            std::string frame(ZSTD_compressBound(blobs[i].size()), '\0');
+            size_t size = ZSTD_compress2(context.get(), frame.data(), frame.size(), blobs[i].data(),
+                                         blobs[i].size());
+            VARC_CHECK(!ZSTD_isError(size)) << "ZSTD_compress2: " << ZSTD_getErrorName(size);
+            if (size < blobs[i].size()) out[i] = frame.substr(0, size);
+        }
+    };
+    size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, 16);
+    threads = std::min(threads, std::max<size_t>(blobs.size() / 4, 1));  // not worth it for a few blobs
+    std::vector<std::thread> pool;
+    for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker, t, threads);
+    worker(0, threads);
+    for (std::thread& thread : pool) thread.join();
     return out;
 }
 
