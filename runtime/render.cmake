@@ -8,6 +8,7 @@ add_library(varc_render STATIC
     src/render/DescriptorSlots.cpp
     src/render/DrawResources.cpp
     src/render/ForwardRenderer.cpp
+    src/render/PipelineCacheFile.cpp
     src/render/RenderStateResolver.cpp
     src/render/SceneValues.cpp
     src/render/ShaderValues.cpp
