@@ -116,8 +116,10 @@ const Synthetic& synthetic() {
     return instance;
 }
 
-runtime::Pack openSynthetic() {
-    Result<runtime::Pack> pack = runtime::Pack::open(synthetic().path);
+runtime::Pack openSynthetic(bool indexKeys = true) {
+    runtime::OpenOptions options;
+    options.indexKeys = indexKeys;
+    Result<runtime::Pack> pack = runtime::Pack::open(synthetic().path, options);
     if (!pack.ok()) std::abort();
     return std::move(*pack);
 }
@@ -139,8 +141,8 @@ void BM_PackBytes(benchmark::State& state) {
 BENCHMARK(BM_PackBytes)->Iterations(1);
 
 void lookupLoop(benchmark::State& state, const std::vector<variants::VariantKey>& keys,
-                SelectionPolicy policy) {
-    runtime::Pack pack = openSynthetic();
+                SelectionPolicy policy, bool indexKeys = true) {
+    runtime::Pack pack = openSynthetic(indexKeys);
     runtime::PassView pass = *pack.shader(0).pass(0);
     size_t i = 0;
     for (auto _ : state) {
@@ -153,6 +155,12 @@ void BM_PackLookupExact(benchmark::State& state) {
     lookupLoop(state, synthetic().hits, SelectionPolicy::Exact);
 }
 BENCHMARK(BM_PackLookupExact);
+
+// The same lookups by binary search (OpenOptions::indexKeys = false), for the ratio.
+void BM_PackLookupExactBinarySearch(benchmark::State& state) {
+    lookupLoop(state, synthetic().hits, SelectionPolicy::Exact, false);
+}
+BENCHMARK(BM_PackLookupExactBinarySearch);
 
 void BM_PackLookupClosestHit(benchmark::State& state) {
     lookupLoop(state, synthetic().hits, SelectionPolicy::Closest);

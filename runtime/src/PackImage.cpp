@@ -33,6 +33,14 @@ Status PackImage::load(const OpenOptions& options) {
     mBlobs = std::make_unique<BlobCache>(table(pack::Chunk::Blobs), raw(pack::Chunk::BlobData),
                                          raw(pack::Chunk::Dictionary));
     mPassKeys = std::make_unique<PassKeys[]>(count(pack::Chunk::Passes));
+    mKeyIndexes.resize(count(pack::Chunk::Passes));
+    for (uint32_t pass = 0; options.indexKeys && pass < count(pack::Chunk::Passes); ++pass) {
+        uint32_t variants = get(pack::Chunk::Passes, pass, pack::kPassVariantCount);
+        if (get(pack::Chunk::Passes, pass, pack::kPassKeyWords) != 1 || variants < KeyHashIndex::kMinKeys) continue;
+        const std::byte* keys = raw(pack::Chunk::VariantKeys).data() +
+                                8 * size_t{get(pack::Chunk::Passes, pass, pack::kPassKeyFirst)};
+        mKeyIndexes[pass] = KeyHashIndex(keys, variants);
+    }
     return Ok{};
 }
 

@@ -2,6 +2,8 @@
 // The validated, in-place view of a pack's bytes that every runtime view reads from.
 #pragma once
 
+#include "KeyHashIndex.h"
+
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -52,6 +54,8 @@ public:
     // The words of blob |blob|, decompressed on first use (see BlobCache).
     Result<std::span<const uint32_t>> blobWords(uint32_t blob) const;
 
+    // The hash index of pass record |pass|'s sorted keys; empty for small or multi-word passes.
+    const KeyHashIndex& keyIndex(uint32_t pass) const { return mKeyIndexes[pass]; }
     // The keys of pass |pass| in enumeration order, decoded on first use (for selectVariant).
     const std::vector<variants::VariantKey>& enumerationKeys(uint32_t pass) const;
 
@@ -72,6 +76,7 @@ private:
         std::vector<variants::VariantKey> keys;
     };
     std::unique_ptr<PassKeys[]> mPassKeys;
+    std::vector<KeyHashIndex> mKeyIndexes;  // per Passes record, built by load()
 };
 
 }  // namespace varc::runtime::detail

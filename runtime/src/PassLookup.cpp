@@ -64,7 +64,11 @@ uint32_t PassView::findSorted(const variants::VariantKey& masked) const {
     uint32_t count = field(pack::kPassVariantCount);
     const std::byte* keys =
         mImage->raw(Chunk::VariantKeys).data() + 8 * size_t{field(pack::kPassKeyFirst)};
-    if (words == 1) return findOneWord(keys, count, masked.words()[0]);
+    if (words == 1) {
+        const detail::KeyHashIndex& index = mImage->keyIndex(mRecord);
+        if (!index.empty()) return index.find(masked.words()[0]);
+        return findOneWord(keys, count, masked.words()[0]);
+    }
     return findWords(keys, count, words, masked.words().data());
 }
 

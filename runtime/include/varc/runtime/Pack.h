@@ -26,6 +26,9 @@ struct OpenOptions {
     // Verify the XXH3 checksums of the header and of every chunk (reads every byte once).
     // Structure is always validated; turning this off only serves fuzzing the structural checks.
     bool verifyChecksums = true;
+    // Build a hash index over the keys of every pass with 64 or more variants (16 bytes per
+    // variant), so exact lookups take one probe instead of a binary search. Off: less memory.
+    bool indexKeys = true;
 };
 
 // Thread-safety contract: a Pack and every view obtained from it are immutable after open()
