@@ -12,6 +12,8 @@ add_library(varc_render STATIC
     src/render/RenderStateResolver.cpp
     src/render/SceneValues.cpp
     src/render/ShaderValues.cpp
+    src/render/SinglePassRenderer.cpp
+    src/render/SinglePassValues.cpp
     src/render/UniformBlockWriter.cpp
     src/render/VariantPipeline.cpp
     src/render/VertexLayout.cpp

@@ -12,6 +12,7 @@ add_library(varc_scene STATIC
     src/scene/Mesh.cpp
     src/scene/Scene.cpp
     src/scene/SceneParser.cpp
+    src/scene/VisibleLights.cpp
 )
 add_library(varc::scene ALIAS varc_scene)
 target_include_directories(varc_scene
@@ -28,6 +29,7 @@ add_library(varc_reference STATIC
     src/reference/ReferenceRenderer.cpp
     src/reference/SceneTolerance.cpp
     src/reference/Shading.cpp
+    src/reference/SinglePassReference.cpp
 )
 add_library(varc::reference ALIAS varc_reference)
 target_include_directories(varc_reference

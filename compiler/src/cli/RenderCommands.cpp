@@ -11,8 +11,10 @@
 #include "varc/reference/ImageCompare.h"
 #include "varc/reference/ReferenceRenderer.h"
 #include "varc/reference/SceneTolerance.h"
+#include "varc/reference/SinglePassReference.h"
 #include "varc/runtime/Pack.h"
 #include "varc/runtime/render/ForwardRenderer.h"
+#include "varc/runtime/render/SinglePassRenderer.h"
 #include "varc/runtime/vulkan/Png.h"
 #include "varc/runtime/vulkan/VulkanContext.h"
 #include "varc/scene/Scene.h"
@@ -35,6 +37,33 @@ std::optional<std::vector<runtime::Pack>> openPacks(const std::vector<std::strin
     return packs;
 }
 
+// One renderer per scene path (scene.camera.path), sharing the Vulkan context and packs.
+struct SceneRenderers {
+    runtime::ForwardRenderer forward;
+    runtime::SinglePassRenderer singlePass;
+
+    static Result<SceneRenderers> create(runtime::VulkanContext& context, const std::vector<runtime::Pack>& packs) {
+        std::vector<const runtime::Pack*> pointers;
+        for (const runtime::Pack& pack : packs) pointers.push_back(&pack);
+        auto forward = runtime::ForwardRenderer::create(context, pointers);
+        if (!forward) return forward.error();
+        auto singlePass = runtime::SinglePassRenderer::create(context, pointers);
+        if (!singlePass) return singlePass.error();
+        return SceneRenderers{std::move(*forward), std::move(*singlePass)};
+    }
+
+    Result<runtime::RenderedFrame> render(const scene::Scene& scene) {
+        if (scene.camera.path == scene::RenderPath::SinglePass) return singlePass.render(scene);
+        return forward.render(scene);
+    }
+};
+
+// The CPU reference for the scene's path.
+Result<reference::ReferenceImage> renderReferenceFor(const scene::Scene& scene) {
+    if (scene.camera.path == scene::RenderPath::SinglePass) return reference::renderSinglePassReference(scene);
+    return reference::renderReference(scene);
+}
+
 struct SceneOutcome {
     bool ok = false;        // rendered and compared
     bool passed = false;    // comparison within tolerance
@@ -45,7 +74,7 @@ struct SceneOutcome {
 };
 
 // Renders |scenePath| and, when |compare|, its reference; writes the PNGs that are asked for.
-SceneOutcome renderScene(runtime::ForwardRenderer& renderer, const std::string& scenePath, bool compare,
+SceneOutcome renderScene(SceneRenderers& renderer, const std::string& scenePath, bool compare,
                          const std::string& renderPng, const std::string& referencePng, const std::string& diffPng) {
     SceneOutcome outcome;
     auto start = std::chrono::steady_clock::now();
@@ -70,7 +99,7 @@ SceneOutcome renderScene(runtime::ForwardRenderer& renderer, const std::string& 
     }
     outcome.ok = true;
     if (compare) {
-        auto expected = reference::renderReference(*scene);
+        auto expected = renderReferenceFor(*scene);
         if (!expected) {
             outcome.ok = false;
             outcome.error = scenePath + ": reference: " + expected.error().detail;
@@ -114,9 +143,7 @@ int runRender(const Options& options, std::ostream& out, std::ostream& err) {
     if (!packs) return kExitUsage;
     auto context = makeContext(err);
     if (!context) return kExitUsage;
-    std::vector<const runtime::Pack*> pointers;
-    for (const runtime::Pack& pack : *packs) pointers.push_back(&pack);
-    auto renderer = runtime::ForwardRenderer::create(*context, pointers);
+    auto renderer = SceneRenderers::create(*context, *packs);
     if (!renderer) {
         err << "varc: error: " << renderer.error().detail << "\n";
         return kExitFailure;
@@ -158,9 +185,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     if (!packs) return kExitUsage;
     auto context = makeContext(err);
     if (!context) return kExitUsage;
-    std::vector<const runtime::Pack*> pointers;
-    for (const runtime::Pack& pack : *packs) pointers.push_back(&pack);
-    auto renderer = runtime::ForwardRenderer::create(*context, pointers);
+    auto renderer = SceneRenderers::create(*context, *packs);
     if (!renderer) {
         err << "varc: error: " << renderer.error().detail << "\n";
         return kExitFailure;

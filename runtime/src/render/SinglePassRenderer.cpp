@@ -1,0 +1,361 @@
+// SPDX-License-Identifier: Apache-2.0
+// SinglePassRenderer: groups objects into draws (instanced batches where the lights allow it),
+// fills the light buffer and per-draw light lists, records one render pass.
+#include "varc/runtime/render/SinglePassRenderer.h"
+
+#include <algorithm>
+#include <deque>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "varc/runtime/PassView.h"
+#include "varc/runtime/ShaderView.h"
+#include "varc/runtime/render/BuiltinTextures.h"
+#include "varc/runtime/render/DrawResources.h"
+#include "varc/runtime/render/RenderStateResolver.h"
+#include "varc/runtime/render/SceneValues.h"
+#include "varc/runtime/render/SinglePassValues.h"
+#include "varc/runtime/render/VertexLayout.h"
+#include "varc/runtime/vulkan/Buffer.h"
+#include "varc/runtime/vulkan/RenderTarget.h"
+#include "varc/scene/CameraMatrices.h"
+#include "varc/scene/Mesh.h"
+
+namespace varc::runtime {
+
+namespace {
+
+constexpr const char* kInstancingKeyword = "INSTANCING_ON";
+constexpr const char* kArraySuffix = "Array";
+
+struct MeshBuffers {
+    Buffer vertices;
+    Buffer indices;
+    uint32_t indexCount = 0;
+};
+
+Result<MeshBuffers> uploadMeshBuffers(VulkanContext& context, const scene::Mesh& mesh) {
+    std::vector<MeshVertex> vertices(mesh.positions.size());
+    for (size_t i = 0; i < vertices.size(); ++i) {
+        const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
+        const glm::vec4& t = mesh.tangents[i];
+        vertices[i] = MeshVertex{{p.x, p.y, p.z}, {n.x, n.y, n.z}, {t.x, t.y, t.z, t.w},
+                                 {mesh.uvs[i].x, mesh.uvs[i].y}, {1.0f, 1.0f, 1.0f, 1.0f}};
+    }
+    auto vertexBuffer = Buffer::createWithData(context, std::as_bytes(std::span(vertices)),
+                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "single-pass mesh vertices");
+    if (!vertexBuffer) return vertexBuffer.error();
+    auto indexBuffer = Buffer::createWithData(context, std::as_bytes(std::span(mesh.indices)),
+                                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "single-pass mesh indices");
+    if (!indexBuffer) return indexBuffer.error();
+    return MeshBuffers{std::move(*vertexBuffer), std::move(*indexBuffer), static_cast<uint32_t>(mesh.indices.size())};
+}
+
+// What an instanced variant reads per instance: the names P of its `PArray` members other than
+// the object matrices, and how many instances its arrays hold (the smallest array).
+struct InstancedLayout {
+    std::set<std::string> properties;
+    uint32_t maxInstances = 0;
+};
+
+InstancedLayout instancedLayout(const VariantView& variant) {
+    InstancedLayout layout;
+    layout.maxInstances = UINT32_MAX;
+    for (pack::Stage stage : {pack::Stage::Vertex, pack::Stage::Fragment}) {
+        std::optional<ProgramView> program = variant.program(stage);
+        if (!program) continue;
+        for (const pack::UniformBlock& block : program->reflection().uniformBlocks) {
+            for (const pack::BlockMember& member : block.members) {
+                std::string_view name = member.name;
+                if (member.arrayCount == 0 || !name.ends_with(kArraySuffix)) continue;
+                layout.maxInstances = std::min(layout.maxInstances, member.arrayCount);
+                name.remove_suffix(std::string_view(kArraySuffix).size());
+                if (name != "unity_ObjectToWorld" && name != "unity_WorldToObject") layout.properties.emplace(name);
+            }
+        }
+    }
+    if (layout.maxInstances == UINT32_MAX) layout.maxInstances = 1;
+    return layout;
+}
+
+// One draw: an object, or an instanced batch of objects that share everything but their
+// per-instance properties.
+struct DrawGroup {
+    const Pack* pack = nullptr;
+    std::optional<PassView> pass;
+    scene::MeshKind mesh = scene::MeshKind::Sphere;
+    scene::ObjectLightList lights;
+    std::map<std::string, scene::PropertyValue> sharedProperties;  // instanced ones blanked
+    std::vector<size_t> objects;
+    const InstancedLayout* instancing = nullptr;  // null: the shader cannot instance
+};
+
+bool sameBatch(const DrawGroup& group, const DrawGroup& candidate) {
+    return group.instancing && group.pack == candidate.pack &&
+           group.pass->describe() == candidate.pass->describe() && group.mesh == candidate.mesh &&
+           group.lights == candidate.lights && group.sharedProperties == candidate.sharedProperties &&
+           group.objects.size() < group.instancing->maxInstances;
+}
+
+// Per-instance arrays of an instanced batch: object matrices and each instanced property.
+ShaderValues instanceValues(const scene::Scene& scene, const DrawGroup& group) {
+    std::vector<glm::mat4> toWorld, toObject;
+    std::map<std::string, std::vector<glm::vec4>> properties;
+    for (size_t index : group.objects) {
+        const scene::Object& object = scene.objects[index];
+        toWorld.push_back(object.transform.localToWorld());
+        toObject.push_back(glm::inverse(toWorld.back()));
+        for (const std::string& name : group.instancing->properties) {
+            auto it = object.material.properties.find(name);
+            glm::vec4 value(0.0f);
+            if (it != object.material.properties.end()) {
+                if (const auto* v = std::get_if<glm::vec4>(&it->second)) value = *v;
+                if (const auto* f = std::get_if<float>(&it->second)) value = glm::vec4(*f, 0.0f, 0.0f, 0.0f);
+            }
+            properties[name].push_back(value);
+        }
+    }
+    ShaderValues values;
+    values.setArray("unity_ObjectToWorldArray", toWorld);
+    values.setArray("unity_WorldToObjectArray", toObject);
+    for (const auto& [name, perInstance] : properties) values.setArray(name + kArraySuffix, perInstance);
+    return values;
+}
+
+ShaderValues singleObjectValues(const scene::Object& object) {
+    ShaderValues values;
+    glm::mat4 toWorld = object.transform.localToWorld();
+    values.set("unity_ObjectToWorld", toWorld);
+    values.set("unity_WorldToObject", glm::inverse(toWorld));
+    return values;
+}
+
+struct RecordedDraw {
+    const VariantPipeline* pipeline = nullptr;
+    const MeshBuffers* mesh = nullptr;
+    uint32_t instances = 1;
+    std::array<const ShaderValues*, 5> layers{};  // instances/object, draw lights, material, light buffer, camera
+    TextureLookup textures;
+};
+
+}  // namespace
+
+struct SinglePassRenderer::State {
+    VulkanContext* context = nullptr;
+    std::vector<const Pack*> packs;
+    std::optional<BuiltinTextures> textures;
+    std::optional<DrawResources> resources;
+    std::map<scene::MeshKind, MeshBuffers> meshes;
+    std::map<std::tuple<uint32_t, uint32_t, bool, std::array<float, 4>>, RenderTarget> targets;
+    struct CachedPipeline {
+        const Pack* pack;
+        std::string variant;
+        pack::PackRenderState state;
+        bool hdr;
+        VariantPipeline pipeline;
+    };
+    std::deque<CachedPipeline> pipelines;
+    // Per shader pass (PassView::describe()): the INSTANCING_ON variant's layout, or null.
+    std::map<std::string, std::optional<InstancedLayout>> instancedLayouts;
+
+    Result<const RenderTarget*> target(const scene::Camera& camera);
+    Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
+                                            const pack::PackRenderState& state, const RenderTarget& target,
+                                            bool hdr);
+    const InstancedLayout* instancing(const PassView& pass);
+    Result<std::vector<DrawGroup>> group(const scene::Scene& scene, const scene::VisibleLightSet& visible,
+                                         bool instancing);
+    // Records |draws| into one render pass of |rt|, submits and waits; counts them in |frame|.
+    Status submit(const RenderTarget& rt, const std::vector<RecordedDraw>& draws, RenderedFrame& frame);
+};
+
+Result<const RenderTarget*> SinglePassRenderer::State::target(const scene::Camera& camera) {
+    const glm::vec4& b = camera.background;
+    auto key = std::make_tuple(camera.width, camera.height, camera.hdr, std::array<float, 4>{b.r, b.g, b.b, b.a});
+    auto it = targets.find(key);
+    if (it == targets.end()) {
+        RenderTargetDesc desc;
+        desc.width = camera.width;
+        desc.height = camera.height;
+        desc.color = camera.hdr ? ColorFormat::Rgba16Float : ColorFormat::Rgba8Unorm;
+        desc.clearColor = std::get<3>(key);
+        desc.name = "single-pass target";
+        auto created = RenderTarget::create(*context, desc);
+        if (!created) return created.error();
+        it = targets.emplace(key, std::move(*created)).first;
+    }
+    return &it->second;
+}
+
+Result<const VariantPipeline*> SinglePassRenderer::State::pipeline(const Pack* pack, const VariantView& variant,
+                                                                   const pack::PackRenderState& state,
+                                                                   const RenderTarget& target, bool hdr) {
+    std::string name = variant.describe();
+    for (const CachedPipeline& cached : pipelines) {
+        if (cached.pack == pack && cached.hdr == hdr && cached.variant == name && cached.state == state) {
+            return &cached.pipeline;
+        }
+    }
+    auto created = VariantPipeline::create(*context, variant, state, {target.renderPass(LoadOp::Clear), true, 1});
+    if (!created) return created.error();
+    pipelines.push_back({pack, name, state, hdr, std::move(*created)});
+    return &pipelines.back().pipeline;
+}
+
+const InstancedLayout* SinglePassRenderer::State::instancing(const PassView& pass) {
+    auto [it, inserted] = instancedLayouts.try_emplace(pass.describe());
+    if (inserted && pass.keywordIndex(kInstancingKeyword)) {
+        std::vector<std::string> keywords = {kInstancingKeyword};
+        auto variant = pass.lookup(keywords, variants::SelectionPolicy::Exact);
+        if (variant) it->second = instancedLayout(*variant);
+    }
+    return it->second ? &*it->second : nullptr;
+}
+
+Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(const scene::Scene& scene,
+                                                                const scene::VisibleLightSet& visible,
+                                                                bool instancing) {
+    std::vector<DrawGroup> groups;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const scene::Object& object = scene.objects[o];
+        std::string what = "object " + std::to_string(o) + (object.name.empty() ? "" : " '" + object.name + "'") +
+                           " (shader \"" + object.material.shader + "\")";
+        DrawGroup candidate;
+        std::optional<ShaderView> shader;
+        for (const Pack* pack : packs) {
+            if ((shader = pack->findShader(object.material.shader))) {
+                candidate.pack = pack;
+                break;
+            }
+        }
+        if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
+        candidate.pass = shader->pass(size_t{0});
+        if (!candidate.pass) return makeError(ErrorCode::NotFound, what + ": the shader has no pass");
+        candidate.mesh = object.mesh;
+        candidate.lights = scene::objectLightList(scene, visible, object);
+        candidate.sharedProperties = object.material.properties;
+        candidate.objects = {o};
+        if (instancing) candidate.instancing = this->instancing(*candidate.pass);
+        if (candidate.instancing) {
+            for (const std::string& name : candidate.instancing->properties) {
+                if (candidate.sharedProperties.count(name)) candidate.sharedProperties[name] = 0.0f;
+            }
+        }
+        auto batch = std::find_if(groups.begin(), groups.end(),
+                                  [&](const DrawGroup& g) { return sameBatch(g, candidate); });
+        if (batch != groups.end()) {
+            batch->objects.push_back(o);
+        } else {
+            groups.push_back(std::move(candidate));
+        }
+    }
+    return groups;
+}
+
+Status SinglePassRenderer::State::submit(const RenderTarget& rt, const std::vector<RecordedDraw>& draws,
+                                        RenderedFrame& frame) {
+    Status bound = Ok{};
+    Status submitted = context->submitAndWait([&](VkCommandBuffer commands) {
+        rt.begin(commands, LoadOp::Clear);
+        VkViewport viewport = rt.viewport();
+        VkRect2D area = rt.area();
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &area);
+        for (const RecordedDraw& draw : draws) {
+            vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.pipeline->pipeline());
+            bound = resources->bind(commands, *draw.pipeline, draw.layers, draw.textures);
+            if (!bound) break;
+            VkBuffer vertexBuffer = draw.mesh->vertices.handle();
+            VkDeviceSize offset = 0;
+            vkCmdBindVertexBuffers(commands, 0, 1, &vertexBuffer, &offset);
+            vkCmdBindIndexBuffer(commands, draw.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+            // firstInstance 0: SV_InstanceID (gl_InstanceIndex) indexes the instance arrays.
+            vkCmdDrawIndexed(commands, draw.mesh->indexCount, draw.instances, 0, 0, 0);
+            ++frame.draws;
+        }
+        rt.end(commands);
+    });
+    if (Status reset = resources->reset(); !reset) return reset.error();
+    if (!bound) return bound.error();
+    if (!submitted) return submitted.error();
+    return Ok{};
+}
+
+SinglePassRenderer::SinglePassRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
+SinglePassRenderer::SinglePassRenderer(SinglePassRenderer&&) noexcept = default;
+SinglePassRenderer& SinglePassRenderer::operator=(SinglePassRenderer&&) noexcept = default;
+SinglePassRenderer::~SinglePassRenderer() = default;
+
+Result<SinglePassRenderer> SinglePassRenderer::create(VulkanContext& context, std::vector<const Pack*> packs) {
+    auto state = std::make_unique<State>();
+    state->context = &context;
+    state->packs = std::move(packs);
+    auto textures = BuiltinTextures::create(context);
+    if (!textures) return textures.error();
+    state->textures.emplace(std::move(*textures));
+    auto resources = DrawResources::create(context);
+    if (!resources) return resources.error();
+    state->resources.emplace(std::move(*resources));
+    for (scene::MeshKind kind : {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
+        auto mesh = uploadMeshBuffers(context, scene::builtinMesh(kind));
+        if (!mesh) return mesh.error();
+        state->meshes.emplace(kind, std::move(*mesh));
+    }
+    return SinglePassRenderer(std::move(state));
+}
+
+Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene, const SinglePassOptions& options) {
+    State& s = *mState;
+    auto target = s.target(scene.camera);
+    if (!target) return target.error();
+    const scene::VisibleLightSet visible = scene::selectVisibleLights(scene);
+    auto groups = s.group(scene, visible, options.instancing);
+    if (!groups) return groups.error();
+
+    const ShaderValues camera = cameraValues(scene, scene::cameraMatrices(scene.camera));
+    const ShaderValues lightBuffer = lightBufferValues(scene, visible);
+    const BuiltinTextures& builtin = *s.textures;
+    std::deque<ShaderValues> values;  // stable storage for the layers the draws point at
+    std::deque<std::map<std::string, std::string>> materialTextures;
+    std::vector<RecordedDraw> draws;
+    RenderedFrame frame;
+    for (const DrawGroup& group : *groups) {
+        const scene::Object& first = scene.objects[group.objects.front()];
+        const bool instanced = group.objects.size() > 1;
+        std::vector<std::string> keywords;
+        if (instanced) keywords.push_back(kInstancingKeyword);
+        auto variant = group.pass->lookup(keywords, variants::SelectionPolicy::Exact);
+        if (!variant) return makeError(variant.error().code, "object " + std::to_string(group.objects.front()) +
+                                                                 ": " + variant.error().detail);
+        std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
+        const ShaderValues& material = values.emplace_back(materialValues(first.material, textureNames));
+        pack::PackRenderState state = resolveRenderState(group.pass->renderState(), material);
+        auto pipeline = s.pipeline(group.pack, *variant, state, **target, scene.camera.hdr);
+        if (!pipeline) return pipeline.error();
+        RecordedDraw draw;
+        draw.pipeline = *pipeline;
+        draw.mesh = &s.meshes.at(group.mesh);
+        draw.instances = static_cast<uint32_t>(group.objects.size());
+        const ShaderValues& objects =
+            values.emplace_back(instanced ? instanceValues(scene, group) : singleObjectValues(first));
+        const ShaderValues& lights = values.emplace_back(drawLightValues(group.lights));
+        draw.layers = {&objects, &lights, &material, &lightBuffer, &camera};
+        draw.textures = [&builtin, &textureNames](std::string_view name,
+                                                  pack::ResourceDim dim) -> std::optional<TextureBinding> {
+            auto it = textureNames.find(std::string(name));
+            return builtin.named(it == textureNames.end() ? "white" : it->second, dim);
+        };
+        draws.push_back(std::move(draw));
+        frame.variants.push_back(variant->describe());
+    }
+
+    const RenderTarget& rt = **target;
+    if (Status submitted = s.submit(rt, draws, frame); !submitted) return submitted.error();
+    auto image = rt.readback(*s.context);
+    if (!image) return image.error();
+    frame.image = std::move(*image);
+    return frame;
+}
+
+}  // namespace varc::runtime
