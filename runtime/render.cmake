@@ -5,9 +5,13 @@ find_package(glm CONFIG REQUIRED)
 
 add_library(varc_render STATIC
     src/render/BuiltinTextures.cpp
+    src/render/DeferredRenderer.cpp
+    src/render/DeferredTargets.cpp
+    src/render/DeferredValues.cpp
     src/render/DescriptorSlots.cpp
     src/render/DrawResources.cpp
     src/render/ForwardRenderer.cpp
+    src/render/GpuMesh.cpp
     src/render/PipelineCacheFile.cpp
     src/render/RenderStateResolver.cpp
     src/render/SceneValues.cpp

@@ -24,6 +24,7 @@ target_link_libraries(varc_scene
 varc_target_defaults(varc_scene)
 
 add_library(varc_reference STATIC
+    src/reference/DeferredReference.cpp
     src/reference/ImageCompare.cpp
     src/reference/Rasterizer.cpp
     src/reference/ReferenceRenderer.cpp

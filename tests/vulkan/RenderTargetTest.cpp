@@ -180,6 +180,36 @@ TEST_F(RenderTargetTest, DepthTestKeepsTheNearerTriangle) {
     EXPECT_EQ(readback(target).pixel8(32, 32), (Rgba8{255, 0, 0, 255}));
 }
 
+TEST_F(RenderTargetTest, ExtraAttachmentsClearToTheirOwnColours) {
+    RenderTargetDesc desc;
+    desc.width = desc.height = 8;
+    desc.color = ColorFormat::Rgba8Unorm;
+    desc.extraColors = {ColorFormat::Rgba8Unorm, ColorFormat::Rgba16Float, ColorFormat::Rgba8Unorm};
+    desc.extraClearColors = {{1.0f, 0.0f, 0.0f, 1.0f}, {0.5f, -2.0f, 3.0f, 1.0f}};  // the third: 0
+    desc.clearColor = {0.0f, 0.0f, 1.0f, 1.0f};
+    Result<RenderTarget> target = RenderTarget::create(context(), desc);
+    ASSERT_TRUE(target) << target.error().detail;
+    EXPECT_EQ(target->attachmentFormat(2), ColorFormat::Rgba16Float);
+    EXPECT_EQ(target->readback(context(), 0)->pixel8(3, 3), (Rgba8{0, 0, 255, 255}));
+    EXPECT_EQ(target->readback(context(), 1)->pixel8(3, 3), (Rgba8{255, 0, 0, 255}));
+    EXPECT_EQ(target->readback(context(), 2)->pixelFloat(3, 3), (Color{0.5f, -2.0f, 3.0f, 1.0f}));
+    EXPECT_EQ(target->readback(context(), 3)->pixel8(3, 3), (Rgba8{0, 0, 0, 0}));
+}
+
+TEST_F(RenderTargetTest, SampledDepthHasADepthOnlyView) {
+    RenderTargetDesc desc;
+    desc.width = desc.height = 8;
+    Result<RenderTarget> plain = RenderTarget::create(context(), desc);
+    ASSERT_TRUE(plain) << plain.error().detail;
+    EXPECT_EQ(plain->depthSampleView(), VK_NULL_HANDLE);
+    desc.sampledDepth = true;
+    Result<RenderTarget> sampled = RenderTarget::create(context(), desc);
+    ASSERT_TRUE(sampled) << sampled.error().detail;
+    EXPECT_NE(sampled->depthSampleView(), VK_NULL_HANDLE);
+    EXPECT_NE(sampled->depthSampleView(), sampled->depthView());
+    EXPECT_NE(sampled->depthImage(), VK_NULL_HANDLE);
+}
+
 TEST_F(RenderTargetTest, LoadPassKeepsEarlierContents) {
     RenderTarget target = makeTarget(ColorFormat::Rgba8Unorm, {0.0f, 0.0f, 0.0f, 1.0f});
     ASSERT_NO_FATAL_FAILURE(

@@ -8,11 +8,13 @@
 #include <ostream>
 #include <set>
 
+#include "varc/reference/DeferredReference.h"
 #include "varc/reference/ImageCompare.h"
 #include "varc/reference/ReferenceRenderer.h"
 #include "varc/reference/SceneTolerance.h"
 #include "varc/reference/SinglePassReference.h"
 #include "varc/runtime/Pack.h"
+#include "varc/runtime/render/DeferredRenderer.h"
 #include "varc/runtime/render/ForwardRenderer.h"
 #include "varc/runtime/render/SinglePassRenderer.h"
 #include "varc/runtime/vulkan/Png.h"
@@ -41,6 +43,7 @@ std::optional<std::vector<runtime::Pack>> openPacks(const std::vector<std::strin
 struct SceneRenderers {
     runtime::ForwardRenderer forward;
     runtime::SinglePassRenderer singlePass;
+    runtime::DeferredRenderer deferred;
 
     static Result<SceneRenderers> create(runtime::VulkanContext& context, const std::vector<runtime::Pack>& packs) {
         std::vector<const runtime::Pack*> pointers;
@@ -49,11 +52,14 @@ struct SceneRenderers {
         if (!forward) return forward.error();
         auto singlePass = runtime::SinglePassRenderer::create(context, pointers);
         if (!singlePass) return singlePass.error();
-        return SceneRenderers{std::move(*forward), std::move(*singlePass)};
+        auto deferred = runtime::DeferredRenderer::create(context, pointers);
+        if (!deferred) return deferred.error();
+        return SceneRenderers{std::move(*forward), std::move(*singlePass), std::move(*deferred)};
     }
 
     Result<runtime::RenderedFrame> render(const scene::Scene& scene) {
         if (scene.camera.path == scene::RenderPath::SinglePass) return singlePass.render(scene);
+        if (scene.camera.path == scene::RenderPath::Deferred) return deferred.render(scene);
         return forward.render(scene);
     }
 };
@@ -61,6 +67,7 @@ struct SceneRenderers {
 // The CPU reference for the scene's path.
 Result<reference::ReferenceImage> renderReferenceFor(const scene::Scene& scene) {
     if (scene.camera.path == scene::RenderPath::SinglePass) return reference::renderSinglePassReference(scene);
+    if (scene.camera.path == scene::RenderPath::Deferred) return reference::renderDeferredReference(scene);
     return reference::renderReference(scene);
 }
 

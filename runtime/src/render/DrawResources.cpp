@@ -90,7 +90,7 @@ Status DrawResources::bind(VkCommandBuffer commands, const VariantPipeline& pipe
             if (!texture) {
                 return makeError(ErrorCode::NotFound, pipeline.description() + ": no texture for '" + slot.name + "'");
             }
-            imageInfos[i] = {texture->sampler, texture->view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+            imageInfos[i] = {texture->sampler, texture->view, texture->layout};
             write.pImageInfo = &imageInfos[i];
         }
         writes.push_back(write);

@@ -234,12 +234,48 @@ Status RenderTarget::createImages(const VulkanContext& context) {
     DeviceImageDesc depthDesc = colorDesc;
     depthDesc.format = mDepthFormat;
     depthDesc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    if (mDesc.sampledDepth) {
+        if (!supportsOptimal(context.physicalDevice(), mDepthFormat, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT)) {
+            return makeError(ErrorCode::Unsupported, "the depth/stencil format cannot be sampled on " +
+                                                         context.deviceName());
+        }
+        depthDesc.usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
+    }
     depthDesc.aspect = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
     Result<DeviceImage> depthImage =
         createDeviceImage(context, depthDesc, mDesc.name + " depth/stencil");
     if (!depthImage) return depthImage.error();
     mDepth = std::move(*depthImage);
+    return mDesc.sampledDepth ? createDepthSampleView(context) : Status(Ok{});
+}
+
+// A view may name only one aspect of a depth/stencil image when it is sampled.
+Status RenderTarget::createDepthSampleView(const VulkanContext& context) {
+    VkImageViewCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
+    info.image = mDepth.image.get();
+    info.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    info.format = mDepthFormat;
+    info.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    if (Status status = checkVk(vkCreateImageView(context.device(), &info, nullptr, &view),
+                                "vkCreateImageView", std::source_location::current());
+        !status) {
+        return status;
+    }
+    mDepthSampleView = UniqueHandle<VkImageView>(context.device(), view);
+    context.nameObject(mDepthSampleView, mDesc.name + " depth sample view");
     return Ok{};
+}
+
+VkImage RenderTarget::colorImage(uint32_t attachment) const {
+    VARC_CHECK(attachment < colorAttachmentCount()) << "no colour attachment " << attachment;
+    return attachment == 0 ? mColor.image.get() : mExtraColors[attachment - 1].image.get();
+}
+
+VkImageView RenderTarget::colorView(uint32_t attachment) const {
+    VARC_CHECK(attachment < colorAttachmentCount()) << "no colour attachment " << attachment;
+    return attachment == 0 ? mColor.view.get() : mExtraColors[attachment - 1].view.get();
 }
 
 ColorFormat RenderTarget::attachmentFormat(uint32_t attachment) const {
@@ -307,6 +343,10 @@ void RenderTarget::begin(VkCommandBuffer commands, LoadOp op) const {
     std::vector<VkClearValue> clears(colorAttachmentCount() + 1);  // extra colours clear to 0
     const std::array<float, 4>& c = mDesc.clearColor;
     clears[0].color = {{c[0], c[1], c[2], c[3]}};
+    for (size_t i = 0; i < mDesc.extraClearColors.size() && i + 1 < colorAttachmentCount(); ++i) {
+        const std::array<float, 4>& e = mDesc.extraClearColors[i];
+        clears[i + 1].color = {{e[0], e[1], e[2], e[3]}};
+    }
     clears.back().depthStencil = {mDesc.clearDepth, mDesc.clearStencil};
     VkRenderPassBeginInfo info{};
     info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;

@@ -16,6 +16,9 @@ namespace varc::runtime {
 struct TextureBinding {
     VkImageView view = VK_NULL_HANDLE;
     VkSampler sampler = VK_NULL_HANDLE;
+    // The layout the image is in while the draw executes (a sampled depth buffer that is also the
+    // pass's read-only depth attachment: VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL).
+    VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 };
 // The texture bound for a resource name and dimension; nullopt = the runtime has none (error).
 using TextureLookup = std::function<std::optional<TextureBinding>(std::string_view name, pack::ResourceDim dim)>;

@@ -39,9 +39,14 @@ struct RenderTargetDesc {
     ColorFormat color = ColorFormat::Rgba8Unorm;
     // Further colour attachments 1..N (multiple render targets, e.g. a G-buffer); cleared to 0.
     std::vector<ColorFormat> extraColors;
+    // Clear colours of the extra attachments, in order; attachments beyond this list clear to 0.
+    std::vector<std::array<float, 4>> extraClearColors;
     // Adds a VK_FORMAT_D32_SFLOAT_S8_UINT attachment, or D24_UNORM_S8_UINT where D32S8 is not
     // supported.
     bool depthStencil = true;
+    // Makes the depth aspect samplable (e.g. a deferred renderer's _CameraDepthTexture): the depth
+    // image gets VK_IMAGE_USAGE_SAMPLED_BIT and a depth-only view, depthSampleView().
+    bool sampledDepth = false;
     std::array<float, 4> clearColor{0.0f, 0.0f, 0.0f, 1.0f};
     float clearDepth = 1.0f;
     uint32_t clearStencil = 0;
@@ -71,6 +76,15 @@ public:
     VkFramebuffer framebuffer() const { return mFramebuffer.get(); }
     VkImage colorImage() const { return mColor.image.get(); }
     VkImageView colorView() const { return mColor.view.get(); }
+    // Colour attachment |attachment| (0 = colorImage()); a programmer error when out of range.
+    VkImage colorImage(uint32_t attachment) const;
+    VkImageView colorView(uint32_t attachment) const;
+    ColorFormat attachmentFormat(uint32_t attachment) const;
+    // The depth/stencil image and its view of both aspects (VK_NULL_HANDLE without one), and the
+    // depth-only view of a sampledDepth target (VK_NULL_HANDLE otherwise).
+    VkImage depthImage() const { return mDepth.image.get(); }
+    VkImageView depthView() const { return mDepth.view.get(); }
+    VkImageView depthSampleView() const { return mDepthSampleView.get(); }
     VkViewport viewport() const;  // the whole target, depth 0..1
     VkRect2D area() const;        // the whole target
 
@@ -89,13 +103,14 @@ private:
     Status createFramebuffer(const VulkanContext& context);
     Status clearOnce(VulkanContext& context) const;
     void recordReadback(VkCommandBuffer commands, VkBuffer destination, uint32_t attachment) const;
-    ColorFormat attachmentFormat(uint32_t attachment) const;
+    Status createDepthSampleView(const VulkanContext& context);
 
     RenderTargetDesc mDesc;
     VkFormat mDepthFormat = VK_FORMAT_UNDEFINED;
     DeviceImage mColor;
     std::vector<DeviceImage> mExtraColors;
     DeviceImage mDepth;
+    UniqueHandle<VkImageView> mDepthSampleView;
     UniqueHandle<VkRenderPass> mClearPass;
     UniqueHandle<VkRenderPass> mLoadPass;
     UniqueHandle<VkFramebuffer> mFramebuffer;

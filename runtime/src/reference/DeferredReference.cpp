@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: Apache-2.0
+// DeferredReference: the G-buffer at each visible pixel, then the deferred light pass per light.
+#include "varc/reference/DeferredReference.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "varc/reference/Shading.h"
+#include "varc/scene/CameraMatrices.h"
+#include "varc/scene/ForwardLights.h"
+#include "varc/scene/LightTextures.h"
+#include "varc/scene/Mesh.h"
+
+namespace varc::reference {
+namespace {
+
+float toHalf(float v) { return runtime::halfToFloat(runtime::floatToHalf(v)); }
+float unorm8(float v) { return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f); }
+
+Status readProperty(const scene::PropertyValue& value, const std::string& name, glm::vec4& out) {
+    if (const auto* v = std::get_if<glm::vec4>(&value)) {
+        out = *v;
+        return Ok{};
+    }
+    return makeError(ErrorCode::InvalidInput, "material property " + name + ": expected a colour");
+}
+
+Status readProperty(const scene::PropertyValue& value, const std::string& name, float& out) {
+    if (const auto* v = std::get_if<float>(&value)) {
+        out = *v;
+        return Ok{};
+    }
+    return makeError(ErrorCode::InvalidInput, "material property " + name + ": expected a number");
+}
+
+// Per object: material and the per-vertex world position and normal the G-buffer pass interpolates.
+struct ObjectSurface {
+    GBufferMaterial material;
+    std::vector<glm::vec3> worldPos, worldNormal;
+    const scene::Mesh* mesh = nullptr;
+    std::array<glm::vec4, 7> sh{};
+};
+
+Result<ObjectSurface> prepareObject(const scene::Scene& scene, const scene::Object& object) {
+    ObjectSurface surface;
+    auto material = resolveGBufferMaterial(object.material);
+    if (!material) return material.error();
+    surface.material = *material;
+    surface.sh = scene::packedSH(scene, object, {});  // the flat ambient
+    surface.mesh = &scene::builtinMesh(object.mesh);
+    const glm::mat4 objectToWorld = object.transform.localToWorld();
+    const glm::mat3 normalMatrix = glm::transpose(glm::mat3(glm::inverse(objectToWorld)));
+    for (size_t i = 0; i < surface.mesh->positions.size(); ++i) {
+        surface.worldPos.emplace_back(objectToWorld * glm::vec4(surface.mesh->positions[i], 1.0f));
+        surface.worldNormal.push_back(glm::normalize(normalMatrix * surface.mesh->normals[i]));
+    }
+    return surface;
+}
+
+// LIGHTING.md §8.3, G-buffer pass, with the attachments' quantisation.
+GBufferTexel gbufferTexel(const ObjectSurface& surface, const glm::vec3& interpolatedNormal,
+                          bool hdr) {
+    const GBufferMaterial& m = surface.material;
+    const glm::vec3 n = glm::normalize(interpolatedNormal);
+    const SurfaceColors colors =
+        diffuseAndSpecularFromMetallic(glm::vec3(m.mainTex) * glm::vec3(m.color), m.metallic);
+    GBufferTexel texel;
+    for (int c = 0; c < 3; ++c) {
+        texel.diffuse[c] = srgb8RoundTrip(colors.diffuse[c]);
+        texel.specular[c] = srgb8RoundTrip(colors.specular[c]);
+    }
+    texel.smoothness = unorm8(m.smoothness) / 255.0f;
+    texel.encodedNormal = n * 0.5f + 0.5f;  // RT2 is R32G32B32A32_SFLOAT
+    const glm::vec3 light =
+        m.emission + colors.diffuse * glm::max(scene::shadeSH9(surface.sh, n), glm::vec3(0.0f));
+    for (int c = 0; c < 3; ++c)
+        texel.light[c] = hdr ? toHalf(light[c]) : unorm8(std::exp2(-light[c]));
+    return texel;
+}
+
+// LIGHTING.md §3, deferred table (no shadows: shadow = 1 exactly), and §8.3's light pass.
+glm::vec3 lightPass(const scene::Light& light, const LightTextureSet& textures,
+                    const GBufferTexel& texel, const glm::vec3& p, const glm::vec3& cameraPos) {
+    const glm::vec4 lc =
+        scene::worldToLight(light, /*deferredSpotConvention=*/true) * glm::vec4(p, 1.0f);
+    const float invRangeSq = 1.0f / (light.range * light.range);
+    glm::vec3 l(0.0f);
+    float atten = 0.0f;
+    if (light.type == scene::LightType::Directional) {
+        l = -light.forward();
+        atten = light.cookie != "none" ? textures.directionalCookie(glm::vec2(lc)) : 1.0f;
+    } else {
+        const glm::vec3 toLight = light.transform.position - p;
+        l = glm::normalize(toLight);
+        atten = textures.falloff(glm::dot(toLight, toLight) * invRangeSq);
+        if (light.type == scene::LightType::Spot) {
+            atten *= textures.spotCookie(glm::vec2(lc) / lc.w) * (lc.w < 0.0f ? 1.0f : 0.0f);
+        } else if (light.cookie != "none") {
+            atten *= textures.pointCookie(glm::vec3(lc));
+        }
+    }
+    SurfaceColors surface;
+    surface.diffuse = texel.diffuse;
+    surface.specular = texel.specular;
+    surface.oneMinusReflectivity =
+        1.0f - std::max({texel.specular.r, texel.specular.g, texel.specular.b});
+    const glm::vec3 n = glm::normalize(texel.encodedNormal * 2.0f - 1.0f);
+    const glm::vec3 v = glm::normalize(cameraPos - p);
+    return brdfPbs(surface, texel.smoothness, n, v, l, light.finalColor() * atten, glm::vec3(0.0f),
+                   glm::vec3(0.0f));
+}
+
+// The light buffer after every light, then what the frame shows (LDR: decoded, 0..1).
+glm::vec3 shadePixel(const scene::Scene& scene, const LightTextureSet& textures,
+                     const GBufferTexel& texel, const glm::vec3& p) {
+    const bool hdr = scene.camera.hdr;
+    glm::vec3 buffer = texel.light;
+    for (const scene::Light& light : scene.lights) {
+        const glm::vec3 c = lightPass(light, textures, texel, p, scene.camera.position);
+        for (int k = 0; k < 3; ++k) {
+            // LDR: Blend DstColor Zero on unorm8 = round(src8 · dst8 / 255).
+            buffer[k] = hdr ? toHalf(buffer[k] + toHalf(c[k]))
+                            : std::round(unorm8(std::exp2(-c[k])) * buffer[k] / 255.0f);
+        }
+    }
+    if (hdr) return buffer;
+    glm::vec3 decoded;
+    for (int k = 0; k < 3; ++k) decoded[k] = unorm8(-std::log2(buffer[k] / 255.0f)) / 255.0f;
+    return decoded;
+}
+
+Status checkCookies(const scene::Scene& scene) {
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const std::string& cookie = scene.lights[i].cookie;
+        if (cookie != "none" && cookie != "default") {
+            return makeError(ErrorCode::Unsupported,
+                             "/lights/" + std::to_string(i) +
+                                 ": the CPU reference knows the default cookies only, not '" +
+                                 cookie + "'");
+        }
+    }
+    return Ok{};
+}
+
+}  // namespace
+
+float srgb8RoundTrip(float linear) {
+    const float x = std::clamp(linear, 0.0f, 1.0f);
+    const float encoded = x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+    const float byte = std::round(encoded * 255.0f) / 255.0f;
+    return byte <= 0.04045f ? byte / 12.92f : std::pow((byte + 0.055f) / 1.055f, 2.4f);
+}
+
+Result<GBufferMaterial> resolveGBufferMaterial(const scene::Material& material) {
+    if (material.shader != "varc/DeferredGBuffer") {
+        return makeError(
+            ErrorCode::Unsupported,
+            "the deferred CPU reference has no model of shader '" + material.shader + "'");
+    }
+    GBufferMaterial m;
+    for (const auto& [name, value] : material.properties) {
+        Status status = Ok{};
+        if (name == "_Color") {
+            status = readProperty(value, name, m.color);
+        } else if (name == "_Metallic") {
+            status = readProperty(value, name, m.metallic);
+        } else if (name == "_Smoothness") {
+            status = readProperty(value, name, m.smoothness);
+        } else if (name == "_EmissionColor") {
+            glm::vec4 e;
+            status = readProperty(value, name, e);
+            m.emission = glm::vec3(e);
+        } else if (name == "_MainTex") {
+            const auto* texture = std::get_if<std::string>(&value);
+            if (!texture || (*texture != "white" && *texture != "black")) {
+                return makeError(ErrorCode::Unsupported,
+                                 "material property _MainTex: the CPU reference knows "
+                                 "the textures 'white' and 'black'");
+            }
+            m.mainTex = *texture == "white" ? glm::vec4(1.0f) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+        }
+        if (!status) return status.error();
+    }
+    return m;
+}
+
+Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
+    if (scene.camera.path != scene::RenderPath::Deferred) {
+        return makeError(ErrorCode::Unsupported,
+                         "renderDeferredReference renders the deferred path only");
+    }
+    if (Status cookies = checkCookies(scene); !cookies) return cookies.error();
+    std::vector<ObjectSurface> surfaces;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        auto surface = prepareObject(scene, scene.objects[i]);
+        if (!surface) {
+            return makeError(surface.error().code,
+                             "/objects/" + std::to_string(i) + ": " + surface.error().detail);
+        }
+        surfaces.push_back(std::move(*surface));
+    }
+    const LightTextureSet textures;
+    const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);
+    ReferenceImage out;
+    out.visibility = rasterizeScene(scene, camera);
+    out.classes = classifyPixels(scene, out.visibility);
+    const uint32_t w = scene.camera.width, h = scene.camera.height;
+    out.color = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
+    const bool hdr = scene.camera.hdr;
+    glm::vec4 background = scene.camera.background;
+    for (int c = 0; c < 4; ++c)
+        background[c] = hdr ? toHalf(background[c]) : unorm8(background[c]) / 255.0f;
+    for (uint32_t y = 0; y < h; ++y) {
+        for (uint32_t x = 0; x < w; ++x) {
+            const SurfaceSample& s = out.visibility.at(x, y);
+            glm::vec4 c = background;
+            if (s.object >= 0) {
+                const ObjectSurface& surface = surfaces[static_cast<size_t>(s.object)];
+                glm::vec3 p(0.0f), normal(0.0f);
+                for (uint32_t k = 0; k < 3; ++k) {
+                    const uint32_t v = surface.mesh->indices[3 * s.triangle + k];
+                    p += s.bary[static_cast<glm::length_t>(k)] * surface.worldPos[v];
+                    normal += s.bary[static_cast<glm::length_t>(k)] * surface.worldNormal[v];
+                }
+                const GBufferTexel texel = gbufferTexel(surface, normal, hdr);
+                c = glm::vec4(shadePixel(scene, textures, texel, p), hdr ? 1.0f : background.a);
+            }
+            out.color.setPixelFloat(x, y, {c.r, c.g, c.b, c.a});
+        }
+    }
+    return out;
+}
+
+}  // namespace varc::reference

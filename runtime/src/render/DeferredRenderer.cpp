@@ -1,0 +1,405 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "varc/runtime/render/DeferredRenderer.h"
+
+#include <deque>
+#include <map>
+#include <optional>
+
+#include "render/DeferredTargets.h"
+#include "render/GpuMesh.h"
+#include "varc/runtime/PassView.h"
+#include "varc/runtime/ShaderView.h"
+#include "varc/runtime/render/BuiltinTextures.h"
+#include "varc/runtime/render/DeferredValues.h"
+#include "varc/runtime/render/DrawResources.h"
+#include "varc/runtime/render/RenderStateResolver.h"
+#include "varc/runtime/render/SceneValues.h"
+#include "varc/runtime/render/VertexLayout.h"
+#include "varc/runtime/vulkan/Sampler.h"
+#include "varc/scene/ForwardLights.h"
+#include "varc/variants/LightKeywords.h"
+
+namespace varc::runtime {
+
+namespace {
+
+// The stencil bit the G-buffer pass writes and the light and decode passes test (the shaders'
+// Properties default; resolveRenderState only sees what the material sets).
+constexpr float kStencilNonBackground = 128.0f;
+
+variants::LightType toVariantLight(scene::LightType type) {
+    switch (type) {
+        case scene::LightType::Directional:
+            return variants::LightType::Directional;
+        case scene::LightType::Point:
+            return variants::LightType::Point;
+        case scene::LightType::Spot:
+            return variants::LightType::Spot;
+    }
+    return variants::LightType::Directional;
+}
+
+enum class Phase { GBuffer, Light, Decode };
+
+struct Draw {
+    const VariantPipeline* pipeline = nullptr;
+    const GpuMesh* mesh = nullptr;
+    std::array<const ShaderValues*, 4> layers{};  // light, object, material, camera
+    TextureLookup textures;
+};
+
+Result<GpuMesh> uploadQuad(VulkanContext& context, const scene::CameraMatrices& camera) {
+    scene::Mesh mesh;
+    for (const QuadCorner& corner : fullScreenQuad(camera)) {
+        mesh.positions.push_back(corner.position);
+        mesh.normals.push_back(corner.ray);
+        mesh.tangents.emplace_back(1.0f, 0.0f, 0.0f, 1.0f);
+        mesh.uvs.push_back(corner.uv);
+    }
+    mesh.indices = {0, 1, 2, 0, 2, 3};
+    return uploadMesh(context, mesh);
+}
+
+}  // namespace
+
+struct DeferredRenderer::State {
+    VulkanContext* context = nullptr;
+    std::vector<const Pack*> packs;
+    std::string lightShader;
+    std::optional<BuiltinTextures> textures;
+    std::optional<DrawResources> resources;
+    std::map<scene::MeshKind, GpuMesh> meshes;
+    UniqueHandle<VkSampler> nearest;
+    struct TargetKey {
+        uint32_t width, height;
+        bool hdr;
+        std::array<float, 4> background;
+        auto operator<=>(const TargetKey&) const = default;
+    };
+    std::map<TargetKey, DeferredTargets> targets;
+    struct CachedPipeline {
+        const Pack* pack;
+        std::string variant;
+        pack::PackRenderState state;
+        Phase phase;
+        bool hdr;
+        VariantPipeline pipeline;
+    };
+    std::deque<CachedPipeline> pipelines;
+
+    Result<const DeferredTargets*> target(const scene::Camera& camera);
+    Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
+                                            const pack::PackRenderState& state, Phase phase,
+                                            const DeferredTargets& target, bool hdr);
+    std::optional<ShaderView> findShader(const std::string& name, const Pack** owner) const;
+};
+
+Result<const DeferredTargets*> DeferredRenderer::State::target(const scene::Camera& camera) {
+    const glm::vec4& b = camera.background;
+    TargetKey key{camera.width, camera.height, camera.hdr, {b.r, b.g, b.b, b.a}};
+    auto it = targets.find(key);
+    if (it == targets.end()) {
+        auto created = DeferredTargets::create(*context, camera);
+        if (!created) return created.error();
+        it = targets.emplace(key, std::move(*created)).first;
+    }
+    return &it->second;
+}
+
+Result<const VariantPipeline*> DeferredRenderer::State::pipeline(
+    const Pack* pack, const VariantView& variant, const pack::PackRenderState& state, Phase phase,
+    const DeferredTargets& target, bool hdr) {
+    std::string name = variant.describe();
+    for (const CachedPipeline& cached : pipelines) {
+        if (cached.pack == pack && cached.hdr == hdr && cached.phase == phase &&
+            cached.variant == name && cached.state == state) {
+            return &cached.pipeline;
+        }
+    }
+    PipelineTarget pipelineTarget;
+    switch (phase) {
+        case Phase::GBuffer:
+            pipelineTarget = {target.gbuffer().renderPass(LoadOp::Clear), true,
+                              target.gbuffer().colorAttachmentCount()};
+            break;
+        case Phase::Light:
+            pipelineTarget = {target.lightPass(), true, 1};
+            break;
+        case Phase::Decode:
+            pipelineTarget = {target.decodePass(), true, 1};
+            break;
+    }
+    auto created = VariantPipeline::create(*context, variant, state, pipelineTarget);
+    if (!created) return created.error();
+    pipelines.push_back({pack, name, state, phase, hdr, std::move(*created)});
+    return &pipelines.back().pipeline;
+}
+
+std::optional<ShaderView> DeferredRenderer::State::findShader(const std::string& name,
+                                                              const Pack** owner) const {
+    for (const Pack* pack : packs) {
+        if (auto shader = pack->findShader(name)) {
+            *owner = pack;
+            return shader;
+        }
+    }
+    return std::nullopt;
+}
+
+DeferredRenderer::DeferredRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
+DeferredRenderer::DeferredRenderer(DeferredRenderer&&) noexcept = default;
+DeferredRenderer& DeferredRenderer::operator=(DeferredRenderer&&) noexcept = default;
+DeferredRenderer::~DeferredRenderer() = default;
+
+Result<DeferredRenderer> DeferredRenderer::create(VulkanContext& context,
+                                                  std::vector<const Pack*> packs,
+                                                  std::string lightShader) {
+    auto state = std::make_unique<State>();
+    state->context = &context;
+    state->packs = std::move(packs);
+    state->lightShader = std::move(lightShader);
+    auto textures = BuiltinTextures::create(context);
+    if (!textures) return textures.error();
+    state->textures.emplace(std::move(*textures));
+    auto resources = DrawResources::create(context);
+    if (!resources) return resources.error();
+    state->resources.emplace(std::move(*resources));
+    for (scene::MeshKind kind :
+         {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
+        auto mesh = uploadMesh(context, scene::builtinMesh(kind));
+        if (!mesh) return mesh.error();
+        state->meshes.emplace(kind, std::move(*mesh));
+    }
+    SamplerDesc nearest;
+    nearest.filter = VK_FILTER_NEAREST;
+    nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    nearest.addressMode = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    nearest.maxLod = 0.0f;
+    nearest.name = "deferred G-buffer sampler";
+    auto sampler = createSampler(context, nearest);
+    if (!sampler) return sampler.error();
+    state->nearest = std::move(*sampler);
+    return DeferredRenderer(std::move(state));
+}
+
+namespace {
+
+// Everything one frame's draws point at, kept alive until the frame is submitted.
+struct FrameData {
+    std::deque<ShaderValues> values;
+    std::deque<std::map<std::string, std::string>> materialTextures;
+    std::optional<GpuMesh> quad;
+    std::vector<Draw> gbufferDraws, lightDraws, decodeDraws;
+};
+
+ShaderValues lightPassMaterial(bool hdr) {
+    ShaderValues material;
+    // Unity's BlendMode numbers: Zero 0, One 1, DstColor 2.
+    material.set("_SrcBlend", hdr ? 1.0f : 2.0f);
+    material.set("_DstBlend", hdr ? 1.0f : 0.0f);
+    material.set("_StencilNonBackground", kStencilNonBackground);
+    return material;
+}
+
+}  // namespace
+
+Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
+    State& s = *mState;
+    if (scene.camera.path != scene::RenderPath::Deferred) {
+        return makeError(ErrorCode::InvalidInput,
+                         "DeferredRenderer renders scenes with camera path 'deferred'");
+    }
+    auto target = s.target(scene.camera);
+    if (!target) return target.error();
+    const DeferredTargets& targets = **target;
+    const bool hdr = scene.camera.hdr;
+    scene::CameraMatrices matrices = scene::cameraMatrices(scene.camera);
+    const BuiltinTextures& builtin = *s.textures;
+    FrameData frameData;
+    const ShaderValues& camera = frameData.values.emplace_back(cameraValues(scene, matrices));
+    RenderedFrame frame;
+
+    // G-buffer pass: every object, SH = the flat ambient (all lights are deferred lights).
+    const scene::ForwardLightAssignment noLights;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const scene::Object& object = scene.objects[o];
+        std::string what = "object " + std::to_string(o) +
+                           (object.name.empty() ? "" : " '" + object.name + "'") + " (shader \"" +
+                           object.material.shader + "\")";
+        const Pack* pack = nullptr;
+        std::optional<ShaderView> shader = s.findShader(object.material.shader, &pack);
+        if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
+        std::optional<PassView> pass = shader->pass(std::string_view("Deferred"));
+        if (!pass)
+            return makeError(ErrorCode::NotFound, what + ": the shader has no Deferred pass");
+        std::vector<std::string> keywords;
+        if (hdr) keywords.push_back("UNITY_HDR_ON");
+        auto variant = pass->lookup(keywords, variants::SelectionPolicy::Closest);
+        if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
+        std::map<std::string, std::string>& textureNames =
+            frameData.materialTextures.emplace_back();
+        ShaderValues& material =
+            frameData.values.emplace_back(materialValues(object.material, textureNames));
+        if (!material.find("_StencilNonBackground"))
+            material.set("_StencilNonBackground", kStencilNonBackground);
+        pack::PackRenderState state = resolveRenderState(pass->renderState(), material);
+        auto pipeline = s.pipeline(pack, *variant, state, Phase::GBuffer, targets, hdr);
+        if (!pipeline)
+            return makeError(pipeline.error().code, what + ": " + pipeline.error().detail);
+        const ShaderValues& objectLayer =
+            frameData.values.emplace_back(objectValues(scene, object, matrices, noLights));
+        Draw draw;
+        draw.pipeline = *pipeline;
+        draw.mesh = &s.meshes.at(object.mesh);
+        draw.layers = {nullptr, &objectLayer, &material, &camera};
+        draw.textures = [&builtin, &textureNames](
+                            std::string_view name,
+                            pack::ResourceDim dim) -> std::optional<TextureBinding> {
+            auto it = textureNames.find(std::string(name));
+            return builtin.named(it == textureNames.end() ? "white" : it->second, dim);
+        };
+        frameData.gbufferDraws.push_back(std::move(draw));
+        frame.variants.push_back(variant->describe());
+    }
+
+    auto quad = uploadQuad(*s.context, matrices);
+    if (!quad) return quad.error();
+    frameData.quad.emplace(std::move(*quad));
+    const ShaderValues& quadLayer = frameData.values.emplace_back(fullScreenQuadValues(matrices));
+    const ShaderValues& lightMaterial = frameData.values.emplace_back(lightPassMaterial(hdr));
+    const Pack* lightPack = nullptr;
+    std::optional<ShaderView> lightShader = s.findShader(s.lightShader, &lightPack);
+    if (!lightShader && (!scene.lights.empty() || !hdr)) {
+        return makeError(ErrorCode::NotFound,
+                         "deferred light shader \"" + s.lightShader + "\": no pack has it");
+    }
+    const RenderTarget& g = targets.gbuffer();
+    TextureBinding depth{g.depthSampleView(), s.nearest.get(),
+                         VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
+    TextureBinding gbuffer0{g.colorView(kGBufferDiffuse), s.nearest.get()};
+    TextureBinding gbuffer1{g.colorView(kGBufferSpecular), s.nearest.get()};
+    TextureBinding gbuffer2{g.colorView(kGBufferNormal), s.nearest.get()};
+    for (size_t l = 0; l < scene.lights.size(); ++l) {
+        const scene::Light& light = scene.lights[l];
+        std::string what = "light " + std::to_string(l) + " (shader \"" + s.lightShader + "\")";
+        std::optional<PassView> pass = lightShader->pass(size_t{0});
+        if (!pass) return makeError(ErrorCode::NotFound, what + ": the shader has no pass 0");
+        variants::LightDescription description;
+        description.type = toVariantLight(light.type);
+        description.cookie = light.type != scene::LightType::Spot && light.cookie != "none";
+        description.hdr = hdr;
+        auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
+        if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
+        pack::PackRenderState state = resolveRenderState(pass->renderState(), lightMaterial);
+        auto pipeline = s.pipeline(lightPack, *variant, state, Phase::Light, targets, hdr);
+        if (!pipeline)
+            return makeError(pipeline.error().code, what + ": " + pipeline.error().detail);
+        const ShaderValues& lightLayer = frameData.values.emplace_back(deferredLightValues(light));
+        Draw draw;
+        draw.pipeline = *pipeline;
+        draw.mesh = &*frameData.quad;
+        draw.layers = {&lightLayer, &quadLayer, &lightMaterial, &camera};
+        scene::LightType type = light.type;
+        bool cookie = light.cookie != "none";
+        draw.textures = [&builtin, type, cookie, depth, gbuffer0, gbuffer1, gbuffer2](
+                            std::string_view name,
+                            pack::ResourceDim dim) -> std::optional<TextureBinding> {
+            if (name == "_CameraDepthTexture") return depth;
+            if (name == "_CameraGBufferTexture0") return gbuffer0;
+            if (name == "_CameraGBufferTexture1") return gbuffer1;
+            if (name == "_CameraGBufferTexture2") return gbuffer2;
+            if (name == "_LightTextureB0") return builtin.falloff();
+            if (name == "_LightTexture0") {
+                if (type == scene::LightType::Spot) return builtin.spotCookie();
+                if (type == scene::LightType::Point && cookie) return builtin.pointCookie();
+                if (type == scene::LightType::Directional && cookie)
+                    return builtin.directionalCookie();
+            }
+            return builtin.named("white", dim);
+        };
+        frameData.lightDraws.push_back(std::move(draw));
+        frame.variants.push_back(variant->describe());
+    }
+
+    if (!hdr) {
+        std::optional<PassView> pass = lightShader->pass(size_t{1});
+        if (!pass)
+            return makeError(ErrorCode::NotFound,
+                             "deferred light shader \"" + s.lightShader + "\" has no pass 1");
+        auto variant = pass->lookup(std::vector<std::string>{}, variants::SelectionPolicy::Closest);
+        if (!variant)
+            return makeError(variant.error().code, "LDR decode: " + variant.error().detail);
+        pack::PackRenderState state = resolveRenderState(pass->renderState(), lightMaterial);
+        // The decoded alpha is −log2(1) = 0 (the light buffer's alpha stays 1): keep the clear
+        // alpha.
+        state.colorMask.value =
+            pack::kColorWriteRed | pack::kColorWriteGreen | pack::kColorWriteBlue;
+        auto pipeline = s.pipeline(lightPack, *variant, state, Phase::Decode, targets, hdr);
+        if (!pipeline)
+            return makeError(pipeline.error().code, "LDR decode: " + pipeline.error().detail);
+        Draw draw;
+        draw.pipeline = *pipeline;
+        draw.mesh = &*frameData.quad;
+        draw.layers = {nullptr, &quadLayer, &lightMaterial, &camera};
+        TextureBinding lightBuffer{g.colorView(kGBufferLight), s.nearest.get()};
+        draw.textures = [&builtin, lightBuffer](
+                            std::string_view name,
+                            pack::ResourceDim dim) -> std::optional<TextureBinding> {
+            if (name == "_LightBuffer") return lightBuffer;
+            return builtin.named("white", dim);
+        };
+        frameData.decodeDraws.push_back(std::move(draw));
+        frame.variants.push_back(variant->describe());
+    }
+
+    Status bound = Ok{};
+    auto record = [&](VkCommandBuffer commands, const std::vector<Draw>& draws) {
+        for (const Draw& draw : draws) {
+            if (!bound) return;
+            vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.pipeline->pipeline());
+            bound = s.resources->bind(commands, *draw.pipeline, draw.layers, draw.textures);
+            if (!bound) return;
+            VkBuffer vertexBuffer = draw.mesh->vertices.handle();
+            VkDeviceSize offset = 0;
+            vkCmdBindVertexBuffers(commands, 0, 1, &vertexBuffer, &offset);
+            vkCmdBindIndexBuffer(commands, draw.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+            vkCmdDrawIndexed(commands, draw.mesh->indexCount, 1, 0, 0, 0);
+            ++frame.draws;
+        }
+    };
+    Status submitted = s.context->submitAndWait([&](VkCommandBuffer commands) {
+        VkViewport viewport = g.viewport();
+        VkRect2D area = g.area();
+        g.begin(commands, LoadOp::Clear);
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &area);
+        record(commands, frameData.gbufferDraws);
+        g.end(commands);
+        targets.toLighting(commands);
+        targets.beginLightPass(commands);
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &area);
+        record(commands, frameData.lightDraws);
+        vkCmdEndRenderPass(commands);
+        if (!hdr) {
+            targets.toDecode(commands);
+            targets.beginDecodePass(commands);
+            vkCmdSetViewport(commands, 0, 1, &viewport);
+            vkCmdSetScissor(commands, 0, 1, &area);
+            record(commands, frameData.decodeDraws);
+            vkCmdEndRenderPass(commands);
+            targets.fromDecode(commands);
+        }
+        targets.fromLighting(commands);
+    });
+    if (Status reset = s.resources->reset(); !reset) return reset.error();
+    if (!bound) return bound.error();
+    if (!submitted) return submitted.error();
+    auto image =
+        hdr ? g.readback(*s.context, kGBufferLight) : targets.output()->readback(*s.context);
+    if (!image) return image.error();
+    frame.image = std::move(*image);
+    return frame;
+}
+
+}  // namespace varc::runtime

@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: Apache-2.0
+// The deferred renderer on lavapipe (issue #6): the stencil-masked background, lights adding up in
+// the light buffer, HDR and LDR agreeing up to the LDR encoding, and the deferred validation
+// scenes compared with the CPU reference.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "VulkanTestSupport.h"
+#include "varc/reference/DeferredReference.h"
+#include "varc/reference/ImageCompare.h"
+#include "varc/reference/SceneTolerance.h"
+#include "varc/runtime/Pack.h"
+#include "varc/runtime/render/DeferredRenderer.h"
+#include "varc/scene/Scene.h"
+
+namespace varc::runtime {
+namespace {
+
+scene::Object sphere(glm::vec3 position) {
+    scene::Object object;
+    object.mesh = scene::MeshKind::Sphere;
+    object.transform.position = position;
+    object.material.shader = "varc/DeferredGBuffer";
+    object.material.properties = {{"_Color", glm::vec4(0.8f, 0.7f, 0.6f, 1.0f)},
+                                  {"_MainTex", std::string("white")},
+                                  {"_Metallic", 0.0f},
+                                  {"_Smoothness", 0.3f}};
+    return object;
+}
+
+scene::Light light(scene::LightType type, glm::vec3 position, float intensity) {
+    scene::Light l;
+    l.type = type;
+    l.transform.position = position;
+    l.transform.rotationDegrees = {40.0f, 20.0f, 0.0f};
+    l.intensity = intensity;
+    l.range = 5.0f;
+    return l;
+}
+
+// One sphere in front of the camera, no ambient, a visible background colour.
+scene::Scene oneSphere(bool hdr) {
+    scene::Scene scene;
+    scene.camera.position = {0, 0, -2.5f};
+    scene.camera.width = scene.camera.height = 64;
+    scene.camera.hdr = hdr;
+    scene.camera.path = scene::RenderPath::Deferred;
+    scene.camera.background = {0.2f, 0.4f, 0.6f, 1.0f};
+    scene.ambient = glm::vec3(0.0f);
+    scene.objects.push_back(sphere({0, 0, 0}));
+    return scene;
+}
+
+float maxAbsDifference(const Image& a, const Image& b) {
+    float worst = 0;
+    for (uint32_t y = 0; y < a.height(); ++y) {
+        for (uint32_t x = 0; x < a.width(); ++x) {
+            std::array<float, 4> pa = a.pixelFloat(x, y), pb = b.pixelFloat(x, y);
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(pa[c] - pb[c]));
+        }
+    }
+    return worst;
+}
+
+float sum(const Image& image) {
+    float total = 0;
+    for (uint32_t y = 0; y < image.height(); ++y) {
+        for (uint32_t x = 0; x < image.width(); ++x) {
+            std::array<float, 4> p = image.pixelFloat(x, y);
+            total += p[0] + p[1] + p[2];
+        }
+    }
+    return total;
+}
+
+class DeferredRenderTest : public testing::VulkanTest {
+protected:
+    void SetUp() override {
+        VulkanTest::SetUp();
+        if (HasFatalFailure()) return;
+        auto pack = Pack::open(VARC_TEST_PACK_DIR "/library.svpack");
+        ASSERT_TRUE(pack) << pack.error().detail;
+        mPack.emplace(std::move(*pack));
+        auto renderer = DeferredRenderer::create(context(), {&*mPack});
+        ASSERT_TRUE(renderer) << renderer.error().detail;
+        mRenderer.emplace(std::move(*renderer));
+    }
+    void TearDown() override {
+        mRenderer.reset();
+        VulkanTest::TearDown();
+    }
+
+    RenderedFrame render(const scene::Scene& scene) {
+        auto frame = mRenderer->render(scene);
+        EXPECT_TRUE(frame) << frame.error().detail;
+        return frame ? std::move(*frame) : RenderedFrame{};
+    }
+
+    std::optional<Pack> mPack;
+    std::optional<DeferredRenderer> mRenderer;
+};
+
+// The light quads cover the whole screen; the stencil bits of the G-buffer pass keep them (and
+// the LDR decode) off the background.
+TEST_F(DeferredRenderTest, TheStencilMaskKeepsLightsOffTheBackground) {
+    for (bool hdr : {true, false}) {
+        SCOPED_TRACE(hdr ? "HDR" : "LDR");
+        scene::Scene scene = oneSphere(hdr);
+        scene.lights.push_back(light(scene::LightType::Directional, {}, 2.0f));
+        RenderedFrame frame = render(scene);
+        ASSERT_EQ(frame.image.width(), 64u);
+        std::array<float, 4> corner = frame.image.pixelFloat(0, 0);
+        EXPECT_NEAR(corner[0], 0.2f, 1e-3f);
+        EXPECT_NEAR(corner[1], 0.4f, 1e-3f);
+        EXPECT_NEAR(corner[2], 0.6f, 1e-3f);
+        std::array<float, 4> centre = frame.image.pixelFloat(32, 32);
+        EXPECT_GT(centre[0], 0.05f) << "the light must reach the sphere";
+        EXPECT_EQ(frame.draws, hdr ? 2u : 3u) << "G-buffer, one light, and the LDR decode";
+    }
+}
+
+// A light whose range ends before the sphere adds nothing visible. Drawn as a full-screen quad it
+// is not masked by a volume: the falloff table's last texel (clamp to edge) is f(1023.5/1024)
+// ≈ 5e-5, so HDR gains up to ~0.01 LSB; LDR rounds exp2(−5e-5) to 255, × 1 = exactly nothing.
+TEST_F(DeferredRenderTest, APointLightOutOfRangeChangesNothing) {
+    for (bool hdr : {true, false}) {
+        SCOPED_TRACE(hdr ? "HDR" : "LDR");
+        scene::Scene scene = oneSphere(hdr);
+        scene.lights.push_back(light(scene::LightType::Point, {-1.0f, 1.0f, -1.0f}, 1.0f));
+        RenderedFrame lit = render(scene);
+        scene.lights.push_back(light(scene::LightType::Point, {30.0f, 0.0f, 0.0f}, 1.0f));
+        RenderedFrame withFarLight = render(scene);
+        ASSERT_GT(sum(lit.image), 20.0f) << "the in-range light must light the sphere";
+        EXPECT_LE(maxAbsDifference(lit.image, withFarLight.image), hdr ? 1e-4f : 0.0f);
+    }
+}
+
+// In HDR the light buffer sums the lights: A + B = (A) + (B) − (no light) up to half rounding.
+TEST_F(DeferredRenderTest, LightsAddUpInTheHdrLightBuffer) {
+    scene::Scene none = oneSphere(true);
+    scene::Scene a = none, b = none, both = none;
+    scene::Light point = light(scene::LightType::Point, {-1.0f, 1.0f, -1.0f}, 1.0f);
+    scene::Light spot = light(scene::LightType::Spot, {0.5f, 1.5f, -1.5f}, 2.0f);
+    spot.transform.rotationDegrees = {35.0f, -15.0f, 0.0f};
+    spot.spotAngle = 60.0f;
+    a.lights = {point};
+    b.lights = {spot};
+    both.lights = {point, spot};
+    Image imageNone = render(none).image, imageA = render(a).image, imageB = render(b).image;
+    Image imageBoth = render(both).image;
+    ASSERT_GT(sum(imageA), sum(imageNone) + 10.0f);
+    ASSERT_GT(sum(imageB), sum(imageNone) + 10.0f);
+    float worst = 0;
+    for (size_t i = 0; i < imageBoth.floats().size(); ++i) {
+        float expected = imageA.floats()[i] + imageB.floats()[i] - imageNone.floats()[i];
+        worst = std::max(
+            worst, std::abs(imageBoth.floats()[i] - expected) / std::max(1.0f, std::abs(expected)));
+    }
+    EXPECT_LT(worst, 2e-3f);
+}
+
+// LDR stores exp2(−c) in 8 bits and decodes it: below saturation it agrees with HDR to a few LSB.
+TEST_F(DeferredRenderTest, LdrAgreesWithHdrUpToTheEncoding) {
+    scene::Scene hdr = oneSphere(true);
+    hdr.lights.push_back(light(scene::LightType::Directional, {}, 0.6f));
+    scene::Scene ldr = hdr;
+    ldr.camera.hdr = false;
+    Image imageHdr = render(hdr).image, imageLdr = render(ldr).image;
+    ASSERT_TRUE(imageHdr.isFloat());
+    ASSERT_FALSE(imageLdr.isFloat());
+    ASSERT_GT(sum(imageLdr), 20.0f);
+    EXPECT_LE(maxAbsDifference(imageHdr.toRgba8(Tonemap::Clamp), imageLdr), 4.0f / 255.0f);
+}
+
+TEST_F(DeferredRenderTest, AnObjectWithoutADeferredPassIsAClearError) {
+    scene::Scene scene = oneSphere(true);
+    scene.objects[0].material.shader = "varc/SimpleDiffuse";
+    auto frame = mRenderer->render(scene);
+    ASSERT_FALSE(frame);
+    EXPECT_NE(frame.error().detail.find("no Deferred pass"), std::string::npos)
+        << frame.error().detail;
+}
+
+// The deferred tolerances (6 LSB in LDR) still catch a real error: the reference of the scene
+// without its point light, or with a directional light turned 10 degrees, must not pass.
+TEST_F(DeferredRenderTest, TheToleranceCatchesAMissingOrMovedLight) {
+    for (const char* name : {"point-ldr.json", "point-hdr.json"}) {
+        SCOPED_TRACE(name);
+        auto scene = scene::loadScene(std::string(VARC_TEST_SCENE_DIR "/deferred/") + name);
+        ASSERT_TRUE(scene) << scene.error().detail;
+        RenderedFrame frame = render(*scene);
+        reference::Tolerance tolerance = reference::toleranceFor(*scene);
+        scene::Scene missing = *scene;
+        missing.lights.pop_back();
+        scene::Scene moved = *scene;
+        moved.lights.front().transform.rotationDegrees.x += 10.0f;
+        for (const scene::Scene* wrong : {&missing, &moved}) {
+            auto expected = reference::renderDeferredReference(*wrong);
+            ASSERT_TRUE(expected) << expected.error().detail;
+            EXPECT_FALSE(
+                reference::compareImages(frame.image, expected->color, expected->classes, tolerance)
+                    .passed);
+        }
+    }
+}
+
+// Every deferred validation scene (HDR and LDR; directional, point, spot; with and without
+// cookies) matches the CPU reference within the issue's tolerances.
+TEST_F(DeferredRenderTest, ValidationScenesMatchTheCpuReference) {
+    std::vector<std::string> scenes;
+    for (const auto& entry : std::filesystem::directory_iterator(VARC_TEST_SCENE_DIR "/deferred")) {
+        if (entry.path().extension() == ".json") scenes.push_back(entry.path().string());
+    }
+    ASSERT_GE(scenes.size(), 10u);
+    for (const std::string& path : scenes) {
+        SCOPED_TRACE(path);
+        auto scene = scene::loadScene(path);
+        ASSERT_TRUE(scene) << scene.error().detail;
+        RenderedFrame frame = render(*scene);
+        auto expected = reference::renderDeferredReference(*scene);
+        ASSERT_TRUE(expected) << expected.error().detail;
+        reference::CompareResult result = reference::compareImages(
+            frame.image, expected->color, expected->classes, reference::toleranceFor(*scene));
+        EXPECT_TRUE(result.passed) << result.message;
+        EXPECT_GT(result.interiorPixels, 100u) << "the scene must show lit objects";
+    }
+}
+
+}  // namespace
+}  // namespace varc::runtime
