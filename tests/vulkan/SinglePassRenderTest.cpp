@@ -199,6 +199,33 @@ TEST_F(SinglePassRenderTest, AllSharingObjectsFormOneInstancedDraw) {
     EXPECT_EQ(frame.draws, 2u);
 }
 
+// Instanced arrays hold 500 instances (UNITY_MAX_INSTANCE_COUNT): 501 objects that could share a
+// batch take two draws.
+TEST_F(SinglePassRenderTest, BatchesSplitAtTheInstancedArrayLength) {
+    scene::Scene scene = loadSinglePassScene("one-directional");
+    scene.camera.width = scene.camera.height = 32;
+    scene::Object sphere = scene.objects[1];
+    sphere.transform.scale = glm::vec3(0.05f);
+    scene.objects.clear();
+    for (int i = 0; i < 501; ++i) {
+        sphere.transform.position = {static_cast<float>(i % 23) * 0.1f - 1.1f, static_cast<float>(i / 23) * 0.1f - 1.1f, 0};
+        scene.objects.push_back(sphere);
+    }
+    RenderedFrame frame = render(scene);
+    EXPECT_EQ(frame.draws, 2u);
+}
+
+// Only the instanced properties (_Color) may differ inside a batch: any other material property
+// splits it, as does a different mesh.
+TEST_F(SinglePassRenderTest, OtherPropertiesAndMeshesSplitBatches) {
+    scene::Scene scene = loadSinglePassScene("instanced-hdr");
+    ASSERT_EQ(render(scene).draws, 2u);
+    scene.objects[1].material.properties["_Unused"] = 1.0f;
+    EXPECT_EQ(render(scene).draws, 3u);
+    scene.objects[2].mesh = scene::MeshKind::Sphere;
+    EXPECT_EQ(render(scene).draws, 4u);
+}
+
 TEST_F(SinglePassRenderTest, UnknownShaderIsAClearError) {
     scene::Scene scene = loadSinglePassScene("one-directional");
     scene.objects[1].material.shader = "Custom/Missing";
