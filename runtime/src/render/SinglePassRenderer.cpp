@@ -9,6 +9,7 @@
 #include <set>
 #include <tuple>
 
+#include "render/GpuMesh.h"
 #include "varc/runtime/PassView.h"
 #include "varc/runtime/ShaderView.h"
 #include "varc/runtime/render/BuiltinTextures.h"
@@ -28,29 +29,6 @@ namespace {
 
 constexpr const char* kInstancingKeyword = "INSTANCING_ON";
 constexpr const char* kArraySuffix = "Array";
-
-struct MeshBuffers {
-    Buffer vertices;
-    Buffer indices;
-    uint32_t indexCount = 0;
-};
-
-Result<MeshBuffers> uploadMeshBuffers(VulkanContext& context, const scene::Mesh& mesh) {
-    std::vector<MeshVertex> vertices(mesh.positions.size());
-    for (size_t i = 0; i < vertices.size(); ++i) {
-        const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
-        const glm::vec4& t = mesh.tangents[i];
-        vertices[i] = MeshVertex{{p.x, p.y, p.z}, {n.x, n.y, n.z}, {t.x, t.y, t.z, t.w},
-                                 {mesh.uvs[i].x, mesh.uvs[i].y}, {1.0f, 1.0f, 1.0f, 1.0f}};
-    }
-    auto vertexBuffer = Buffer::createWithData(context, std::as_bytes(std::span(vertices)),
-                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "single-pass mesh vertices");
-    if (!vertexBuffer) return vertexBuffer.error();
-    auto indexBuffer = Buffer::createWithData(context, std::as_bytes(std::span(mesh.indices)),
-                                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "single-pass mesh indices");
-    if (!indexBuffer) return indexBuffer.error();
-    return MeshBuffers{std::move(*vertexBuffer), std::move(*indexBuffer), static_cast<uint32_t>(mesh.indices.size())};
-}
 
 // What an instanced variant reads per instance: the names P of its `PArray` members other than
 // the object matrices, and how many instances its arrays hold (the smallest array).
@@ -133,7 +111,7 @@ ShaderValues singleObjectValues(const scene::Object& object) {
 
 struct RecordedDraw {
     const VariantPipeline* pipeline = nullptr;
-    const MeshBuffers* mesh = nullptr;
+    const GpuMesh* mesh = nullptr;
     uint32_t instances = 1;
     std::array<const ShaderValues*, 5> layers{};  // instances/object, draw lights, material, light buffer, camera
     TextureLookup textures;
@@ -146,7 +124,7 @@ struct SinglePassRenderer::State {
     std::vector<const Pack*> packs;
     std::optional<BuiltinTextures> textures;
     std::optional<DrawResources> resources;
-    std::map<scene::MeshKind, MeshBuffers> meshes;
+    std::map<scene::MeshKind, GpuMesh> meshes;
     std::map<std::tuple<uint32_t, uint32_t, bool, std::array<float, 4>>, RenderTarget> targets;
     struct CachedPipeline {
         const Pack* pack;
@@ -298,7 +276,7 @@ Result<SinglePassRenderer> SinglePassRenderer::create(VulkanContext& context, st
     if (!resources) return resources.error();
     state->resources.emplace(std::move(*resources));
     for (scene::MeshKind kind : {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
-        auto mesh = uploadMeshBuffers(context, scene::builtinMesh(kind));
+        auto mesh = uploadMesh(context, scene::builtinMesh(kind));
         if (!mesh) return mesh.error();
         state->meshes.emplace(kind, std::move(*mesh));
     }
