@@ -123,6 +123,7 @@ void addRender(CLI::App& app, Options& options) {
     cmd->add_option("-o,--output", options.outputPath, "PNG to write")->required();
     cmd->add_option("--reference", options.referencePath, "Also render the CPU reference to this PNG");
     cmd->add_option("--diff", options.diffPath, "Also compare and write the diff image here");
+    cmd->add_option("--pipeline-cache", options.pipelineCachePath, "VkPipelineCache file to load and save");
     cmd->callback([&options] { options.command = Command::Render; });
 }
 
@@ -131,6 +132,7 @@ void addValidate(CLI::App& app, Options& options) {
     cmd->add_option("--pack", options.packPaths, "Pack files (repeat)")->required();
     cmd->add_option("--scenes", options.scenesDir, "Scene folder (default tests/scenes/forward)");
     cmd->add_option("--out", options.outputPath, "Folder for the PNGs (default validate-out)");
+    cmd->add_option("--pipeline-cache", options.pipelineCachePath, "VkPipelineCache file to load and save");
     cmd->callback([&options] { options.command = Command::Validate; });
 }
 

@@ -16,6 +16,7 @@
 #include "varc/runtime/Pack.h"
 #include "varc/runtime/render/DeferredRenderer.h"
 #include "varc/runtime/render/ForwardRenderer.h"
+#include "varc/runtime/render/PipelineCacheFile.h"
 #include "varc/runtime/render/SinglePassRenderer.h"
 #include "varc/runtime/vulkan/Png.h"
 #include "varc/runtime/vulkan/VulkanContext.h"
@@ -45,7 +46,8 @@ struct SceneRenderers {
     runtime::SinglePassRenderer singlePass;
     runtime::DeferredRenderer deferred;
 
-    static Result<SceneRenderers> create(runtime::VulkanContext& context, const std::vector<runtime::Pack>& packs) {
+    static Result<SceneRenderers> create(runtime::VulkanContext& context, const std::vector<runtime::Pack>& packs,
+                                         VkPipelineCache cache) {
         std::vector<const runtime::Pack*> pointers;
         for (const runtime::Pack& pack : packs) pointers.push_back(&pack);
         auto forward = runtime::ForwardRenderer::create(context, pointers);
@@ -54,6 +56,9 @@ struct SceneRenderers {
         if (!singlePass) return singlePass.error();
         auto deferred = runtime::DeferredRenderer::create(context, pointers);
         if (!deferred) return deferred.error();
+        forward->usePipelineCache(cache);
+        singlePass->usePipelineCache(cache);
+        deferred->usePipelineCache(cache);
         return SceneRenderers{std::move(*forward), std::move(*singlePass), std::move(*deferred)};
     }
 
@@ -139,6 +144,28 @@ std::optional<runtime::VulkanContext> makeContext(std::ostream& err) {
     return std::move(*context);
 }
 
+// The --pipeline-cache file, when asked for; a file for another device or driver is reported
+// and replaced, never an error.
+std::optional<runtime::PipelineCacheFile> openPipelineCache(const Options& options, runtime::VulkanContext& context,
+                                                            std::ostream& err) {
+    if (options.pipelineCachePath.empty()) return std::nullopt;
+    auto cache = runtime::PipelineCacheFile::open(context, options.pipelineCachePath);
+    if (!cache) {
+        err << "varc: warning: pipeline cache not used: " << cache.error().detail << "\n";
+        return std::nullopt;
+    }
+    if (!cache->rejectedReason().empty()) {
+        err << "varc: note: " << options.pipelineCachePath << " not used (" << cache->rejectedReason()
+            << "); starting a new cache\n";
+    }
+    return std::move(*cache);
+}
+
+void savePipelineCache(const std::optional<runtime::PipelineCacheFile>& cache, std::ostream& err) {
+    if (!cache) return;
+    if (Status saved = cache->save(); !saved) err << "varc: warning: " << saved.error().detail << "\n";
+}
+
 size_t distinctCount(const std::vector<std::string>& names) {
     return std::set<std::string>(names.begin(), names.end()).size();
 }
@@ -150,7 +177,8 @@ int runRender(const Options& options, std::ostream& out, std::ostream& err) {
     if (!packs) return kExitUsage;
     auto context = makeContext(err);
     if (!context) return kExitUsage;
-    auto renderer = SceneRenderers::create(*context, *packs);
+    std::optional<runtime::PipelineCacheFile> cache = openPipelineCache(options, *context, err);
+    auto renderer = SceneRenderers::create(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
     if (!renderer) {
         err << "varc: error: " << renderer.error().detail << "\n";
         return kExitFailure;
@@ -159,6 +187,7 @@ int runRender(const Options& options, std::ostream& out, std::ostream& err) {
     SceneOutcome outcome = renderScene(*renderer, options.scenePath, compare, options.outputPath,
                                        options.referencePath, options.diffPath);
     if (!outcome.error.empty()) err << "varc: error: " << outcome.error << "\n";
+    savePipelineCache(cache, err);
     if (!outcome.ok) return kExitFailure;
     out << "rendered " << options.scenePath << ": " << outcome.frame.draws << " draws, "
         << distinctCount(outcome.frame.variants) << " variants -> " << options.outputPath << "\n";
@@ -192,7 +221,8 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     if (!packs) return kExitUsage;
     auto context = makeContext(err);
     if (!context) return kExitUsage;
-    auto renderer = SceneRenderers::create(*context, *packs);
+    std::optional<runtime::PipelineCacheFile> cache = openPipelineCache(options, *context, err);
+    auto renderer = SceneRenderers::create(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
     if (!renderer) {
         err << "varc: error: " << renderer.error().detail << "\n";
         return kExitFailure;
@@ -225,6 +255,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     }
     out << scenes.size() - static_cast<size_t>(failures) << "/" << scenes.size() << " scenes match the reference; PNGs in "
         << outDir << "\n";
+    savePipelineCache(cache, err);
     // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.
     if (context->validationMessageCount() > 0) {
         err << "varc: error: Vulkan validation reported " << context->validationMessageCount() << " messages:\n"

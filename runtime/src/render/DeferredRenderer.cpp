@@ -63,6 +63,7 @@ Result<GpuMesh> uploadQuad(VulkanContext& context, const scene::CameraMatrices& 
 }  // namespace
 
 struct DeferredRenderer::State {
+    VkPipelineCache pipelineCache = VK_NULL_HANDLE;
     VulkanContext* context = nullptr;
     std::vector<const Pack*> packs;
     std::string lightShader;
@@ -129,7 +130,7 @@ Result<const VariantPipeline*> DeferredRenderer::State::pipeline(
             pipelineTarget = {target.decodePass(), true, 1};
             break;
     }
-    auto created = VariantPipeline::create(*context, variant, state, pipelineTarget);
+    auto created = VariantPipeline::create(*context, variant, state, pipelineTarget, pipelineCache);
     if (!created) return created.error();
     pipelines.push_back({pack, name, state, phase, hdr, std::move(*created)});
     return &pipelines.back().pipeline;
@@ -401,5 +402,7 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     frame.image = std::move(*image);
     return frame;
 }
+
+void DeferredRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }
 
 }  // namespace varc::runtime

@@ -37,6 +37,7 @@ struct Draw {
 }  // namespace
 
 struct ForwardRenderer::State {
+    VkPipelineCache pipelineCache = VK_NULL_HANDLE;
     VulkanContext* context = nullptr;
     std::vector<const Pack*> packs;
     std::optional<BuiltinTextures> textures;
@@ -92,7 +93,7 @@ Result<const VariantPipeline*> ForwardRenderer::State::pipeline(const Pack* pack
             return &cached.pipeline;
         }
     }
-    auto created = VariantPipeline::create(*context, variant, state, {target.renderPass(LoadOp::Clear), true, 1});
+    auto created = VariantPipeline::create(*context, variant, state, {target.renderPass(LoadOp::Clear), true, 1}, pipelineCache);
     if (!created) return created.error();
     pipelines.push_back({pack, name, state, hdr, std::move(*created)});
     return &pipelines.back().pipeline;
@@ -233,5 +234,7 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
     frame.image = std::move(*image);
     return frame;
 }
+
+void ForwardRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }
 
 }  // namespace varc::runtime

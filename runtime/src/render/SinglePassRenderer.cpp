@@ -120,6 +120,7 @@ struct RecordedDraw {
 }  // namespace
 
 struct SinglePassRenderer::State {
+    VkPipelineCache pipelineCache = VK_NULL_HANDLE;
     VulkanContext* context = nullptr;
     std::vector<const Pack*> packs;
     std::optional<BuiltinTextures> textures;
@@ -175,7 +176,7 @@ Result<const VariantPipeline*> SinglePassRenderer::State::pipeline(const Pack* p
             return &cached.pipeline;
         }
     }
-    auto created = VariantPipeline::create(*context, variant, state, {target.renderPass(LoadOp::Clear), true, 1});
+    auto created = VariantPipeline::create(*context, variant, state, {target.renderPass(LoadOp::Clear), true, 1}, pipelineCache);
     if (!created) return created.error();
     pipelines.push_back({pack, name, state, hdr, std::move(*created)});
     return &pipelines.back().pipeline;
@@ -335,5 +336,7 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene, cons
     frame.image = std::move(*image);
     return frame;
 }
+
+void SinglePassRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }
 
 }  // namespace varc::runtime

@@ -51,6 +51,7 @@ struct Options {
     std::string referencePath;             // render --reference ref.png
     std::string diffPath;                  // render --diff d.png
     std::string scenesDir;                 // validate --scenes DIR
+    std::string pipelineCachePath;         // render/validate --pipeline-cache FILE
 };
 
 // Exit codes shared by every subcommand.

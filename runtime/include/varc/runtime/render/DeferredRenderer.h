@@ -33,6 +33,10 @@ public:
     // Errors name the object or light: unknown shader, missing pass or variant, Vulkan failures.
     Result<RenderedFrame> render(const scene::Scene& scene);
 
+    // Creates every later pipeline through |cache| (e.g. PipelineCacheFile::handle()), which must
+    // outlive the renderer; VK_NULL_HANDLE (the default) uses none.
+    void usePipelineCache(VkPipelineCache cache);
+
     DeferredRenderer(DeferredRenderer&&) noexcept;
     DeferredRenderer& operator=(DeferredRenderer&&) noexcept;
     ~DeferredRenderer();

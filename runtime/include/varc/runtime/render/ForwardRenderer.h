@@ -36,6 +36,10 @@ public:
     // pipeline or Vulkan failures.
     Result<RenderedFrame> render(const scene::Scene& scene);
 
+    // Creates every later pipeline through |cache| (e.g. PipelineCacheFile::handle()), which must
+    // outlive the renderer; VK_NULL_HANDLE (the default) uses none.
+    void usePipelineCache(VkPipelineCache cache);
+
     ForwardRenderer(ForwardRenderer&&) noexcept;
     ForwardRenderer& operator=(ForwardRenderer&&) noexcept;
     ~ForwardRenderer();

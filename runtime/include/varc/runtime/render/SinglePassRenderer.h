@@ -32,6 +32,10 @@ public:
     // without passes, no variant, pipeline or Vulkan failures.
     Result<RenderedFrame> render(const scene::Scene& scene, const SinglePassOptions& options = {});
 
+    // Creates every later pipeline through |cache| (e.g. PipelineCacheFile::handle()), which must
+    // outlive the renderer; VK_NULL_HANDLE (the default) uses none.
+    void usePipelineCache(VkPipelineCache cache);
+
     SinglePassRenderer(SinglePassRenderer&&) noexcept;
     SinglePassRenderer& operator=(SinglePassRenderer&&) noexcept;
     ~SinglePassRenderer();
