@@ -57,6 +57,11 @@ pack_args=(--pack "$out/library.svpack")
 for pack in "${fixture_packs[@]}"; do pack_args+=(--pack "$pack"); done
 validate_status=0
 "$varc" validate "${pack_args[@]}" --scenes tests/scenes/forward --out "$out/scenes" || validate_status=$?
+
+echo
+echo "== varc validate: the deferred scenes (G-buffer, per-light passes, HDR and LDR encoding) =="
+"$varc" validate "${pack_args[@]}" --scenes tests/scenes/deferred --out "$out/deferred" || validate_status=$?
+
 echo
 echo "== varc validate: the single-pass forward scenes (light buffer, per-object light lists, instancing) =="
 "$varc" validate "${pack_args[@]}" --scenes tests/scenes/single_pass --out "$out/single-pass" || validate_status=$?
@@ -68,5 +73,6 @@ echo "lock file:        $out/fixtures.lock"
 echo "library pack:     $out/library.svpack"
 for pack in "${fixture_packs[@]}"; do echo "fixture pack:     $pack"; done
 echo "rendered scenes:  $out/scenes/<scene>.png, .reference.png (CPU), .diff.png"
+echo "deferred:         $out/deferred/<scene>.png, .reference.png, .diff.png"
 echo "single-pass:      $out/single-pass/<scene>.png, .reference.png, .diff.png"
 exit $validate_status
