@@ -7,7 +7,6 @@
 //     parallel build within 1.5x of it.
 // Run from anywhere: ./build/bench/varc_bench_build. Results go in docs/PERFORMANCE.md.
 #include <benchmark/benchmark.h>
-
 #include <unistd.h>
 
 #include <cstdio>
@@ -38,7 +37,8 @@ struct Inputs {
 };
 
 std::vector<std::string> shaderFiles() {
-    std::vector<std::string> roots = {VARC_SOURCE_DIR "/../shared/fixtures", VARC_SOURCE_DIR "/shaders"};
+    std::vector<std::string> roots = {VARC_SOURCE_DIR "/../shared/fixtures",
+                                      VARC_SOURCE_DIR "/shaders"};
     std::vector<std::string> files;
     for (const std::string& root : roots) {
         if (!std::filesystem::is_directory(root)) continue;
@@ -57,7 +57,8 @@ Inputs& inputs() {
         options.builtinDir = VARC_SOURCE_DIR "/shaders/builtin";
         DiagnosticList diagnostics;
         for (const std::string& file : shaderFiles()) {
-            auto shader = compiler::loadShader(file, in->fileSystem, in->sourceMap, options, diagnostics);
+            auto shader =
+                compiler::loadShader(file, in->fileSystem, in->sourceMap, options, diagnostics);
             if (!shader) continue;
             in->variants += shader->variantCount();
             in->shaders.push_back(std::move(*shader));
@@ -75,7 +76,8 @@ void BM_VarcBuild(benchmark::State& state) {
     options.jobs = static_cast<unsigned>(state.range(0));
     // Second argument: 1 = -O (SPIRV-Tools performance passes, the default), 0 = -O0 (no
     // optimiser: what glslangValidator -V produces, the like-for-like comparison).
-    options.optimization = state.range(1) ? compiler::OptimizationLevel::Performance : compiler::OptimizationLevel::None;
+    options.optimization = state.range(1) ? compiler::OptimizationLevel::Performance
+                                          : compiler::OptimizationLevel::None;
     std::optional<compiler::BuildOutput> output;
     for (auto _ : state) {
         DiagnosticList diagnostics;
@@ -100,19 +102,23 @@ BENCHMARK(BM_VarcBuild)
 
 // One glslangValidator process per (pass, variant, stage), on the same spliced source and
 // predefined macros varc uses: the start-up-bound baseline the issue measures (~110 ms each).
-bool compileWithValidator(const compiler::LoadedPass& pass, const std::vector<std::string>& keywords,
-                          uint32_t stage, const std::string& entry, const std::string& dir) {
+bool compileWithValidator(const compiler::LoadedPass& pass,
+                          const std::vector<std::string>& keywords, uint32_t stage,
+                          const std::string& entry, const std::string& dir) {
     bool glsl = pass.pass->program->language == shaderlab::ProgramLanguage::Glsl;
     compiler::DefineContext context{pass.pass->lightMode(), pass.keywords.target,
                                     pass.pass->program->language, stage, keywords};
     std::string source = compiler::makePreamble(context);
-    if (glsl) source = "#version 140\n" + source + compiler::legacyGlslPreamble(pass.source.text, stage);
+    if (glsl)
+        source = "#version 140\n" + source + compiler::legacyGlslPreamble(pass.source.text, stage);
     source += pass.source.text;
     std::string path = dir + (glsl ? "/program.glsl" : "/program.hlsl");
     std::ofstream(path) << source;
     std::string stageName = stage == variants::kStageVertex ? "vert" : "frag";
-    std::string command = "glslangValidator -V --quiet --auto-map-bindings --auto-map-locations "
-                          "--target-env vulkan1.0 -S " + stageName + " ";
+    std::string command =
+        "glslangValidator -V --quiet --auto-map-bindings --auto-map-locations "
+        "--target-env vulkan1.0 -S " +
+        stageName + " ";
     command += glsl ? "-R " : "-D --hlsl-dx9-compatible -e " + entry + " ";
     command += path + " -o " + dir + "/program.spv > /dev/null 2>&1";
     return std::system(command.c_str()) == 0;
@@ -121,7 +127,8 @@ bool compileWithValidator(const compiler::LoadedPass& pass, const std::vector<st
 void BM_GlslangValidatorPerVariant(benchmark::State& state) {
     Inputs& in = inputs();
     if (!in.ok) return state.SkipWithError("inputs failed to load");
-    std::string dir = std::filesystem::temp_directory_path() / ("varc-bench-" + std::to_string(::getpid()));
+    std::string dir =
+        std::filesystem::temp_directory_path() / ("varc-bench-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     size_t processes = 0, failures = 0;
     for (auto _ : state) {
@@ -130,11 +137,15 @@ void BM_GlslangValidatorPerVariant(benchmark::State& state) {
                 bool glsl = pass.pass->program->language == shaderlab::ProgramLanguage::Glsl;
                 pass.space->forEach([&](const variants::VariantKey& key) {
                     std::vector<std::string> keywords = pass.space->table().namesOf(key);
-                    for (uint32_t stage : {uint32_t(variants::kStageVertex), uint32_t(variants::kStageFragment)}) {
-                        const std::string& entry = stage == variants::kStageVertex ? pass.keywords.vertexEntry
-                                                                                    : pass.keywords.fragmentEntry;
+                    for (uint32_t stage :
+                         {uint32_t(variants::kStageVertex), uint32_t(variants::kStageFragment)}) {
+                        const std::string& entry = stage == variants::kStageVertex
+                                                       ? pass.keywords.vertexEntry
+                                                       : pass.keywords.fragmentEntry;
                         ++processes;
-                        if (!compileWithValidator(pass, keywords, stage, glsl ? "main" : entry, dir)) ++failures;
+                        if (!compileWithValidator(pass, keywords, stage, glsl ? "main" : entry,
+                                                  dir))
+                            ++failures;
                     }
                     return true;
                 });
@@ -146,7 +157,10 @@ void BM_GlslangValidatorPerVariant(benchmark::State& state) {
     state.counters["failures"] = static_cast<double>(failures);
     if (failures) state.SkipWithError("some programs failed under glslangValidator");
 }
-BENCHMARK(BM_GlslangValidatorPerVariant)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_GlslangValidatorPerVariant)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace varc

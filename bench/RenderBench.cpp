@@ -65,8 +65,9 @@ void BM_PipelinePlusFirstDraw(benchmark::State& state) {
         for (size_t p = 0; p < shader->passCount(); ++p) {
             PassView pass = *shader->pass(p);
             for (size_t v = 0; v < pass.variantCount(); ++v) {
-                auto pipeline = VariantPipeline::create(*context, pass.variant(v), resolveRenderState(pass.renderState(), none),
-                                                        {target->renderPass(LoadOp::Clear), true, 1});
+                auto pipeline = VariantPipeline::create(
+                    *context, pass.variant(v), resolveRenderState(pass.renderState(), none),
+                    {target->renderPass(LoadOp::Clear), true, 1});
                 if (!pipeline) return state.SkipWithError(pipeline.error().detail.c_str());
                 Status ok = Ok{};
                 Status drawn = context->submitAndWait([&](VkCommandBuffer commands) {
@@ -75,10 +76,12 @@ void BM_PipelinePlusFirstDraw(benchmark::State& state) {
                     VkRect2D area = target->area();
                     vkCmdSetViewport(commands, 0, 1, &viewport);
                     vkCmdSetScissor(commands, 0, 1, &area);
-                    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->pipeline());
-                    ok = resources->bind(commands, *pipeline, layers, [](std::string_view, pack::ResourceDim) {
-                        return std::optional<TextureBinding>();
-                    });
+                    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                      pipeline->pipeline());
+                    ok = resources->bind(commands, *pipeline, layers,
+                                         [](std::string_view, pack::ResourceDim) {
+                                             return std::optional<TextureBinding>();
+                                         });
                     if (ok) vkCmdDraw(commands, 3, 1, 0, 0);
                     target->end(commands);
                 });
@@ -88,16 +91,25 @@ void BM_PipelinePlusFirstDraw(benchmark::State& state) {
             }
         }
     }
-    state.counters["variants"] = static_cast<double>(variants) / static_cast<double>(state.iterations());
-    state.counters["per_variant_ms"] = benchmark::Counter(static_cast<double>(variants) * 1e-3,
-                                                          benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["variants"] =
+        static_cast<double>(variants) / static_cast<double>(state.iterations());
+    state.counters["per_variant_ms"] =
+        benchmark::Counter(static_cast<double>(variants) * 1e-3,
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
-BENCHMARK(BM_PipelinePlusFirstDraw)->ArgName("warm")->Arg(0)->Arg(1)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PipelinePlusFirstDraw)
+    ->ArgName("warm")
+    ->Arg(0)
+    ->Arg(1)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // One forward validation scene per run, pipelines already created: the steady frame time.
 void BM_ForwardSceneFrame(benchmark::State& state) {
     std::vector<std::string> scenes;
-    for (const auto& entry : std::filesystem::directory_iterator(VARC_SOURCE_DIR "/tests/scenes/forward")) {
+    for (const auto& entry :
+         std::filesystem::directory_iterator(VARC_SOURCE_DIR "/tests/scenes/forward")) {
         if (entry.path().extension() == ".json") scenes.push_back(entry.path().string());
     }
     std::sort(scenes.begin(), scenes.end());
@@ -111,7 +123,8 @@ void BM_ForwardSceneFrame(benchmark::State& state) {
     auto renderer = ForwardRenderer::create(*context, {&*pack});
     auto scene = scene::loadScene(scenes[index]);
     if (!renderer || !scene) return state.SkipWithError("renderer or scene failed");
-    if (auto warm = renderer->render(*scene); !warm) return state.SkipWithError(warm.error().detail.c_str());
+    if (auto warm = renderer->render(*scene); !warm)
+        return state.SkipWithError(warm.error().detail.c_str());
     for (auto _ : state) {
         auto frame = renderer->render(*scene);
         if (!frame) return state.SkipWithError(frame.error().detail.c_str());

@@ -5,10 +5,9 @@
 // ShadeSH9, UNITY_LIGHT_ATTENUATION per light type, and UNITY_BRDF_PBS.
 #include <gtest/gtest.h>
 
-#include <glm/gtc/constants.hpp>
-
 #include <cmath>
 #include <functional>
+#include <glm/gtc/constants.hpp>
 
 #include "VulkanTestSupport.h"
 #include "varc/reference/Shading.h"
@@ -40,13 +39,18 @@ glm::vec3 worldPosition(glm::vec2 uv) { return glm::mix(kBoxMin, kBoxMax, glm::v
 glm::vec3 sphereNormal(glm::vec2 uv) {
     float longitude = uv.x * glm::two_pi<float>();
     float latitude = (uv.y - 0.5f) * glm::pi<float>();
-    return {std::cos(latitude) * std::cos(longitude), std::sin(latitude), std::cos(latitude) * std::sin(longitude)};
+    return {std::cos(latitude) * std::cos(longitude), std::sin(latitude),
+            std::cos(latitude) * std::sin(longitude)};
 }
 
 // A quad over the whole target whose uv runs 0..1 with the framebuffer's x and y.
 std::vector<MeshVertex> fullQuad() {
     auto vertex = [](float x, float y) {
-        return MeshVertex{{x, y, 0.5f}, {0, 0, 1}, {1, 0, 0, 1}, {x * 0.5f + 0.5f, y * 0.5f + 0.5f}, {1, 1, 1, 1}};
+        return MeshVertex{{x, y, 0.5f},
+                          {0, 0, 1},
+                          {1, 0, 0, 1},
+                          {x * 0.5f + 0.5f, y * 0.5f + 0.5f},
+                          {1, 1, 1, 1}};
     };
     MeshVertex a = vertex(-1, -1), b = vertex(1, -1), c = vertex(1, 1), d = vertex(-1, 1);
     return {a, b, c, a, c, d};
@@ -73,7 +77,8 @@ protected:
         ASSERT_TRUE(resources) << resources.error().detail;
         mResources.emplace(std::move(*resources));
         std::vector<MeshVertex> quad = fullQuad();
-        auto vertices = Buffer::createWithData(context(), std::as_bytes(std::span(quad)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        auto vertices = Buffer::createWithData(context(), std::as_bytes(std::span(quad)),
+                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
         ASSERT_TRUE(vertices) << vertices.error().detail;
         mQuad.emplace(std::move(*vertices));
     }
@@ -86,23 +91,28 @@ protected:
     }
 
     // Draws the variant with |keywords| and returns the float image.
-    Image run(const std::vector<std::string>& keywords, const ShaderValues& values, const scene::Light* light) {
+    Image run(const std::vector<std::string>& keywords, const ShaderValues& values,
+              const scene::Light* light) {
         PassView pass = *mPack->findShader("Test/BuiltinHelpers")->pass(0);
         auto variant = pass.lookup(keywords, variants::SelectionPolicy::Exact);
         EXPECT_TRUE(variant) << variant.error().detail;
         if (!variant) return {};
-        auto pipeline = VariantPipeline::create(context(), *variant, resolveRenderState(pass.renderState(), values),
+        auto pipeline = VariantPipeline::create(context(), *variant,
+                                                resolveRenderState(pass.renderState(), values),
                                                 {mTarget->renderPass(LoadOp::Clear), true, 1});
         EXPECT_TRUE(pipeline) << pipeline.error().detail;
         if (!pipeline) return {};
         const BuiltinTextures& builtin = *mTextures;
         scene::LightType type = light ? light->type : scene::LightType::Directional;
         bool cookie = light && light->cookie != "none";
-        TextureLookup textures = [&builtin, type, cookie](std::string_view name, pack::ResourceDim dim) {
+        TextureLookup textures = [&builtin, type, cookie](std::string_view name,
+                                                          pack::ResourceDim dim) {
             if (name == "_LightTexture0") {
                 if (type == scene::LightType::Spot) return std::optional(builtin.spotCookie());
-                if (type == scene::LightType::Point) return std::optional(cookie ? builtin.pointCookie() : builtin.falloff());
-                return cookie ? std::optional(builtin.directionalCookie()) : builtin.named("white", dim);
+                if (type == scene::LightType::Point)
+                    return std::optional(cookie ? builtin.pointCookie() : builtin.falloff());
+                return cookie ? std::optional(builtin.directionalCookie())
+                              : builtin.named("white", dim);
             }
             if (name == "_LightTextureB0") return std::optional(builtin.falloff());
             return builtin.named("white", dim);
@@ -133,8 +143,8 @@ protected:
 
     // Compares every pixel's rgb (or only r when |channels| is 1) with |expected|(uv) within
     // |absolute| + |relative|·|expected|; reports the worst pixel.
-    void expectMatches(const Image& image, const std::function<glm::vec3(glm::vec2)>& expected, float absolute,
-                       float relative, int channels = 3) {
+    void expectMatches(const Image& image, const std::function<glm::vec3(glm::vec2)>& expected,
+                       float absolute, float relative, int channels = 3) {
         ASSERT_EQ(image.width(), kSize);
         float worst = 0;
         std::string where;
@@ -144,19 +154,22 @@ protected:
                 glm::vec3 want = expected(pixelUv(x, y));
                 std::array<float, 4> got = image.pixelFloat(x, y);
                 for (int c = 0; c < channels; ++c) {
-                    float error = std::abs(got[static_cast<size_t>(c)] - want[c]) / (absolute + relative * std::abs(want[c]));
+                    float error = std::abs(got[static_cast<size_t>(c)] - want[c]) /
+                                  (absolute + relative * std::abs(want[c]));
                     largest = std::max(largest, std::abs(want[c]));
                     if (error > worst) {
                         worst = error;
-                        where = "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") channel " +
-                                std::to_string(c) + ": GPU " + std::to_string(got[static_cast<size_t>(c)]) + ", CPU " +
+                        where = "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                ") channel " + std::to_string(c) + ": GPU " +
+                                std::to_string(got[static_cast<size_t>(c)]) + ", CPU " +
                                 std::to_string(want[c]);
                     }
                 }
             }
         }
         EXPECT_LE(worst, 1.0f) << "worst " << where;
-        EXPECT_GT(largest, 0.05f) << "the expected values are all near zero: the test would prove nothing";
+        EXPECT_GT(largest, 0.05f)
+            << "the expected values are all near zero: the test would prove nothing";
     }
 
     ShaderValues boxValues() const {
@@ -198,11 +211,12 @@ TEST_F(BuiltinHelpersTest, LightAttenuationMatchesPerLightType) {
     // most 1/256 of one texel step. Cookies are 8-bit: up to 1.5/255 between the GPU's filter and
     // exact bilinear weights (and the reference does not filter across cube faces).
     constexpr float kTable = 1e-3f, kCookie = 1.5f / 255.0f;
-    const AttenuationCase cases[] = {{"POINT", scene::LightType::Point, "none", kTable},
-                                     {"SPOT", scene::LightType::Spot, "default", kCookie},
-                                     {"POINT_COOKIE", scene::LightType::Point, "default", kCookie},
-                                     {"DIRECTIONAL_COOKIE", scene::LightType::Directional, "default", kCookie},
-                                     {"DIRECTIONAL", scene::LightType::Directional, "none", 1e-6f}};
+    const AttenuationCase cases[] = {
+        {"POINT", scene::LightType::Point, "none", kTable},
+        {"SPOT", scene::LightType::Spot, "default", kCookie},
+        {"POINT_COOKIE", scene::LightType::Point, "default", kCookie},
+        {"DIRECTIONAL_COOKIE", scene::LightType::Directional, "default", kCookie},
+        {"DIRECTIONAL", scene::LightType::Directional, "none", 1e-6f}};
     reference::LightTextureSet textures;
     for (const AttenuationCase& c : cases) {
         SCOPED_TRACE(c.keyword);
@@ -214,7 +228,10 @@ TEST_F(BuiltinHelpersTest, LightAttenuationMatchesPerLightType) {
         Image image = run({"HELPER_ATTENUATION", c.keyword}, values, &light);
         expectMatches(
             image,
-            [&](glm::vec2 uv) { return glm::vec3(reference::lightAttenuation(*passLight, textures, worldPosition(uv))); },
+            [&](glm::vec2 uv) {
+                return glm::vec3(
+                    reference::lightAttenuation(*passLight, textures, worldPosition(uv)));
+            },
             c.tolerance, 0.0f, 1);
     }
 }
@@ -222,10 +239,12 @@ TEST_F(BuiltinHelpersTest, LightAttenuationMatchesPerLightType) {
 TEST_F(BuiltinHelpersTest, Shade4PointLightsMatches) {
     scene::Scene scene;
     std::vector<int> indices;
-    const glm::vec3 colors[] = {{1.0f, 0.2f, 0.1f}, {0.1f, 1.0f, 0.3f}, {0.2f, 0.3f, 1.0f}, {0.8f, 0.8f, 0.2f}};
+    const glm::vec3 colors[] = {
+        {1.0f, 0.2f, 0.1f}, {0.1f, 1.0f, 0.3f}, {0.2f, 0.3f, 1.0f}, {0.8f, 0.8f, 0.2f}};
     for (int i = 0; i < 4; ++i) {
         scene::Light light = makeLight(scene::LightType::Point, "none");
-        light.transform.position = {static_cast<float>(i) - 1.5f, 0.5f * static_cast<float>(i % 2), -1.0f};
+        light.transform.position = {static_cast<float>(i) - 1.5f, 0.5f * static_cast<float>(i % 2),
+                                    -1.0f};
         light.color = colors[i];
         light.range = 2.0f + static_cast<float>(i);
         scene.lights.push_back(light);
@@ -242,7 +261,10 @@ TEST_F(BuiltinHelpersTest, Shade4PointLightsMatches) {
     values.setArray("unity_LightColor", lightColors);
     Image image = run({"HELPER_SHADE4", "POINT"}, values, nullptr);
     expectMatches(
-        image, [&](glm::vec2 uv) { return reference::shade4PointLights(lights, worldPosition(uv), sphereNormal(uv)); },
+        image,
+        [&](glm::vec2 uv) {
+            return reference::shade4PointLights(lights, worldPosition(uv), sphereNormal(uv));
+        },
         1e-4f, 1e-4f);
 }
 
@@ -258,10 +280,12 @@ TEST_F(BuiltinHelpersTest, ShadeSH9Matches) {
     scene::Object object;
     std::array<glm::vec4, 7> sh = scene::packedSH(scene, object, {0, 1});
     ShaderValues values = boxValues();
-    const char* names[] = {"unity_SHAr", "unity_SHAg", "unity_SHAb", "unity_SHBr", "unity_SHBg", "unity_SHBb", "unity_SHC"};
+    const char* names[] = {"unity_SHAr", "unity_SHAg", "unity_SHAb", "unity_SHBr",
+                           "unity_SHBg", "unity_SHBb", "unity_SHC"};
     for (size_t i = 0; i < sh.size(); ++i) values.set(names[i], sh[i]);
     Image image = run({"HELPER_SH9", "POINT"}, values, nullptr);
-    expectMatches(image, [&](glm::vec2 uv) { return scene::shadeSH9(sh, sphereNormal(uv)); }, 1e-4f, 1e-4f);
+    expectMatches(
+        image, [&](glm::vec2 uv) { return scene::shadeSH9(sh, sphereNormal(uv)); }, 1e-4f, 1e-4f);
 }
 
 TEST_F(BuiltinHelpersTest, PhysicallyBasedBrdfMatches) {
@@ -270,7 +294,8 @@ TEST_F(BuiltinHelpersTest, PhysicallyBasedBrdfMatches) {
     const glm::vec3 lightColor(1.0f, 0.9f, 0.8f);
     for (float metallic : {0.0f, 1.0f}) {
         for (float smoothness : {0.2f, 0.8f}) {
-            SCOPED_TRACE("metallic " + std::to_string(metallic) + " smoothness " + std::to_string(smoothness));
+            SCOPED_TRACE("metallic " + std::to_string(metallic) + " smoothness " +
+                         std::to_string(smoothness));
             glm::vec3 albedo(0.8f, 0.5f, 0.3f);
             ShaderValues values = boxValues();
             values.set("_Albedo", albedo, metallic);
@@ -279,12 +304,14 @@ TEST_F(BuiltinHelpersTest, PhysicallyBasedBrdfMatches) {
             values.set("_LightColor0", lightColor, 1.0f);
             values.set("_WorldSpaceLightPos0", lightDirection, 0.0f);
             Image image = run({"HELPER_BRDF", "POINT"}, values, nullptr);
-            reference::SurfaceColors surface = reference::diffuseAndSpecularFromMetallic(albedo, metallic);
+            reference::SurfaceColors surface =
+                reference::diffuseAndSpecularFromMetallic(albedo, metallic);
             expectMatches(
                 image,
                 [&](glm::vec2 uv) {
-                    return reference::brdfPbs(surface, smoothness, sphereNormal(uv), viewDirection, lightDirection,
-                                              lightColor, glm::vec3(0.0f), glm::vec3(0.0f));
+                    return reference::brdfPbs(surface, smoothness, sphereNormal(uv), viewDirection,
+                                              lightDirection, lightColor, glm::vec3(0.0f),
+                                              glm::vec3(0.0f));
                 },
                 2e-4f, 2e-3f);
         }

@@ -53,13 +53,15 @@ scene::Scene oneSphere() {
 
 float maxAbsDifference(const Image& a, const Image& b) {
     float worst = 0;
-    for (size_t i = 0; i < a.floats().size(); ++i) worst = std::max(worst, std::abs(a.floats()[i] - b.floats()[i]));
+    for (size_t i = 0; i < a.floats().size(); ++i)
+        worst = std::max(worst, std::abs(a.floats()[i] - b.floats()[i]));
     return worst;
 }
 
 float sum(const Image& image) {
     float total = 0;
-    for (size_t i = 0; i < image.floats().size(); i += 4) total += image.floats()[i] + image.floats()[i + 1] + image.floats()[i + 2];
+    for (size_t i = 0; i < image.floats().size(); i += 4)
+        total += image.floats()[i] + image.floats()[i + 1] + image.floats()[i + 2];
     return total;
 }
 
@@ -94,7 +96,8 @@ TEST_F(ForwardRenderTest, APointLightOutOfRangeChangesNothing) {
     scene::Scene scene = oneSphere();
     scene.lights.push_back(pointLight({-1.0f, 1.0f, -1.0f}, glm::vec3(1.0f), 5.0f));
     RenderedFrame lit = render(scene);
-    scene.lights.push_back(pointLight({30.0f, 0.0f, 0.0f}, glm::vec3(1.0f), 2.0f));  // 29.5 m from the sphere
+    scene.lights.push_back(
+        pointLight({30.0f, 0.0f, 0.0f}, glm::vec3(1.0f), 2.0f));  // 29.5 m from the sphere
     RenderedFrame withFarLight = render(scene);
     ASSERT_GT(sum(lit.image), 1.0f) << "the in-range light must light the sphere";
     EXPECT_EQ(maxAbsDifference(lit.image, withFarLight.image), 0.0f);
@@ -130,7 +133,8 @@ TEST_F(ForwardRenderTest, WithNoPixelLightsAPointLightStillLightsThroughVertexLi
     lit.lights.push_back(pointLight({-1.0f, 1.0f, -1.5f}, glm::vec3(1.0f), 8.0f));
     RenderedFrame darkFrame = render(dark), litFrame = render(lit);
     ASSERT_EQ(litFrame.variants.size(), 1u) << "no add pass when pixel_light_count is 0";
-    EXPECT_NE(litFrame.variants[0].find("VERTEXLIGHT_ON"), std::string::npos) << litFrame.variants[0];
+    EXPECT_NE(litFrame.variants[0].find("VERTEXLIGHT_ON"), std::string::npos)
+        << litFrame.variants[0];
     EXPECT_GT(sum(litFrame.image), sum(darkFrame.image) + 1.0f);
 }
 
@@ -139,7 +143,8 @@ TEST_F(ForwardRenderTest, UnknownShaderIsAClearError) {
     scene.objects[0].material.shader = "Custom/Missing";
     auto frame = mRenderer->render(scene);
     ASSERT_FALSE(frame);
-    EXPECT_NE(frame.error().detail.find("Custom/Missing"), std::string::npos) << frame.error().detail;
+    EXPECT_NE(frame.error().detail.find("Custom/Missing"), std::string::npos)
+        << frame.error().detail;
 }
 
 // Every validation scene matches the CPU reference within the tolerances.
@@ -156,8 +161,8 @@ TEST_F(ForwardRenderTest, ValidationScenesMatchTheCpuReference) {
         RenderedFrame frame = render(*scene);
         auto expected = reference::renderReference(*scene);
         ASSERT_TRUE(expected) << expected.error().detail;
-        reference::CompareResult result = reference::compareImages(frame.image, expected->color, expected->classes,
-                                                                   reference::toleranceFor(*scene));
+        reference::CompareResult result = reference::compareImages(
+            frame.image, expected->color, expected->classes, reference::toleranceFor(*scene));
         EXPECT_TRUE(result.passed) << result.message;
         EXPECT_GT(result.interiorPixels, 100u) << "the scene must show lit objects";
     }

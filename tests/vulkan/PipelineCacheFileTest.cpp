@@ -29,8 +29,9 @@ std::vector<std::byte> readAll(const std::string& path) {
 }
 
 void writeAll(const std::string& path, const std::vector<std::byte>& data) {
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data.data()),
-                                                static_cast<std::streamsize>(data.size()));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(data.data()),
+               static_cast<std::streamsize>(data.size()));
 }
 
 class PipelineCacheFileTest : public testing::VulkanTest {
@@ -55,8 +56,9 @@ TEST_F(PipelineCacheFileTest, SavedCacheReloadsOnTheSameDevice) {
     auto target = RenderTarget::create(context(), desc);
     ASSERT_TRUE(target) << target.error().detail;
     PassView pass = *pack->findShader("Custom/My First Lighting Shader")->pass("ForwardAdd");
-    auto pipeline = VariantPipeline::create(context(), pass.variant(0), resolveRenderState(pass.renderState(), {}),
-                                            {target->renderPass(LoadOp::Clear), true, 1}, fresh->handle());
+    auto pipeline = VariantPipeline::create(
+        context(), pass.variant(0), resolveRenderState(pass.renderState(), {}),
+        {target->renderPass(LoadOp::Clear), true, 1}, fresh->handle());
     ASSERT_TRUE(pipeline) << pipeline.error().detail;
     ASSERT_TRUE(fresh->save());
 
@@ -82,19 +84,22 @@ TEST_F(PipelineCacheFileTest, ForeignOrCorruptHeadersStartAFreshCache) {
     auto foreign = PipelineCacheFile::open(context(), path());
     ASSERT_TRUE(foreign);
     EXPECT_FALSE(foreign->loadedFromFile());
-    EXPECT_NE(foreign->rejectedReason().find("another device"), std::string::npos) << foreign->rejectedReason();
+    EXPECT_NE(foreign->rejectedReason().find("another device"), std::string::npos)
+        << foreign->rejectedReason();
 
     std::vector<std::byte> otherDriver = good;
     otherDriver[20] ^= std::byte{0x01};  // inside pipelineCacheUUID
     writeAll(path(), otherDriver);
     auto rebuilt = PipelineCacheFile::open(context(), path());
     ASSERT_TRUE(rebuilt);
-    EXPECT_NE(rebuilt->rejectedReason().find("pipelineCacheUUID"), std::string::npos) << rebuilt->rejectedReason();
+    EXPECT_NE(rebuilt->rejectedReason().find("pipelineCacheUUID"), std::string::npos)
+        << rebuilt->rejectedReason();
 
     writeAll(path(), std::vector<std::byte>(good.begin(), good.begin() + 10));
     auto truncated = PipelineCacheFile::open(context(), path());
     ASSERT_TRUE(truncated);
-    EXPECT_NE(truncated->rejectedReason().find("truncated"), std::string::npos) << truncated->rejectedReason();
+    EXPECT_NE(truncated->rejectedReason().find("truncated"), std::string::npos)
+        << truncated->rejectedReason();
 }
 
 }  // namespace

@@ -20,7 +20,9 @@
 namespace varc::runtime {
 namespace {
 
-std::string scenePath(const std::string& name) { return VARC_TEST_SCENE_DIR "/single_pass/" + name + ".json"; }
+std::string scenePath(const std::string& name) {
+    return VARC_TEST_SCENE_DIR "/single_pass/" + name + ".json";
+}
 
 scene::Scene loadSinglePassScene(const std::string& name) {
     auto scene = scene::loadScene(scenePath(name));
@@ -81,7 +83,8 @@ protected:
 // Every single-pass validation scene matches the CPU reference within the tolerances.
 TEST_F(SinglePassRenderTest, ValidationScenesMatchTheCpuReference) {
     std::vector<std::string> scenes;
-    for (const auto& entry : std::filesystem::directory_iterator(VARC_TEST_SCENE_DIR "/single_pass")) {
+    for (const auto& entry :
+         std::filesystem::directory_iterator(VARC_TEST_SCENE_DIR "/single_pass")) {
         if (entry.path().extension() == ".json") scenes.push_back(entry.path().stem().string());
     }
     ASSERT_GE(scenes.size(), 5u);
@@ -91,12 +94,13 @@ TEST_F(SinglePassRenderTest, ValidationScenesMatchTheCpuReference) {
         RenderedFrame frame = render(scene);
         auto expected = reference::renderSinglePassReference(scene);
         ASSERT_TRUE(expected) << expected.error().detail;
-        reference::CompareResult result = reference::compareImages(frame.image, expected->color, expected->classes,
-                                                                   reference::toleranceFor(scene));
+        reference::CompareResult result = reference::compareImages(
+            frame.image, expected->color, expected->classes, reference::toleranceFor(scene));
         EXPECT_TRUE(result.passed) << result.message;
         EXPECT_GT(result.interiorPixels, 1000u) << "the scene must show its objects";
         std::printf("%-16s draws %2u  max %.2f LSB  mean %+.3f LSB\n", name.c_str(), frame.draws,
-                    static_cast<double>(result.maxErrorLsb), static_cast<double>(result.meanSignedErrorLsb));
+                    static_cast<double>(result.maxErrorLsb),
+                    static_cast<double>(result.meanSignedErrorLsb));
     }
 }
 
@@ -108,36 +112,41 @@ TEST_F(SinglePassRenderTest, ComparisonCatchesAWrongSpotRuleAndMissingVertexLigh
     wrongSpot.spotInnerTangentRatio = 0.5f;
     auto wrongSpotReference = reference::renderSinglePassReference(spot, wrongSpot);
     ASSERT_TRUE(wrongSpotReference) << wrongSpotReference.error().detail;
-    EXPECT_FALSE(reference::compareImages(spotFrame.image, wrongSpotReference->color, wrongSpotReference->classes,
+    EXPECT_FALSE(reference::compareImages(spotFrame.image, wrongSpotReference->color,
+                                          wrongSpotReference->classes,
                                           reference::toleranceFor(spot))
                      .passed);
 
     scene::Scene eight = loadSinglePassScene("eight-lights");
     RenderedFrame eightFrame = render(eight);
     reference::SinglePassReferenceOptions pixelLightsOnly;
-    pixelLightsOnly.editLights = [](scene::ObjectLightList& list) { list.count = std::min(list.count, 4); };
+    pixelLightsOnly.editLights = [](scene::ObjectLightList& list) {
+        list.count = std::min(list.count, 4);
+    };
     auto noVertexLights = reference::renderSinglePassReference(eight, pixelLightsOnly);
     ASSERT_TRUE(noVertexLights) << noVertexLights.error().detail;
-    EXPECT_FALSE(reference::compareImages(eightFrame.image, noVertexLights->color, noVertexLights->classes,
-                                          reference::toleranceFor(eight))
+    EXPECT_FALSE(reference::compareImages(eightFrame.image, noVertexLights->color,
+                                          noVertexLights->classes, reference::toleranceFor(eight))
                      .passed);
 }
 
 TEST_F(SinglePassRenderTest, LightsBeyondSixteenHaveNoEffect) {
     scene::Scene scene = loadSinglePassScene("twenty-lights");
     const scene::VisibleLightSet visible = scene::selectVisibleLights(scene);
-    ASSERT_EQ(visible.slots.size() + visible.dropped.size(), 20u) << "every light of the scene is visible";
+    ASSERT_EQ(visible.slots.size() + visible.dropped.size(), 20u)
+        << "every light of the scene is visible";
     ASSERT_EQ(visible.dropped.size(), 4u);
 
     scene::Scene kept = scene, droppedOnly = scene;
     kept.lights.clear();
     droppedOnly.lights.clear();
     for (size_t i = 0; i < scene.lights.size(); ++i) {
-        bool dropped = std::find(visible.dropped.begin(), visible.dropped.end(), static_cast<int>(i)) !=
-                       visible.dropped.end();
+        bool dropped = std::find(visible.dropped.begin(), visible.dropped.end(),
+                                 static_cast<int>(i)) != visible.dropped.end();
         (dropped ? droppedOnly : kept).lights.push_back(scene.lights[i]);
     }
-    RenderedFrame all = render(scene), withoutDropped = render(kept), onlyDropped = render(droppedOnly);
+    RenderedFrame all = render(scene), withoutDropped = render(kept),
+                  onlyDropped = render(droppedOnly);
     EXPECT_EQ(maxDifferenceLsb(all.image, withoutDropped.image), 0.0f);
     // On their own the dropped lights do light the scene: dropping them is what hides them.
     scene::Scene dark = scene;
@@ -151,7 +160,8 @@ TEST_F(SinglePassRenderTest, ZeroVisibleLightsGiveBlackObjects) {
     scene::Scene scene = loadSinglePassScene("zero-lights");
     ASSERT_FALSE(scene.lights.empty()) << "the scene's lights must exist but miss the frustum";
     ASSERT_TRUE(scene::selectVisibleLights(scene).slots.empty());
-    ASSERT_GT(glm::length(scene.ambient), 0.0f) << "ambient is set, and the shader has no ambient term";
+    ASSERT_GT(glm::length(scene.ambient), 0.0f)
+        << "ambient is set, and the shader has no ambient term";
     RenderedFrame frame = render(scene);
     auto expected = reference::renderSinglePassReference(scene);
     ASSERT_TRUE(expected) << expected.error().detail;
@@ -161,13 +171,15 @@ TEST_F(SinglePassRenderTest, ZeroVisibleLightsGiveBlackObjects) {
             std::array<uint8_t, 4> p = frame.image.pixel8(x, y);
             switch (expected->classes.at(x, y)) {
                 case reference::PixelClass::Interior:
-                    ASSERT_EQ(p[0] + p[1] + p[2], 0) << "object pixel " << x << "," << y << " is lit";
+                    ASSERT_EQ(p[0] + p[1] + p[2], 0)
+                        << "object pixel " << x << "," << y << " is lit";
                     ++black;
                     break;
                 case reference::PixelClass::Background:
                     ASSERT_NEAR(p[2], scene.camera.background.b * 255.0f, 0.5f) << x << "," << y;
                     break;
-                case reference::PixelClass::Edge: break;
+                case reference::PixelClass::Edge:
+                    break;
             }
         }
     }
@@ -181,13 +193,14 @@ TEST_F(SinglePassRenderTest, InstancedAndNonInstancedRendersAgree) {
         RenderedFrame instanced = render(scene, {.instancing = true});
         RenderedFrame separate = render(scene, {.instancing = false});
         EXPECT_EQ(separate.draws, scene.objects.size());
-        EXPECT_LT(instanced.draws, separate.draws) << "objects sharing a material and lights are batched";
-        EXPECT_TRUE(std::any_of(instanced.variants.begin(), instanced.variants.end(), [](const std::string& v) {
-            return v.find("INSTANCING_ON") != std::string::npos;
-        }));
-        EXPECT_TRUE(std::none_of(separate.variants.begin(), separate.variants.end(), [](const std::string& v) {
-            return v.find("INSTANCING_ON") != std::string::npos;
-        }));
+        EXPECT_LT(instanced.draws, separate.draws)
+            << "objects sharing a material and lights are batched";
+        EXPECT_TRUE(std::any_of(
+            instanced.variants.begin(), instanced.variants.end(),
+            [](const std::string& v) { return v.find("INSTANCING_ON") != std::string::npos; }));
+        EXPECT_TRUE(std::none_of(
+            separate.variants.begin(), separate.variants.end(),
+            [](const std::string& v) { return v.find("INSTANCING_ON") != std::string::npos; }));
         EXPECT_EQ(maxDifferenceLsb(instanced.image, separate.image), 0.0f);
     }
 }
@@ -208,7 +221,8 @@ TEST_F(SinglePassRenderTest, BatchesSplitAtTheInstancedArrayLength) {
     sphere.transform.scale = glm::vec3(0.05f);
     scene.objects.clear();
     for (int i = 0; i < 501; ++i) {
-        sphere.transform.position = {static_cast<float>(i % 23) * 0.1f - 1.1f, static_cast<float>(i / 23) * 0.1f - 1.1f, 0};
+        sphere.transform.position = {static_cast<float>(i % 23) * 0.1f - 1.1f,
+                                     static_cast<float>(i / 23) * 0.1f - 1.1f, 0};
         scene.objects.push_back(sphere);
     }
     RenderedFrame frame = render(scene);
@@ -231,7 +245,8 @@ TEST_F(SinglePassRenderTest, UnknownShaderIsAClearError) {
     scene.objects[1].material.shader = "Custom/Missing";
     auto frame = mRenderer->render(scene);
     ASSERT_FALSE(frame);
-    EXPECT_NE(frame.error().detail.find("Custom/Missing"), std::string::npos) << frame.error().detail;
+    EXPECT_NE(frame.error().detail.find("Custom/Missing"), std::string::npos)
+        << frame.error().detail;
 }
 
 }  // namespace

@@ -5,9 +5,8 @@
 // and stencil tests (an occlusion query, so coverage does not depend on what the shader outputs).
 #include <gtest/gtest.h>
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <string>
 #include <vector>
 
@@ -33,9 +32,14 @@ namespace {
 // that it shows under Cull Back, Front and Off alike.
 std::vector<MeshVertex> doubleSidedQuad() {
     auto vertex = [](float x, float y) {
-        return MeshVertex{{x, y, 0.5f}, {0, 0, -1}, {1, 0, 0, 1}, {x * 0.5f + 0.5f, y * 0.5f + 0.5f}, {1, 1, 1, 1}};
+        return MeshVertex{{x, y, 0.5f},
+                          {0, 0, -1},
+                          {1, 0, 0, 1},
+                          {x * 0.5f + 0.5f, y * 0.5f + 0.5f},
+                          {1, 1, 1, 1}};
     };
-    MeshVertex a = vertex(-0.8f, -0.8f), b = vertex(0.8f, -0.8f), c = vertex(0.8f, 0.8f), d = vertex(-0.8f, 0.8f);
+    MeshVertex a = vertex(-0.8f, -0.8f), b = vertex(0.8f, -0.8f), c = vertex(0.8f, 0.8f),
+               d = vertex(-0.8f, 0.8f);
     return {a, b, c, a, c, d, a, c, b, a, d, c};
 }
 
@@ -44,10 +48,11 @@ std::vector<MeshVertex> doubleSidedQuad() {
 ShaderValues drawValues() {
     ShaderValues values;
     glm::mat4 identity(1.0f);
-    for (const char* name : {"unity_ObjectToWorld", "unity_WorldToObject", "unity_MatrixVP", "unity_MatrixV",
-                             "unity_MatrixInvV", "glstate_matrix_projection", "unity_CameraToWorld",
-                             "unity_WorldToCamera", "unity_WorldToLight", "varc_ModelViewProjectionMatrix",
-                             "varc_ModelViewMatrix", "varc_ProjectionMatrix", "_Object2World", "_World2Object"}) {
+    for (const char* name :
+         {"unity_ObjectToWorld", "unity_WorldToObject", "unity_MatrixVP", "unity_MatrixV",
+          "unity_MatrixInvV", "glstate_matrix_projection", "unity_CameraToWorld",
+          "unity_WorldToCamera", "unity_WorldToLight", "varc_ModelViewProjectionMatrix",
+          "varc_ModelViewMatrix", "varc_ProjectionMatrix", "_Object2World", "_World2Object"}) {
         values.set(name, identity);
     }
     values.set("_WorldSpaceCameraPos", glm::vec4(0, 0, -2, 1));
@@ -135,7 +140,8 @@ TEST_F(VariantDrawTest, EveryVariantOfTheTestPacksDraws) {
     auto gbuffer = RenderTarget::create(context(), desc);
     ASSERT_TRUE(gbuffer) << gbuffer.error().detail;
     std::vector<MeshVertex> quad = doubleSidedQuad();
-    auto vertices = Buffer::createWithData(context(), std::as_bytes(std::span(quad)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    auto vertices = Buffer::createWithData(context(), std::as_bytes(std::span(quad)),
+                                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     ASSERT_TRUE(vertices) << vertices.error().detail;
     auto resources = DrawResources::create(context(), 1u << 20, 64);
     ASSERT_TRUE(resources) << resources.error().detail;
@@ -144,7 +150,8 @@ TEST_F(VariantDrawTest, EveryVariantOfTheTestPacksDraws) {
     queryInfo.queryType = VK_QUERY_TYPE_OCCLUSION;
     queryInfo.queryCount = 1;
     VkQueryPool rawPool = VK_NULL_HANDLE;
-    ASSERT_TRUE(checkVk(vkCreateQueryPool(context().device(), &queryInfo, nullptr, &rawPool), "vkCreateQueryPool"));
+    ASSERT_TRUE(checkVk(vkCreateQueryPool(context().device(), &queryInfo, nullptr, &rawPool),
+                        "vkCreateQueryPool"));
     UniqueHandle<VkQueryPool> queries(context().device(), rawPool);
 
     ShaderValues values = drawValues();
@@ -158,7 +165,8 @@ TEST_F(VariantDrawTest, EveryVariantOfTheTestPacksDraws) {
             for (size_t v = 0; v < pass.variantCount(); ++v) {
                 VariantView variant = pass.variant(v);
                 SCOPED_TRACE(variant.describe());
-                size_t outputs = variant.program(pack::Stage::Fragment)->reflection().outputs.size();
+                size_t outputs =
+                    variant.program(pack::Stage::Fragment)->reflection().outputs.size();
                 const RenderTarget* target = outputs > 1 ? &*gbuffer : &*single;
                 auto pipeline = VariantPipeline::create(
                     context(), variant, state,
@@ -172,7 +180,8 @@ TEST_F(VariantDrawTest, EveryVariantOfTheTestPacksDraws) {
                     VkRect2D area = target->area();
                     vkCmdSetViewport(commands, 0, 1, &viewport);
                     vkCmdSetScissor(commands, 0, 1, &area);
-                    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->pipeline());
+                    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                                      pipeline->pipeline());
                     recorded = resources->bind(commands, *pipeline, layers, whiteTextures());
                     VkBuffer buffer = vertices->handle();
                     VkDeviceSize offset = 0;
@@ -186,10 +195,11 @@ TEST_F(VariantDrawTest, EveryVariantOfTheTestPacksDraws) {
                 ASSERT_TRUE(submitted) << submitted.error().detail;
                 ASSERT_TRUE(resources->reset());
                 DrawOutcome outcome;
-                ASSERT_TRUE(checkVk(vkGetQueryPoolResults(context().device(), queries.get(), 0, 1, sizeof(uint64_t),
-                                                          &outcome.samplesPassed, sizeof(uint64_t),
-                                                          VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
-                                    "vkGetQueryPoolResults"));
+                ASSERT_TRUE(checkVk(
+                    vkGetQueryPoolResults(context().device(), queries.get(), 0, 1, sizeof(uint64_t),
+                                          &outcome.samplesPassed, sizeof(uint64_t),
+                                          VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+                    "vkGetQueryPoolResults"));
                 auto image = target->readback(context());
                 ASSERT_TRUE(image) << image.error().detail;
                 for (float f : image->floats()) outcome.finite = outcome.finite && std::isfinite(f);

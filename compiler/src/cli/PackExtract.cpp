@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // `varc extract`: every program of a pack as a .spv file, plus a manifest tying them to
 // shader / pass / variant / stage. Programs shared by many variants are written once.
-#include <nlohmann/json.hpp>
-
 #include <cstdio>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <ostream>
 
 #include "OpenPack.h"
@@ -46,7 +45,8 @@ Json shadersJson(const runtime::Pack& pack) {
         for (size_t p = 0; p < shader.passCount(); ++p) {
             runtime::PassView pass = *shader.pass(p);
             Json variants = Json::array();
-            for (size_t v = 0; v < pass.variantCount(); ++v) variants.push_back(variantJson(pass.variant(v)));
+            for (size_t v = 0; v < pass.variantCount(); ++v)
+                variants.push_back(variantJson(pass.variant(v)));
             passes.push_back({{"index", pass.index()},
                               {"name", pass.name()},
                               {"lightmode", pass.lightMode()},
@@ -74,7 +74,8 @@ int runExtract(const Options& options, std::ostream& out, std::ostream& err) {
     std::error_code error;
     std::filesystem::create_directories(dir, error);
     if (error) {
-        err << "varc: error: cannot create directory '" << dir.string() << "': " << error.message() << "\n";
+        err << "varc: error: cannot create directory '" << dir.string() << "': " << error.message()
+            << "\n";
         return kExitFailure;
     }
     Json programs = Json::array();
@@ -91,13 +92,16 @@ int runExtract(const Options& options, std::ostream& out, std::ostream& err) {
                             {"source", std::string(program.sourceFile()) + ":" +
                                            std::to_string(program.sourceLine())}});
     }
-    Json manifest = {{"pack", options.packPath}, {"programs", programs}, {"shaders", shadersJson(*pack)}};
-    if (Status written = writeFileAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
+    Json manifest = {
+        {"pack", options.packPath}, {"programs", programs}, {"shaders", shadersJson(*pack)}};
+    if (Status written =
+            writeFileAtomically((dir / "manifest.json").string(), manifest.dump(2) + "\n");
         !written) {
         err << "varc: error: " << written.error().detail << "\n";
         return kExitFailure;
     }
-    out << "wrote " << pack->programCount() << " programs and manifest.json to " << dir.string() << "\n";
+    out << "wrote " << pack->programCount() << " programs and manifest.json to " << dir.string()
+        << "\n";
     return kExitOk;
 }
 

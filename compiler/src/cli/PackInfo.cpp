@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // `varc info`: what a pack holds, per shader and pass, with distinct programs per stage.
-#include <nlohmann/json.hpp>
-
 #include <array>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <set>
 
@@ -38,7 +37,8 @@ Json programsJson(const runtime::PassView& pass) {
     Json json = Json::object();
     auto programs = distinctPrograms(pass);
     for (size_t s = 0; s < pack::kStageCount; ++s) {
-        if (!programs[s].empty()) json[pack::stageName(static_cast<pack::Stage>(s))] = programs[s].size();
+        if (!programs[s].empty())
+            json[pack::stageName(static_cast<pack::Stage>(s))] = programs[s].size();
     }
     return json;
 }
@@ -89,14 +89,15 @@ Json infoJson(const runtime::Pack& pack, const std::string& path) {
     }
     Json toolchain = Json::object();
     for (const pack::ToolVersion& tool : pack.toolchain()) toolchain[tool.name] = tool.version;
-    return {{"file", path},
-            {"format", std::to_string(pack.formatMajor()) + "." + std::to_string(pack.formatMinor())},
-            {"inputs_hash", hex64(pack.inputsHash())},
-            {"toolchain", toolchain},
-            {"shaders", shaders},
-            {"variants", total},
-            {"programs", pack.programCount()},
-            {"bytes", {{"spirv", spirvBytes(pack)}, {"pack", pack.byteSize()}}}};
+    return {
+        {"file", path},
+        {"format", std::to_string(pack.formatMajor()) + "." + std::to_string(pack.formatMinor())},
+        {"inputs_hash", hex64(pack.inputsHash())},
+        {"toolchain", toolchain},
+        {"shaders", shaders},
+        {"variants", total},
+        {"programs", pack.programCount()},
+        {"bytes", {{"spirv", spirvBytes(pack)}, {"pack", pack.byteSize()}}}};
 }
 
 std::string stageCounts(const Json& programs) {
@@ -108,9 +109,9 @@ std::string stageCounts(const Json& programs) {
 }
 
 void printInfoText(const Json& info, std::ostream& out) {
-    out << "Pack " << info["file"].get<std::string>() << ": format " << info["format"].get<std::string>()
-        << ", " << info["bytes"]["pack"].get<uint64_t>() << " bytes ("
-        << info["bytes"]["spirv"].get<uint64_t>() << " bytes of SPIR-V in "
+    out << "Pack " << info["file"].get<std::string>() << ": format "
+        << info["format"].get<std::string>() << ", " << info["bytes"]["pack"].get<uint64_t>()
+        << " bytes (" << info["bytes"]["spirv"].get<uint64_t>() << " bytes of SPIR-V in "
         << info["programs"].get<size_t>() << " programs), inputs hash "
         << info["inputs_hash"].get<std::string>() << "\n  built with";
     for (const auto& [tool, version] : info["toolchain"].items()) {
@@ -121,7 +122,8 @@ void printInfoText(const Json& info, std::ostream& out) {
         out << "Shader \"" << shader["name"].get<std::string>() << "\"\n";
         for (const Json& pass : shader["passes"]) {
             out << "  pass " << pass["index"].get<uint32_t>();
-            if (!pass["name"].get<std::string>().empty()) out << " \"" << pass["name"].get<std::string>() << "\"";
+            if (!pass["name"].get<std::string>().empty())
+                out << " \"" << pass["name"].get<std::string>() << "\"";
             if (!pass["lightmode"].get<std::string>().empty()) {
                 out << " LightMode " << pass["lightmode"].get<std::string>();
             }
@@ -131,7 +133,8 @@ void printInfoText(const Json& info, std::ostream& out) {
         }
     }
     size_t shaders = info["shaders"].size();
-    out << info["variants"].get<uint64_t>() << " variants in " << shaders << (shaders == 1 ? " shader\n" : " shaders\n");
+    out << info["variants"].get<uint64_t>() << " variants in " << shaders
+        << (shaders == 1 ? " shader\n" : " shaders\n");
 }
 
 }  // namespace

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `varc lookup`: the variant a runtime would pick for a keyword set or a light, and its programs.
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <ostream>
 #include <sstream>
 
@@ -29,11 +28,13 @@ std::vector<std::string> splitWords(const std::string& text) {
 }
 
 bool isNumber(const std::string& text) {
-    return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    return !text.empty() &&
+           std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
 // --pass N selects by the pass's index in its shader; anything else by LightMode.
-std::optional<runtime::PassView> findPass(const runtime::ShaderView& shader, const std::string& selector) {
+std::optional<runtime::PassView> findPass(const runtime::ShaderView& shader,
+                                          const std::string& selector) {
     if (!isNumber(selector)) return shader.pass(std::string_view(selector));
     for (size_t p = 0; p < shader.passCount(); ++p) {
         runtime::PassView pass = *shader.pass(p);
@@ -53,16 +54,19 @@ std::string passList(const runtime::ShaderView& shader) {
 }
 
 // The light described on the command line; nullopt after printing a usage error.
-std::optional<variants::LightDescription> lightFromOptions(const Options& options, std::ostream& err) {
+std::optional<variants::LightDescription> lightFromOptions(const Options& options,
+                                                           std::ostream& err) {
     variants::LightDescription light;
     auto type = variants::parseLightType(options.lookupLight);
     if (!type) {
-        err << "varc: error: --light expects directional, point or spot, got '" << options.lookupLight << "'\n";
+        err << "varc: error: --light expects directional, point or spot, got '"
+            << options.lookupLight << "'\n";
         return std::nullopt;
     }
     auto shadows = variants::parseShadowMode(options.lookupShadows);
     if (!shadows) {
-        err << "varc: error: --shadows expects none, hard or soft, got '" << options.lookupShadows << "'\n";
+        err << "varc: error: --shadows expects none, hard or soft, got '" << options.lookupShadows
+            << "'\n";
         return std::nullopt;
     }
     light.type = *type;
@@ -74,10 +78,11 @@ std::optional<variants::LightDescription> lightFromOptions(const Options& option
 }
 
 Json programJson(const runtime::ProgramView& program) {
-    return {{"program", program.index()},
-            {"entry_point", program.entryPoint()},
-            {"bytes", program.spirvByteSize()},
-            {"source", std::string(program.sourceFile()) + ":" + std::to_string(program.sourceLine())}};
+    return {
+        {"program", program.index()},
+        {"entry_point", program.entryPoint()},
+        {"bytes", program.spirvByteSize()},
+        {"source", std::string(program.sourceFile()) + ":" + std::to_string(program.sourceLine())}};
 }
 
 void printVariant(const runtime::VariantView& variant, const std::vector<std::string>& requested,
@@ -114,19 +119,20 @@ int runLookup(const Options& options, std::ostream& out, std::ostream& err) {
     if (!pack) return kExitUsage;
     std::optional<runtime::ShaderView> shader = pack->findShader(options.lookupShader);
     if (!shader) {
-        err << "varc: error: " << options.packPath << ": no shader named \"" << options.lookupShader << "\"\n";
+        err << "varc: error: " << options.packPath << ": no shader named \"" << options.lookupShader
+            << "\"\n";
         return kExitFailure;
     }
     std::optional<runtime::PassView> pass = findPass(*shader, options.lookupPass);
     if (!pass) {
-        err << "varc: error: shader \"" << options.lookupShader << "\" has no pass '" << options.lookupPass
-            << "'; its passes: " << passList(*shader) << "\n";
+        err << "varc: error: shader \"" << options.lookupShader << "\" has no pass '"
+            << options.lookupPass << "'; its passes: " << passList(*shader) << "\n";
         return kExitFailure;
     }
     auto policy = variants::parseSelectionPolicy(options.lookupPolicy);
     if (!policy) {
-        err << "varc: error: --policy expects exact, closest, first or strict, got '" << options.lookupPolicy
-            << "'\n";
+        err << "varc: error: --policy expects exact, closest, first or strict, got '"
+            << options.lookupPolicy << "'\n";
         return kExitUsage;
     }
     std::vector<std::string> keywords = splitWords(options.lookupKeywords);
@@ -137,7 +143,8 @@ int runLookup(const Options& options, std::ostream& out, std::ostream& err) {
         variant = pass->lookup(*light, *policy, pass->keyOf(keywords));
         // Report what was asked: the light's keywords for this pass plus the material's.
         if (auto kind = variants::lightPassKindFromLightMode(pass->lightMode())) {
-            for (std::string& keyword : variants::lightKeywords(*light, *kind)) keywords.push_back(keyword);
+            for (std::string& keyword : variants::lightKeywords(*light, *kind))
+                keywords.push_back(keyword);
             std::sort(keywords.begin(), keywords.end());
         }
     } else {

@@ -27,7 +27,8 @@ namespace varc::cli {
 namespace {
 
 // Opens every pack; nullopt after printing why one failed.
-std::optional<std::vector<runtime::Pack>> openPacks(const std::vector<std::string>& paths, std::ostream& err) {
+std::optional<std::vector<runtime::Pack>> openPacks(const std::vector<std::string>& paths,
+                                                    std::ostream& err) {
     std::vector<runtime::Pack> packs;
     for (const std::string& path : paths) {
         auto pack = runtime::Pack::open(path);
@@ -46,7 +47,8 @@ struct SceneRenderers {
     runtime::SinglePassRenderer singlePass;
     runtime::DeferredRenderer deferred;
 
-    static Result<SceneRenderers> create(runtime::VulkanContext& context, const std::vector<runtime::Pack>& packs,
+    static Result<SceneRenderers> create(runtime::VulkanContext& context,
+                                         const std::vector<runtime::Pack>& packs,
                                          VkPipelineCache cache) {
         std::vector<const runtime::Pack*> pointers;
         for (const runtime::Pack& pack : packs) pointers.push_back(&pack);
@@ -71,15 +73,17 @@ struct SceneRenderers {
 
 // The CPU reference for the scene's path.
 Result<reference::ReferenceImage> renderReferenceFor(const scene::Scene& scene) {
-    if (scene.camera.path == scene::RenderPath::SinglePass) return reference::renderSinglePassReference(scene);
-    if (scene.camera.path == scene::RenderPath::Deferred) return reference::renderDeferredReference(scene);
+    if (scene.camera.path == scene::RenderPath::SinglePass)
+        return reference::renderSinglePassReference(scene);
+    if (scene.camera.path == scene::RenderPath::Deferred)
+        return reference::renderDeferredReference(scene);
     return reference::renderReference(scene);
 }
 
 struct SceneOutcome {
-    bool ok = false;        // rendered and compared
-    bool passed = false;    // comparison within tolerance
-    std::string error;      // why it could not render
+    bool ok = false;      // rendered and compared
+    bool passed = false;  // comparison within tolerance
+    std::string error;    // why it could not render
     runtime::RenderedFrame frame;
     reference::CompareResult comparison;
     double seconds = 0;
@@ -87,7 +91,8 @@ struct SceneOutcome {
 
 // Renders |scenePath| and, when |compare|, its reference; writes the PNGs that are asked for.
 SceneOutcome renderScene(SceneRenderers& renderer, const std::string& scenePath, bool compare,
-                         const std::string& renderPng, const std::string& referencePng, const std::string& diffPng) {
+                         const std::string& renderPng, const std::string& referencePng,
+                         const std::string& diffPng) {
     SceneOutcome outcome;
     auto start = std::chrono::steady_clock::now();
     auto scene = scene::loadScene(scenePath);
@@ -102,8 +107,9 @@ SceneOutcome renderScene(SceneRenderers& renderer, const std::string& scenePath,
     }
     outcome.frame = std::move(*frame);
     if (!renderPng.empty()) {
-        runtime::Image shown = outcome.frame.image.isFloat() ? outcome.frame.image.toRgba8(runtime::Tonemap::Reinhard)
-                                                             : outcome.frame.image;
+        runtime::Image shown = outcome.frame.image.isFloat()
+                                   ? outcome.frame.image.toRgba8(runtime::Tonemap::Reinhard)
+                                   : outcome.frame.image;
         if (Status written = runtime::writePng(renderPng, shown); !written) {
             outcome.error = written.error().detail;
             return outcome;
@@ -117,13 +123,14 @@ SceneOutcome renderScene(SceneRenderers& renderer, const std::string& scenePath,
             outcome.error = scenePath + ": reference: " + expected.error().detail;
             return outcome;
         }
-        outcome.comparison = reference::compareImages(outcome.frame.image, expected->color, expected->classes,
-                                                      reference::toleranceFor(*scene));
+        outcome.comparison =
+            reference::compareImages(outcome.frame.image, expected->color, expected->classes,
+                                     reference::toleranceFor(*scene));
         outcome.passed = outcome.comparison.passed;
         if (!referencePng.empty()) {
-            Status written = runtime::writePng(referencePng, expected->color.toRgba8(
-                                                                 scene->camera.hdr ? runtime::Tonemap::Reinhard
-                                                                                   : runtime::Tonemap::Clamp));
+            Status written = runtime::writePng(
+                referencePng, expected->color.toRgba8(scene->camera.hdr ? runtime::Tonemap::Reinhard
+                                                                        : runtime::Tonemap::Clamp));
             if (!written) outcome.error = written.error().detail;
         }
         if (!diffPng.empty() && outcome.comparison.diff.width() > 0) {
@@ -131,7 +138,8 @@ SceneOutcome renderScene(SceneRenderers& renderer, const std::string& scenePath,
             if (!written) outcome.error = written.error().detail;
         }
     }
-    outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    outcome.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return outcome;
 }
 
@@ -146,7 +154,8 @@ std::optional<runtime::VulkanContext> makeContext(std::ostream& err) {
 
 // The --pipeline-cache file, when asked for; a file for another device or driver is reported
 // and replaced, never an error.
-std::optional<runtime::PipelineCacheFile> openPipelineCache(const Options& options, runtime::VulkanContext& context,
+std::optional<runtime::PipelineCacheFile> openPipelineCache(const Options& options,
+                                                            runtime::VulkanContext& context,
                                                             std::ostream& err) {
     if (options.pipelineCachePath.empty()) return std::nullopt;
     auto cache = runtime::PipelineCacheFile::open(context, options.pipelineCachePath);
@@ -155,15 +164,16 @@ std::optional<runtime::PipelineCacheFile> openPipelineCache(const Options& optio
         return std::nullopt;
     }
     if (!cache->rejectedReason().empty()) {
-        err << "varc: note: " << options.pipelineCachePath << " not used (" << cache->rejectedReason()
-            << "); starting a new cache\n";
+        err << "varc: note: " << options.pipelineCachePath << " not used ("
+            << cache->rejectedReason() << "); starting a new cache\n";
     }
     return std::move(*cache);
 }
 
 void savePipelineCache(const std::optional<runtime::PipelineCacheFile>& cache, std::ostream& err) {
     if (!cache) return;
-    if (Status saved = cache->save(); !saved) err << "varc: warning: " << saved.error().detail << "\n";
+    if (Status saved = cache->save(); !saved)
+        err << "varc: warning: " << saved.error().detail << "\n";
 }
 
 size_t distinctCount(const std::vector<std::string>& names) {
@@ -178,7 +188,8 @@ int runRender(const Options& options, std::ostream& out, std::ostream& err) {
     auto context = makeContext(err);
     if (!context) return kExitUsage;
     std::optional<runtime::PipelineCacheFile> cache = openPipelineCache(options, *context, err);
-    auto renderer = SceneRenderers::create(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
+    auto renderer =
+        SceneRenderers::create(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
     if (!renderer) {
         err << "varc: error: " << renderer.error().detail << "\n";
         return kExitFailure;
@@ -222,43 +233,46 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     auto context = makeContext(err);
     if (!context) return kExitUsage;
     std::optional<runtime::PipelineCacheFile> cache = openPipelineCache(options, *context, err);
-    auto renderer = SceneRenderers::create(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
+    auto renderer =
+        SceneRenderers::create(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
     if (!renderer) {
         err << "varc: error: " << renderer.error().detail << "\n";
         return kExitFailure;
     }
     char line[256];
-    std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", "scene", "draws", "variants", "max LSB",
-                  "mean LSB", "time", "result");
+    std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", "scene", "draws",
+                  "variants", "max LSB", "mean LSB", "time", "result");
     out << line;
     int failures = 0;
     for (const std::string& scenePath : scenes) {
         std::string stem = std::filesystem::path(scenePath).stem().string();
         std::string base = (std::filesystem::path(outDir) / stem).string();
-        SceneOutcome outcome =
-            renderScene(*renderer, scenePath, true, base + ".png", base + ".reference.png", base + ".diff.png");
+        SceneOutcome outcome = renderScene(*renderer, scenePath, true, base + ".png",
+                                           base + ".reference.png", base + ".diff.png");
         if (!outcome.ok) {
             ++failures;
-            std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", stem.c_str(), "-", "-", "-", "-", "-",
-                          "ERROR");
+            std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", stem.c_str(), "-",
+                          "-", "-", "-", "-", "ERROR");
             out << line;
             err << "varc: error: " << outcome.error << "\n";
             continue;
         }
         if (!outcome.passed) ++failures;
-        std::snprintf(line, sizeof line, "%-28s %6u %9zu %9.2f %10.3f %6.2fs  %s\n", stem.c_str(), outcome.frame.draws,
-                      distinctCount(outcome.frame.variants), static_cast<double>(outcome.comparison.maxErrorLsb),
+        std::snprintf(line, sizeof line, "%-28s %6u %9zu %9.2f %10.3f %6.2fs  %s\n", stem.c_str(),
+                      outcome.frame.draws, distinctCount(outcome.frame.variants),
+                      static_cast<double>(outcome.comparison.maxErrorLsb),
                       static_cast<double>(outcome.comparison.meanSignedErrorLsb), outcome.seconds,
                       outcome.passed ? "pass" : "FAIL");
         out << line;
         if (!outcome.passed) err << stem << ": " << outcome.comparison.message << "\n";
     }
-    out << scenes.size() - static_cast<size_t>(failures) << "/" << scenes.size() << " scenes match the reference; PNGs in "
-        << outDir << "\n";
+    out << scenes.size() - static_cast<size_t>(failures) << "/" << scenes.size()
+        << " scenes match the reference; PNGs in " << outDir << "\n";
     savePipelineCache(cache, err);
     // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.
     if (context->validationMessageCount() > 0) {
-        err << "varc: error: Vulkan validation reported " << context->validationMessageCount() << " messages:\n"
+        err << "varc: error: Vulkan validation reported " << context->validationMessageCount()
+            << " messages:\n"
             << context->validationReport() << "\n";
         return kExitFailure;
     }

@@ -33,8 +33,8 @@ std::vector<Image> cookieLayers(const scene::CookieImage& cookie) {
     size_t layerBytes = size_t{cookie.width} * cookie.height * 4;
     for (uint32_t layer = 0; layer < cookie.layers; ++layer) {
         Image image(cookie.width, cookie.height, PixelFormat::Rgba8);
-        std::copy_n(cookie.rgba.begin() + static_cast<std::ptrdiff_t>(layer * layerBytes), layerBytes,
-                    image.bytes().begin());
+        std::copy_n(cookie.rgba.begin() + static_cast<std::ptrdiff_t>(layer * layerBytes),
+                    layerBytes, image.bytes().begin());
         layers.push_back(std::move(image));
     }
     return layers;
@@ -71,7 +71,8 @@ Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
     auto whiteCube = Texture::createCube(context, whiteFaces, {false, false, "white cube"});
     if (!whiteCube) return whiteCube.error();
     textures.mWhiteCube.emplace(std::move(*whiteCube));
-    auto point = Texture::createCube(context, cookieLayers(scene::defaultPointCookie()), {false, false, "point cookie"});
+    auto point = Texture::createCube(context, cookieLayers(scene::defaultPointCookie()),
+                                     {false, false, "point cookie"});
     if (!point) return point.error();
     textures.mPoint.emplace(std::move(*point));
 
@@ -89,9 +90,11 @@ Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
     return textures;
 }
 
-std::optional<TextureBinding> BuiltinTextures::named(std::string_view name, pack::ResourceDim dim) const {
+std::optional<TextureBinding> BuiltinTextures::named(std::string_view name,
+                                                     pack::ResourceDim dim) const {
     if (dim == pack::ResourceDim::Cube) {
-        if (name == "white" || name.empty()) return TextureBinding{mWhiteCube->view(), mRepeat.get()};
+        if (name == "white" || name.empty())
+            return TextureBinding{mWhiteCube->view(), mRepeat.get()};
         return std::nullopt;
     }
     if (dim != pack::ResourceDim::Dim2D) return std::nullopt;
@@ -103,7 +106,9 @@ std::optional<TextureBinding> BuiltinTextures::named(std::string_view name, pack
 
 TextureBinding BuiltinTextures::falloff() const { return {mFalloff->view(), mClamp.get()}; }
 TextureBinding BuiltinTextures::spotCookie() const { return {mSpot->view(), mClamp.get()}; }
-TextureBinding BuiltinTextures::directionalCookie() const { return {mDirectional->view(), mRepeat.get()}; }
+TextureBinding BuiltinTextures::directionalCookie() const {
+    return {mDirectional->view(), mRepeat.get()};
+}
 TextureBinding BuiltinTextures::pointCookie() const { return {mPoint->view(), mClamp.get()}; }
 
 }  // namespace varc::runtime

@@ -10,11 +10,16 @@ namespace {
 
 std::optional<VkDescriptorType> descriptorType(pack::ResourceKind kind) {
     switch (kind) {
-        case pack::ResourceKind::SampledImage: return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-        case pack::ResourceKind::Sampler: return VK_DESCRIPTOR_TYPE_SAMPLER;
-        case pack::ResourceKind::CombinedImageSampler: return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-        case pack::ResourceKind::StorageBuffer: return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        default: return std::nullopt;
+        case pack::ResourceKind::SampledImage:
+            return VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+        case pack::ResourceKind::Sampler:
+            return VK_DESCRIPTOR_TYPE_SAMPLER;
+        case pack::ResourceKind::CombinedImageSampler:
+            return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        case pack::ResourceKind::StorageBuffer:
+            return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        default:
+            return std::nullopt;
     }
 }
 
@@ -24,8 +29,9 @@ Status addSlot(std::vector<DescriptorSlot>& slots, DescriptorSlot slot) {
         if (existing.set != slot.set || existing.binding != slot.binding) continue;
         if (existing.type != slot.type || existing.name != slot.name) {
             return makeError(ErrorCode::InvalidInput,
-                             "set " + std::to_string(slot.set) + " binding " + std::to_string(slot.binding) +
-                                 " is '" + existing.name + "' in one stage and '" + slot.name + "' in another");
+                             "set " + std::to_string(slot.set) + " binding " +
+                                 std::to_string(slot.binding) + " is '" + existing.name +
+                                 "' in one stage and '" + slot.name + "' in another");
         }
         existing.stages |= slot.stages;
         return Ok{};
@@ -36,23 +42,30 @@ Status addSlot(std::vector<DescriptorSlot>& slots, DescriptorSlot slot) {
 
 }  // namespace
 
-Result<std::vector<DescriptorSlot>> collectDescriptorSlots(const std::vector<StageReflection>& stages) {
+Result<std::vector<DescriptorSlot>> collectDescriptorSlots(
+    const std::vector<StageReflection>& stages) {
     std::vector<DescriptorSlot> slots;
     for (const StageReflection& stage : stages) {
         for (const pack::UniformBlock& block : stage.reflection->uniformBlocks) {
-            DescriptorSlot slot{block.set, block.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                static_cast<VkShaderStageFlags>(stage.stage), block.name, block,
+            DescriptorSlot slot{block.set,
+                                block.binding,
+                                VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                static_cast<VkShaderStageFlags>(stage.stage),
+                                block.name,
+                                block,
                                 pack::ResourceDim::None};
             if (Status added = addSlot(slots, std::move(slot)); !added) return added.error();
         }
         for (const pack::ResourceBinding& resource : stage.reflection->resources) {
             std::optional<VkDescriptorType> type = descriptorType(resource.kind);
             if (!type || resource.arraySize != 1) {
-                return makeError(ErrorCode::Unsupported, "resource '" + resource.name +
-                                                             "' has a kind or array size the runtime cannot bind");
+                return makeError(ErrorCode::Unsupported,
+                                 "resource '" + resource.name +
+                                     "' has a kind or array size the runtime cannot bind");
             }
-            DescriptorSlot slot{resource.set, resource.binding, *type,
-                                static_cast<VkShaderStageFlags>(stage.stage), resource.name, std::nullopt,
+            DescriptorSlot slot{resource.set,  resource.binding,
+                                *type,         static_cast<VkShaderStageFlags>(stage.stage),
+                                resource.name, std::nullopt,
                                 resource.dim};
             if (Status added = addSlot(slots, std::move(slot)); !added) return added.error();
         }

@@ -19,9 +19,12 @@ namespace {
 
 variants::LightType toVariantLight(scene::LightType type) {
     switch (type) {
-        case scene::LightType::Directional: return variants::LightType::Directional;
-        case scene::LightType::Point: return variants::LightType::Point;
-        case scene::LightType::Spot: return variants::LightType::Spot;
+        case scene::LightType::Directional:
+            return variants::LightType::Directional;
+        case scene::LightType::Point:
+            return variants::LightType::Point;
+        case scene::LightType::Spot:
+            return variants::LightType::Spot;
     }
     return variants::LightType::Directional;
 }
@@ -61,8 +64,8 @@ struct ForwardRenderer::State {
 
     Result<const RenderTarget*> target(const scene::Camera& camera);
     Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
-                                            const pack::PackRenderState& state, const RenderTarget& target,
-                                            bool hdr);
+                                            const pack::PackRenderState& state,
+                                            const RenderTarget& target, bool hdr);
     std::optional<ShaderView> findShader(const std::string& name, const Pack** owner) const;
 };
 
@@ -84,22 +87,27 @@ Result<const RenderTarget*> ForwardRenderer::State::target(const scene::Camera& 
     return &it->second;
 }
 
-Result<const VariantPipeline*> ForwardRenderer::State::pipeline(const Pack* pack, const VariantView& variant,
+Result<const VariantPipeline*> ForwardRenderer::State::pipeline(const Pack* pack,
+                                                                const VariantView& variant,
                                                                 const pack::PackRenderState& state,
-                                                                const RenderTarget& target, bool hdr) {
+                                                                const RenderTarget& target,
+                                                                bool hdr) {
     std::string name = variant.describe();
     for (const CachedPipeline& cached : pipelines) {
-        if (cached.pack == pack && cached.hdr == hdr && cached.variant == name && cached.state == state) {
+        if (cached.pack == pack && cached.hdr == hdr && cached.variant == name &&
+            cached.state == state) {
             return &cached.pipeline;
         }
     }
-    auto created = VariantPipeline::create(*context, variant, state, {target.renderPass(LoadOp::Clear), true, 1}, pipelineCache);
+    auto created = VariantPipeline::create(
+        *context, variant, state, {target.renderPass(LoadOp::Clear), true, 1}, pipelineCache);
     if (!created) return created.error();
     pipelines.push_back({pack, name, state, hdr, std::move(*created)});
     return &pipelines.back().pipeline;
 }
 
-std::optional<ShaderView> ForwardRenderer::State::findShader(const std::string& name, const Pack** owner) const {
+std::optional<ShaderView> ForwardRenderer::State::findShader(const std::string& name,
+                                                             const Pack** owner) const {
     for (const Pack* pack : packs) {
         if (auto shader = pack->findShader(name)) {
             *owner = pack;
@@ -114,7 +122,8 @@ ForwardRenderer::ForwardRenderer(ForwardRenderer&&) noexcept = default;
 ForwardRenderer& ForwardRenderer::operator=(ForwardRenderer&&) noexcept = default;
 ForwardRenderer::~ForwardRenderer() = default;
 
-Result<ForwardRenderer> ForwardRenderer::create(VulkanContext& context, std::vector<const Pack*> packs) {
+Result<ForwardRenderer> ForwardRenderer::create(VulkanContext& context,
+                                                std::vector<const Pack*> packs) {
     auto state = std::make_unique<State>();
     state->context = &context;
     state->packs = std::move(packs);
@@ -124,7 +133,8 @@ Result<ForwardRenderer> ForwardRenderer::create(VulkanContext& context, std::vec
     auto resources = DrawResources::create(context);
     if (!resources) return resources.error();
     state->resources.emplace(std::move(*resources));
-    for (scene::MeshKind kind : {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
+    for (scene::MeshKind kind :
+         {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
         auto mesh = uploadMesh(context, scene::builtinMesh(kind));
         if (!mesh) return mesh.error();
         state->meshes.emplace(kind, std::move(*mesh));
@@ -147,30 +157,39 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
     RenderedFrame frame;
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
-        std::string what = "object " + std::to_string(o) + (object.name.empty() ? "" : " '" + object.name + "'") +
-                           " (shader \"" + object.material.shader + "\")";
+        std::string what = "object " + std::to_string(o) +
+                           (object.name.empty() ? "" : " '" + object.name + "'") + " (shader \"" +
+                           object.material.shader + "\")";
         const Pack* pack = nullptr;
         std::optional<ShaderView> shader = s.findShader(object.material.shader, &pack);
         if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
         scene::ForwardLightAssignment assignment = scene::assignForwardLights(scene, object);
-        const ShaderValues& objectValues_ = values.emplace_back(objectValues(scene, object, matrices, assignment));
+        const ShaderValues& objectValues_ =
+            values.emplace_back(objectValues(scene, object, matrices, assignment));
         std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
-        const ShaderValues& material = values.emplace_back(materialValues(object.material, textureNames));
+        const ShaderValues& material =
+            values.emplace_back(materialValues(object.material, textureNames));
 
         auto addDraw = [&](const char* lightMode, const scene::Light* light) -> Status {
             std::optional<PassView> pass = shader->pass(std::string_view(lightMode));
-            if (!pass) return makeError(ErrorCode::NotFound, what + ": the shader has no " + lightMode + " pass");
+            if (!pass)
+                return makeError(ErrorCode::NotFound,
+                                 what + ": the shader has no " + lightMode + " pass");
             variants::LightDescription description;
-            description.type = light ? toVariantLight(light->type) : variants::LightType::Directional;
-            description.cookie = light && light->type != scene::LightType::Spot && light->cookie != "none";
+            description.type =
+                light ? toVariantLight(light->type) : variants::LightType::Directional;
+            description.cookie =
+                light && light->type != scene::LightType::Spot && light->cookie != "none";
             description.vertexLightCount = static_cast<int>(assignment.vertexLights.size());
             description.hdr = scene.camera.hdr;
             description.lightProbes = true;
             auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
-            if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
+            if (!variant)
+                return makeError(variant.error().code, what + ": " + variant.error().detail);
             pack::PackRenderState state = resolveRenderState(pass->renderState(), material);
             auto pipeline = s.pipeline(pack, *variant, state, **target, scene.camera.hdr);
-            if (!pipeline) return makeError(pipeline.error().code, what + ": " + pipeline.error().detail);
+            if (!pipeline)
+                return makeError(pipeline.error().code, what + ": " + pipeline.error().detail);
             const ShaderValues& lightValues = values.emplace_back(forwardLightValues(light));
             Draw draw;
             draw.pipeline = *pipeline;
@@ -178,11 +197,13 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
             draw.layers = {&lightValues, &objectValues_, &material, &camera};
             scene::LightType type = light ? light->type : scene::LightType::Directional;
             bool cookie = light && light->cookie != "none";
-            draw.textures = [&builtin, &textureNames, type, cookie](std::string_view name,
-                                                                    pack::ResourceDim dim) -> std::optional<TextureBinding> {
+            draw.textures = [&builtin, &textureNames, type, cookie](
+                                std::string_view name,
+                                pack::ResourceDim dim) -> std::optional<TextureBinding> {
                 if (name == "_LightTexture0") {
                     if (type == scene::LightType::Spot) return builtin.spotCookie();
-                    if (type == scene::LightType::Point) return cookie ? builtin.pointCookie() : builtin.falloff();
+                    if (type == scene::LightType::Point)
+                        return cookie ? builtin.pointCookie() : builtin.falloff();
                     return cookie ? builtin.directionalCookie() : builtin.named("white", dim);
                 }
                 if (name == "_LightTextureB0") return builtin.falloff();
@@ -194,12 +215,14 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
             frame.variants.push_back(variant->describe());
             return Ok{};
         };
-        const scene::Light* main = assignment.mainDirectional >= 0
-                                       ? &scene.lights[static_cast<size_t>(assignment.mainDirectional)]
-                                       : nullptr;
+        const scene::Light* main =
+            assignment.mainDirectional >= 0
+                ? &scene.lights[static_cast<size_t>(assignment.mainDirectional)]
+                : nullptr;
         if (Status added = addDraw("ForwardBase", main); !added) return added.error();
         for (int index : assignment.addLights) {
-            if (Status added = addDraw("ForwardAdd", &scene.lights[static_cast<size_t>(index)]); !added) {
+            if (Status added = addDraw("ForwardAdd", &scene.lights[static_cast<size_t>(index)]);
+                !added) {
                 return added.error();
             }
         }

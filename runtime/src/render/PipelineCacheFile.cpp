@@ -20,12 +20,15 @@ uint32_t readU32(const std::vector<std::byte>& data, size_t offset) {
 
 }  // namespace
 
-std::string pipelineCacheMismatch(const VkPhysicalDeviceProperties& device, const std::vector<std::byte>& data) {
+std::string pipelineCacheMismatch(const VkPhysicalDeviceProperties& device,
+                                  const std::vector<std::byte>& data) {
     // VkPipelineCacheHeaderVersionOne: length, version, vendorID, deviceID, UUID[16].
     constexpr size_t kHeaderSize = 16 + VK_UUID_SIZE;
-    if (data.size() < kHeaderSize) return "truncated header (" + std::to_string(data.size()) + " bytes)";
+    if (data.size() < kHeaderSize)
+        return "truncated header (" + std::to_string(data.size()) + " bytes)";
     uint32_t length = readU32(data, 0);
-    if (length < kHeaderSize || length > data.size()) return "bad header length " + std::to_string(length);
+    if (length < kHeaderSize || length > data.size())
+        return "bad header length " + std::to_string(length);
     if (readU32(data, 4) != VK_PIPELINE_CACHE_HEADER_VERSION_ONE) return "unknown header version";
     if (readU32(data, 8) != device.vendorID || readU32(data, 12) != device.deviceID) {
         return "written for another device (vendor/device id differ)";
@@ -42,7 +45,8 @@ Result<PipelineCacheFile> PipelineCacheFile::open(const VulkanContext& context, 
     file.mPath = std::move(path);
     std::vector<std::byte> data;
     if (std::ifstream in(file.mPath, std::ios::binary); in) {
-        std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
+                                std::istreambuf_iterator<char>());
         data.resize(bytes.size());
         std::memcpy(data.data(), bytes.data(), bytes.size());
         file.mRejected = pipelineCacheMismatch(context.properties(), data);
@@ -53,7 +57,8 @@ Result<PipelineCacheFile> PipelineCacheFile::open(const VulkanContext& context, 
     info.initialDataSize = data.size();
     info.pInitialData = data.empty() ? nullptr : data.data();
     VkPipelineCache cache = VK_NULL_HANDLE;
-    if (Status ok = checkVk(vkCreatePipelineCache(context.device(), &info, nullptr, &cache), "vkCreatePipelineCache");
+    if (Status ok = checkVk(vkCreatePipelineCache(context.device(), &info, nullptr, &cache),
+                            "vkCreatePipelineCache");
         !ok) {
         return ok.error();
     }
@@ -64,14 +69,16 @@ Result<PipelineCacheFile> PipelineCacheFile::open(const VulkanContext& context, 
 
 Status PipelineCacheFile::save() const {
     size_t size = 0;
-    if (Status ok = checkVk(vkGetPipelineCacheData(mContext->device(), mCache.get(), &size, nullptr),
-                            "vkGetPipelineCacheData");
+    if (Status ok =
+            checkVk(vkGetPipelineCacheData(mContext->device(), mCache.get(), &size, nullptr),
+                    "vkGetPipelineCacheData");
         !ok) {
         return ok;
     }
     std::string data(size, '\0');
-    if (Status ok = checkVk(vkGetPipelineCacheData(mContext->device(), mCache.get(), &size, data.data()),
-                            "vkGetPipelineCacheData");
+    if (Status ok =
+            checkVk(vkGetPipelineCacheData(mContext->device(), mCache.get(), &size, data.data()),
+                    "vkGetPipelineCacheData");
         !ok) {
         return ok;
     }

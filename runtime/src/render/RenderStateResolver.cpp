@@ -30,57 +30,90 @@ void resolve(pack::StateField<T>& field, const ShaderValues& material, uint32_t 
 
 VkBlendFactor toVk(pack::BlendFactor factor) {
     switch (factor) {
-        case pack::BlendFactor::Zero: return VK_BLEND_FACTOR_ZERO;
-        case pack::BlendFactor::One: return VK_BLEND_FACTOR_ONE;
-        case pack::BlendFactor::DstColor: return VK_BLEND_FACTOR_DST_COLOR;
-        case pack::BlendFactor::SrcColor: return VK_BLEND_FACTOR_SRC_COLOR;
-        case pack::BlendFactor::OneMinusDstColor: return VK_BLEND_FACTOR_ONE_MINUS_DST_COLOR;
-        case pack::BlendFactor::SrcAlpha: return VK_BLEND_FACTOR_SRC_ALPHA;
-        case pack::BlendFactor::OneMinusSrcColor: return VK_BLEND_FACTOR_ONE_MINUS_SRC_COLOR;
-        case pack::BlendFactor::DstAlpha: return VK_BLEND_FACTOR_DST_ALPHA;
-        case pack::BlendFactor::OneMinusDstAlpha: return VK_BLEND_FACTOR_ONE_MINUS_DST_ALPHA;
-        case pack::BlendFactor::SrcAlphaSaturate: return VK_BLEND_FACTOR_SRC_ALPHA_SATURATE;
-        case pack::BlendFactor::OneMinusSrcAlpha: return VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
+        case pack::BlendFactor::Zero:
+            return VK_BLEND_FACTOR_ZERO;
+        case pack::BlendFactor::One:
+            return VK_BLEND_FACTOR_ONE;
+        case pack::BlendFactor::DstColor:
+            return VK_BLEND_FACTOR_DST_COLOR;
+        case pack::BlendFactor::SrcColor:
+            return VK_BLEND_FACTOR_SRC_COLOR;
+        case pack::BlendFactor::OneMinusDstColor:
+            return VK_BLEND_FACTOR_ONE_MINUS_DST_COLOR;
+        case pack::BlendFactor::SrcAlpha:
+            return VK_BLEND_FACTOR_SRC_ALPHA;
+        case pack::BlendFactor::OneMinusSrcColor:
+            return VK_BLEND_FACTOR_ONE_MINUS_SRC_COLOR;
+        case pack::BlendFactor::DstAlpha:
+            return VK_BLEND_FACTOR_DST_ALPHA;
+        case pack::BlendFactor::OneMinusDstAlpha:
+            return VK_BLEND_FACTOR_ONE_MINUS_DST_ALPHA;
+        case pack::BlendFactor::SrcAlphaSaturate:
+            return VK_BLEND_FACTOR_SRC_ALPHA_SATURATE;
+        case pack::BlendFactor::OneMinusSrcAlpha:
+            return VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
     }
     return VK_BLEND_FACTOR_ONE;
 }
 
 VkBlendOp toVk(pack::BlendOp op) {
     switch (op) {
-        case pack::BlendOp::Add: return VK_BLEND_OP_ADD;
-        case pack::BlendOp::Subtract: return VK_BLEND_OP_SUBTRACT;
-        case pack::BlendOp::ReverseSubtract: return VK_BLEND_OP_REVERSE_SUBTRACT;
-        case pack::BlendOp::Min: return VK_BLEND_OP_MIN;
-        case pack::BlendOp::Max: return VK_BLEND_OP_MAX;
+        case pack::BlendOp::Add:
+            return VK_BLEND_OP_ADD;
+        case pack::BlendOp::Subtract:
+            return VK_BLEND_OP_SUBTRACT;
+        case pack::BlendOp::ReverseSubtract:
+            return VK_BLEND_OP_REVERSE_SUBTRACT;
+        case pack::BlendOp::Min:
+            return VK_BLEND_OP_MIN;
+        case pack::BlendOp::Max:
+            return VK_BLEND_OP_MAX;
     }
     return VK_BLEND_OP_ADD;
 }
 
 VkCompareOp toVk(pack::CompareFunction function) {
     switch (function) {
-        case pack::CompareFunction::Disabled: return VK_COMPARE_OP_ALWAYS;
-        case pack::CompareFunction::Never: return VK_COMPARE_OP_NEVER;
-        case pack::CompareFunction::Less: return VK_COMPARE_OP_LESS;
-        case pack::CompareFunction::Equal: return VK_COMPARE_OP_EQUAL;
-        case pack::CompareFunction::LessEqual: return VK_COMPARE_OP_LESS_OR_EQUAL;
-        case pack::CompareFunction::Greater: return VK_COMPARE_OP_GREATER;
-        case pack::CompareFunction::NotEqual: return VK_COMPARE_OP_NOT_EQUAL;
-        case pack::CompareFunction::GreaterEqual: return VK_COMPARE_OP_GREATER_OR_EQUAL;
-        case pack::CompareFunction::Always: return VK_COMPARE_OP_ALWAYS;
+        case pack::CompareFunction::Disabled:
+            return VK_COMPARE_OP_ALWAYS;
+        case pack::CompareFunction::Never:
+            return VK_COMPARE_OP_NEVER;
+        case pack::CompareFunction::Less:
+            return VK_COMPARE_OP_LESS;
+        case pack::CompareFunction::Equal:
+            return VK_COMPARE_OP_EQUAL;
+        case pack::CompareFunction::LessEqual:
+            return VK_COMPARE_OP_LESS_OR_EQUAL;
+        case pack::CompareFunction::Greater:
+            return VK_COMPARE_OP_GREATER;
+        case pack::CompareFunction::NotEqual:
+            return VK_COMPARE_OP_NOT_EQUAL;
+        case pack::CompareFunction::GreaterEqual:
+            return VK_COMPARE_OP_GREATER_OR_EQUAL;
+        case pack::CompareFunction::Always:
+            return VK_COMPARE_OP_ALWAYS;
     }
     return VK_COMPARE_OP_ALWAYS;
 }
 
 VkStencilOp toVk(pack::StencilOp op) {
     switch (op) {
-        case pack::StencilOp::Keep: return VK_STENCIL_OP_KEEP;
-        case pack::StencilOp::Zero: return VK_STENCIL_OP_ZERO;
-        case pack::StencilOp::Replace: return VK_STENCIL_OP_REPLACE;
-        case pack::StencilOp::IncrementSaturate: return VK_STENCIL_OP_INCREMENT_AND_CLAMP;
-        case pack::StencilOp::DecrementSaturate: return VK_STENCIL_OP_DECREMENT_AND_CLAMP;
-        case pack::StencilOp::Invert: return VK_STENCIL_OP_INVERT;
-        case pack::StencilOp::IncrementWrap: return VK_STENCIL_OP_INCREMENT_AND_WRAP;
-        case pack::StencilOp::DecrementWrap: return VK_STENCIL_OP_DECREMENT_AND_WRAP;
+        case pack::StencilOp::Keep:
+            return VK_STENCIL_OP_KEEP;
+        case pack::StencilOp::Zero:
+            return VK_STENCIL_OP_ZERO;
+        case pack::StencilOp::Replace:
+            return VK_STENCIL_OP_REPLACE;
+        case pack::StencilOp::IncrementSaturate:
+            return VK_STENCIL_OP_INCREMENT_AND_CLAMP;
+        case pack::StencilOp::DecrementSaturate:
+            return VK_STENCIL_OP_DECREMENT_AND_CLAMP;
+        case pack::StencilOp::Invert:
+            return VK_STENCIL_OP_INVERT;
+        case pack::StencilOp::IncrementWrap:
+            return VK_STENCIL_OP_INCREMENT_AND_WRAP;
+        case pack::StencilOp::DecrementWrap:
+            return VK_STENCIL_OP_DECREMENT_AND_WRAP;
     }
     return VK_STENCIL_OP_KEEP;
 }
@@ -115,7 +148,8 @@ VkColorComponentFlags toVkColorMask(uint8_t unityMask) {
 
 }  // namespace
 
-pack::PackRenderState resolveRenderState(const pack::PackRenderState& state, const ShaderValues& material) {
+pack::PackRenderState resolveRenderState(const pack::PackRenderState& state,
+                                         const ShaderValues& material) {
     pack::PackRenderState resolved = state;
     resolve(resolved.srcColor, material, pack::kBlendFactorCount);
     resolve(resolved.dstColor, material, pack::kBlendFactorCount);
@@ -145,9 +179,15 @@ VulkanRenderState toVulkan(const pack::PackRenderState& state, bool hasStencil) 
     raster.lineWidth = 1.0f;
     raster.frontFace = VK_FRONT_FACE_CLOCKWISE;
     switch (state.cull.value) {
-        case pack::CullMode::Off: raster.cullMode = VK_CULL_MODE_NONE; break;
-        case pack::CullMode::Front: raster.cullMode = VK_CULL_MODE_FRONT_BIT; break;
-        case pack::CullMode::Back: raster.cullMode = VK_CULL_MODE_BACK_BIT; break;
+        case pack::CullMode::Off:
+            raster.cullMode = VK_CULL_MODE_NONE;
+            break;
+        case pack::CullMode::Front:
+            raster.cullMode = VK_CULL_MODE_FRONT_BIT;
+            break;
+        case pack::CullMode::Back:
+            raster.cullMode = VK_CULL_MODE_BACK_BIT;
+            break;
     }
     if (state.offsetFactor.value != 0.0f || state.offsetUnits.value != 0.0f) {
         raster.depthBiasEnable = VK_TRUE;

@@ -14,7 +14,8 @@ ShaderValues cameraValues(const scene::Scene& scene, const scene::CameraMatrices
     float n = camera.nearPlane, f = camera.farPlane;
     values.set("_WorldSpaceCameraPos", camera.position, 1.0f);
     values.set("_ProjectionParams", glm::vec4(1.0f, n, f, 1.0f / f));
-    values.set("_ScreenParams", glm::vec4(width, height, 1.0f + 1.0f / width, 1.0f + 1.0f / height));
+    values.set("_ScreenParams",
+               glm::vec4(width, height, 1.0f + 1.0f / width, 1.0f + 1.0f / height));
     values.set("_ZBufferParams", glm::vec4(1.0f - f / n, f / n, (1.0f - f / n) / f, 1.0f / n));
     values.set("unity_OrthoParams", glm::vec4(0.0f));
     values.set("unity_MatrixV", m.view);
@@ -26,24 +27,29 @@ ShaderValues cameraValues(const scene::Scene& scene, const scene::CameraMatrices
     values.set("unity_WorldToCamera", m.worldToCamera);
     values.set("unity_CameraToWorld", m.cameraToWorld);
     values.set("varc_ProjectionMatrix", m.projection);
-    for (const char* name : {"_Time", "_SinTime", "_CosTime", "unity_DeltaTime"}) values.set(name, glm::vec4(0.0f));
+    for (const char* name : {"_Time", "_SinTime", "_CosTime", "unity_DeltaTime"})
+        values.set(name, glm::vec4(0.0f));
     glm::vec4 ambient(scene.ambient, 1.0f);
-    for (const char* name : {"glstate_lightmodel_ambient", "unity_AmbientSky", "unity_AmbientEquator",
-                             "unity_AmbientGround", "varc_LightModel"}) {
+    for (const char* name : {"glstate_lightmodel_ambient", "unity_AmbientSky",
+                             "unity_AmbientEquator", "unity_AmbientGround", "varc_LightModel"}) {
         values.set(name, ambient);
     }
     values.set("unity_IndirectSpecColor", glm::vec4(0.0f));
     return values;
 }
 
-ShaderValues objectValues(const scene::Scene& scene, const scene::Object& object, const scene::CameraMatrices& camera,
+ShaderValues objectValues(const scene::Scene& scene, const scene::Object& object,
+                          const scene::CameraMatrices& camera,
                           const scene::ForwardLightAssignment& assignment) {
     ShaderValues values;
     glm::mat4 objectToWorld = object.transform.localToWorld();
     glm::mat4 worldToObject = glm::inverse(objectToWorld);
-    for (const char* name : {"unity_ObjectToWorld", "_Object2World"}) values.set(name, objectToWorld);
-    for (const char* name : {"unity_WorldToObject", "_World2Object"}) values.set(name, worldToObject);
-    values.set("unity_WorldTransformParams", glm::vec4(0, 0, 0, glm::determinant(objectToWorld) < 0 ? -1.0f : 1.0f));
+    for (const char* name : {"unity_ObjectToWorld", "_Object2World"})
+        values.set(name, objectToWorld);
+    for (const char* name : {"unity_WorldToObject", "_World2Object"})
+        values.set(name, worldToObject);
+    values.set("unity_WorldTransformParams",
+               glm::vec4(0, 0, 0, glm::determinant(objectToWorld) < 0 ? -1.0f : 1.0f));
     values.set("unity_LODFade", glm::vec4(1, 1, 0, 0));
     values.set("unity_ProbesOcclusion", glm::vec4(1.0f));
     glm::mat4 modelView = camera.view * objectToWorld;
@@ -53,7 +59,8 @@ ShaderValues objectValues(const scene::Scene& scene, const scene::Object& object
     values.set("varc_ModelViewMatrixInverseTranspose", glm::transpose(glm::inverse(modelView)));
 
     std::array<glm::vec4, 7> sh = scene::packedSH(scene, object, assignment.shLights);
-    const char* shNames[] = {"unity_SHAr", "unity_SHAg", "unity_SHAb", "unity_SHBr", "unity_SHBg", "unity_SHBb", "unity_SHC"};
+    const char* shNames[] = {"unity_SHAr", "unity_SHAg", "unity_SHAb", "unity_SHBr",
+                             "unity_SHBg", "unity_SHBb", "unity_SHC"};
     for (size_t i = 0; i < sh.size(); ++i) values.set(shNames[i], sh[i]);
 
     glm::vec4 x(0.0f), y(0.0f), z(0.0f), atten(0.0f);
@@ -100,7 +107,8 @@ ShaderValues forwardLightValues(const scene::Light* light) {
     return values;
 }
 
-ShaderValues materialValues(const scene::Material& material, std::map<std::string, std::string>& textures) {
+ShaderValues materialValues(const scene::Material& material,
+                            std::map<std::string, std::string>& textures) {
     ShaderValues values;
     for (const auto& [name, value] : material.properties) {
         if (const float* number = std::get_if<float>(&value)) {

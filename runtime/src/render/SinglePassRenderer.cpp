@@ -49,7 +49,8 @@ InstancedLayout instancedLayout(const VariantView& variant) {
                 if (member.arrayCount == 0 || !name.ends_with(kArraySuffix)) continue;
                 layout.maxInstances = std::min(layout.maxInstances, member.arrayCount);
                 name.remove_suffix(std::string_view(kArraySuffix).size());
-                if (name != "unity_ObjectToWorld" && name != "unity_WorldToObject") layout.properties.emplace(name);
+                if (name != "unity_ObjectToWorld" && name != "unity_WorldToObject")
+                    layout.properties.emplace(name);
             }
         }
     }
@@ -72,7 +73,8 @@ struct DrawGroup {
 bool sameBatch(const DrawGroup& group, const DrawGroup& candidate) {
     return group.instancing && group.pack == candidate.pack &&
            group.pass->describe() == candidate.pass->describe() && group.mesh == candidate.mesh &&
-           group.lights == candidate.lights && group.sharedProperties == candidate.sharedProperties &&
+           group.lights == candidate.lights &&
+           group.sharedProperties == candidate.sharedProperties &&
            group.objects.size() < group.instancing->maxInstances;
 }
 
@@ -89,7 +91,8 @@ ShaderValues instanceValues(const scene::Scene& scene, const DrawGroup& group) {
             glm::vec4 value(0.0f);
             if (it != object.material.properties.end()) {
                 if (const auto* v = std::get_if<glm::vec4>(&it->second)) value = *v;
-                if (const auto* f = std::get_if<float>(&it->second)) value = glm::vec4(*f, 0.0f, 0.0f, 0.0f);
+                if (const auto* f = std::get_if<float>(&it->second))
+                    value = glm::vec4(*f, 0.0f, 0.0f, 0.0f);
             }
             properties[name].push_back(value);
         }
@@ -97,7 +100,8 @@ ShaderValues instanceValues(const scene::Scene& scene, const DrawGroup& group) {
     ShaderValues values;
     values.setArray("unity_ObjectToWorldArray", toWorld);
     values.setArray("unity_WorldToObjectArray", toObject);
-    for (const auto& [name, perInstance] : properties) values.setArray(name + kArraySuffix, perInstance);
+    for (const auto& [name, perInstance] : properties)
+        values.setArray(name + kArraySuffix, perInstance);
     return values;
 }
 
@@ -113,7 +117,8 @@ struct RecordedDraw {
     const VariantPipeline* pipeline = nullptr;
     const GpuMesh* mesh = nullptr;
     uint32_t instances = 1;
-    std::array<const ShaderValues*, 5> layers{};  // instances/object, draw lights, material, light buffer, camera
+    std::array<const ShaderValues*, 5>
+        layers{};  // instances/object, draw lights, material, light buffer, camera
     TextureLookup textures;
 };
 
@@ -140,18 +145,20 @@ struct SinglePassRenderer::State {
 
     Result<const RenderTarget*> target(const scene::Camera& camera);
     Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
-                                            const pack::PackRenderState& state, const RenderTarget& target,
-                                            bool hdr);
+                                            const pack::PackRenderState& state,
+                                            const RenderTarget& target, bool hdr);
     const InstancedLayout* instancing(const PassView& pass);
-    Result<std::vector<DrawGroup>> group(const scene::Scene& scene, const scene::VisibleLightSet& visible,
-                                         bool instancing);
+    Result<std::vector<DrawGroup>> group(const scene::Scene& scene,
+                                         const scene::VisibleLightSet& visible, bool instancing);
     // Records |draws| into one render pass of |rt|, submits and waits; counts them in |frame|.
-    Status submit(const RenderTarget& rt, const std::vector<RecordedDraw>& draws, RenderedFrame& frame);
+    Status submit(const RenderTarget& rt, const std::vector<RecordedDraw>& draws,
+                  RenderedFrame& frame);
 };
 
 Result<const RenderTarget*> SinglePassRenderer::State::target(const scene::Camera& camera) {
     const glm::vec4& b = camera.background;
-    auto key = std::make_tuple(camera.width, camera.height, camera.hdr, std::array<float, 4>{b.r, b.g, b.b, b.a});
+    auto key = std::make_tuple(camera.width, camera.height, camera.hdr,
+                               std::array<float, 4>{b.r, b.g, b.b, b.a});
     auto it = targets.find(key);
     if (it == targets.end()) {
         RenderTargetDesc desc;
@@ -167,16 +174,18 @@ Result<const RenderTarget*> SinglePassRenderer::State::target(const scene::Camer
     return &it->second;
 }
 
-Result<const VariantPipeline*> SinglePassRenderer::State::pipeline(const Pack* pack, const VariantView& variant,
-                                                                   const pack::PackRenderState& state,
-                                                                   const RenderTarget& target, bool hdr) {
+Result<const VariantPipeline*> SinglePassRenderer::State::pipeline(
+    const Pack* pack, const VariantView& variant, const pack::PackRenderState& state,
+    const RenderTarget& target, bool hdr) {
     std::string name = variant.describe();
     for (const CachedPipeline& cached : pipelines) {
-        if (cached.pack == pack && cached.hdr == hdr && cached.variant == name && cached.state == state) {
+        if (cached.pack == pack && cached.hdr == hdr && cached.variant == name &&
+            cached.state == state) {
             return &cached.pipeline;
         }
     }
-    auto created = VariantPipeline::create(*context, variant, state, {target.renderPass(LoadOp::Clear), true, 1}, pipelineCache);
+    auto created = VariantPipeline::create(
+        *context, variant, state, {target.renderPass(LoadOp::Clear), true, 1}, pipelineCache);
     if (!created) return created.error();
     pipelines.push_back({pack, name, state, hdr, std::move(*created)});
     return &pipelines.back().pipeline;
@@ -192,14 +201,14 @@ const InstancedLayout* SinglePassRenderer::State::instancing(const PassView& pas
     return it->second ? &*it->second : nullptr;
 }
 
-Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(const scene::Scene& scene,
-                                                                const scene::VisibleLightSet& visible,
-                                                                bool instancing) {
+Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(
+    const scene::Scene& scene, const scene::VisibleLightSet& visible, bool instancing) {
     std::vector<DrawGroup> groups;
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
-        std::string what = "object " + std::to_string(o) + (object.name.empty() ? "" : " '" + object.name + "'") +
-                           " (shader \"" + object.material.shader + "\")";
+        std::string what = "object " + std::to_string(o) +
+                           (object.name.empty() ? "" : " '" + object.name + "'") + " (shader \"" +
+                           object.material.shader + "\")";
         DrawGroup candidate;
         std::optional<ShaderView> shader;
         for (const Pack* pack : packs) {
@@ -210,7 +219,8 @@ Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(const scene::Sce
         }
         if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
         candidate.pass = shader->pass(size_t{0});
-        if (!candidate.pass) return makeError(ErrorCode::NotFound, what + ": the shader has no pass");
+        if (!candidate.pass)
+            return makeError(ErrorCode::NotFound, what + ": the shader has no pass");
         candidate.mesh = object.mesh;
         candidate.lights = scene::objectLightList(scene, visible, object);
         candidate.sharedProperties = object.material.properties;
@@ -232,8 +242,9 @@ Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(const scene::Sce
     return groups;
 }
 
-Status SinglePassRenderer::State::submit(const RenderTarget& rt, const std::vector<RecordedDraw>& draws,
-                                        RenderedFrame& frame) {
+Status SinglePassRenderer::State::submit(const RenderTarget& rt,
+                                         const std::vector<RecordedDraw>& draws,
+                                         RenderedFrame& frame) {
     Status bound = Ok{};
     Status submitted = context->submitAndWait([&](VkCommandBuffer commands) {
         rt.begin(commands, LoadOp::Clear);
@@ -266,7 +277,8 @@ SinglePassRenderer::SinglePassRenderer(SinglePassRenderer&&) noexcept = default;
 SinglePassRenderer& SinglePassRenderer::operator=(SinglePassRenderer&&) noexcept = default;
 SinglePassRenderer::~SinglePassRenderer() = default;
 
-Result<SinglePassRenderer> SinglePassRenderer::create(VulkanContext& context, std::vector<const Pack*> packs) {
+Result<SinglePassRenderer> SinglePassRenderer::create(VulkanContext& context,
+                                                      std::vector<const Pack*> packs) {
     auto state = std::make_unique<State>();
     state->context = &context;
     state->packs = std::move(packs);
@@ -276,7 +288,8 @@ Result<SinglePassRenderer> SinglePassRenderer::create(VulkanContext& context, st
     auto resources = DrawResources::create(context);
     if (!resources) return resources.error();
     state->resources.emplace(std::move(*resources));
-    for (scene::MeshKind kind : {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
+    for (scene::MeshKind kind :
+         {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
         auto mesh = uploadMesh(context, scene::builtinMesh(kind));
         if (!mesh) return mesh.error();
         state->meshes.emplace(kind, std::move(*mesh));
@@ -284,7 +297,8 @@ Result<SinglePassRenderer> SinglePassRenderer::create(VulkanContext& context, st
     return SinglePassRenderer(std::move(state));
 }
 
-Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene, const SinglePassOptions& options) {
+Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
+                                                 const SinglePassOptions& options) {
     State& s = *mState;
     auto target = s.target(scene.camera);
     if (!target) return target.error();
@@ -305,10 +319,13 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene, cons
         std::vector<std::string> keywords;
         if (instanced) keywords.push_back(kInstancingKeyword);
         auto variant = group.pass->lookup(keywords, variants::SelectionPolicy::Exact);
-        if (!variant) return makeError(variant.error().code, "object " + std::to_string(group.objects.front()) +
-                                                                 ": " + variant.error().detail);
+        if (!variant)
+            return makeError(
+                variant.error().code,
+                "object " + std::to_string(group.objects.front()) + ": " + variant.error().detail);
         std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
-        const ShaderValues& material = values.emplace_back(materialValues(first.material, textureNames));
+        const ShaderValues& material =
+            values.emplace_back(materialValues(first.material, textureNames));
         pack::PackRenderState state = resolveRenderState(group.pass->renderState(), material);
         auto pipeline = s.pipeline(group.pack, *variant, state, **target, scene.camera.hdr);
         if (!pipeline) return pipeline.error();
@@ -316,12 +333,13 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene, cons
         draw.pipeline = *pipeline;
         draw.mesh = &s.meshes.at(group.mesh);
         draw.instances = static_cast<uint32_t>(group.objects.size());
-        const ShaderValues& objects =
-            values.emplace_back(instanced ? instanceValues(scene, group) : singleObjectValues(first));
+        const ShaderValues& objects = values.emplace_back(instanced ? instanceValues(scene, group)
+                                                                    : singleObjectValues(first));
         const ShaderValues& lights = values.emplace_back(drawLightValues(group.lights));
         draw.layers = {&objects, &lights, &material, &lightBuffer, &camera};
-        draw.textures = [&builtin, &textureNames](std::string_view name,
-                                                  pack::ResourceDim dim) -> std::optional<TextureBinding> {
+        draw.textures = [&builtin, &textureNames](
+                            std::string_view name,
+                            pack::ResourceDim dim) -> std::optional<TextureBinding> {
             auto it = textureNames.find(std::string(name));
             return builtin.named(it == textureNames.end() ? "white" : it->second, dim);
         };

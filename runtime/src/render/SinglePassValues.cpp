@@ -30,7 +30,8 @@ ShaderValues lightBufferValues(const scene::Scene& scene, const scene::VisibleLi
         positions[slot] = glm::vec4(light.transform.position, 1.0f);
         glm::vec2 spot(0.0f, 1.0f);
         if (light.type == scene::LightType::Spot) spot = spotFadeConstants(light.spotAngle);
-        attenuations[slot] = glm::vec4(1.0f / std::max(light.range * light.range, 1e-5f), 0.0f, spot.x, spot.y);
+        attenuations[slot] =
+            glm::vec4(1.0f / std::max(light.range * light.range, 1e-5f), 0.0f, spot.x, spot.y);
     }
     ShaderValues values;
     values.setArray("_VisibleLightColors", colors);
@@ -47,7 +48,8 @@ ShaderValues drawLightValues(const scene::ObjectLightList& list) {
         (k < 4 ? first : second)[component] = static_cast<float>(list.slots[k]);
     }
     ShaderValues values;
-    values.set("unity_LightIndicesOffsetAndCount", glm::vec4(0.0f, static_cast<float>(list.count), 0.0f, 0.0f));
+    values.set("unity_LightIndicesOffsetAndCount",
+               glm::vec4(0.0f, static_cast<float>(list.count), 0.0f, 0.0f));
     values.set("unity_4LightIndices0", first);
     values.set("unity_4LightIndices1", second);
     return values;

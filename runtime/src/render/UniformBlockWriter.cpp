@@ -45,7 +45,9 @@ MemberShape shapeOf(const std::string& type) {
 
 void writeScalar(std::byte* at, float value, MemberShape::Scalar scalar) {
     switch (scalar) {
-        case MemberShape::Scalar::Float: std::memcpy(at, &value, 4); break;
+        case MemberShape::Scalar::Float:
+            std::memcpy(at, &value, 4);
+            break;
         case MemberShape::Scalar::Int: {
             auto integer = static_cast<int32_t>(value);
             std::memcpy(at, &integer, 4);
@@ -61,8 +63,8 @@ void writeScalar(std::byte* at, float value, MemberShape::Scalar scalar) {
 
 // Writes one element (a scalar, vector or matrix) of |value| at |at|; |vectorStride| separates
 // matrix columns.
-void writeElement(std::byte* at, const MemberShape& shape, uint32_t vectorStride, const float* value,
-                  uint32_t valueWidth) {
+void writeElement(std::byte* at, const MemberShape& shape, uint32_t vectorStride,
+                  const float* value, uint32_t valueWidth) {
     if (!shape.matrix) {
         for (uint32_t c = 0; c < std::min(shape.components, valueWidth); ++c) {
             writeScalar(at + 4 * c, value[c], shape.scalar);
@@ -72,7 +74,8 @@ void writeElement(std::byte* at, const MemberShape& shape, uint32_t vectorStride
     if (valueWidth != 16) return;  // only a 4x4 value fills a matrix member
     for (uint32_t column = 0; column < shape.vectors; ++column) {
         for (uint32_t row = 0; row < shape.components; ++row) {
-            writeScalar(at + column * vectorStride + 4 * row, value[column * 4 + row], shape.scalar);
+            writeScalar(at + column * vectorStride + 4 * row, value[column * 4 + row],
+                        shape.scalar);
         }
     }
 }
@@ -100,8 +103,8 @@ BlockWriteReport writeUniformBlock(const pack::UniformBlock& block, ValueLayers 
         for (uint32_t e = 0; e < count; ++e) {
             uint64_t offset = uint64_t{member.offset} + uint64_t{e} * stride;
             if (offset + stride > bytes.size()) break;  // never write past the block
-            writeElement(bytes.data() + offset, shape, vectorStride, value->data.data() + e * value->width,
-                         value->width);
+            writeElement(bytes.data() + offset, shape, vectorStride,
+                         value->data.data() + e * value->width, value->width);
         }
     }
     return report;

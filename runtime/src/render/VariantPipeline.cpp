@@ -23,15 +23,17 @@ Result<std::vector<UniqueHandle<VkDescriptorSetLayout>>> createSetLayouts(
     for (uint32_t set = 0; set < descriptorSetCount(slots); ++set) {
         std::vector<VkDescriptorSetLayoutBinding> bindings;
         for (const DescriptorSlot& slot : slots) {
-            if (slot.set == set) bindings.push_back({slot.binding, slot.type, 1, slot.stages, nullptr});
+            if (slot.set == set)
+                bindings.push_back({slot.binding, slot.type, 1, slot.stages, nullptr});
         }
         VkDescriptorSetLayoutCreateInfo info{};
         info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
         info.bindingCount = static_cast<uint32_t>(bindings.size());
         info.pBindings = bindings.data();
         VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-        if (Status ok = checkVk(vkCreateDescriptorSetLayout(context.device(), &info, nullptr, &layout),
-                                "vkCreateDescriptorSetLayout");
+        if (Status ok =
+                checkVk(vkCreateDescriptorSetLayout(context.device(), &info, nullptr, &layout),
+                        "vkCreateDescriptorSetLayout");
             !ok) {
             return ok.error();
         }
@@ -44,13 +46,15 @@ Result<std::vector<UniqueHandle<VkDescriptorSetLayout>>> createSetLayouts(
 
 Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const VariantView& variant,
                                                 const pack::PackRenderState& resolvedState,
-                                                const PipelineTarget& target, VkPipelineCache cache) {
+                                                const PipelineTarget& target,
+                                                VkPipelineCache cache) {
     VariantPipeline result;
     result.mDescription = variant.describe();
     std::optional<ProgramView> vertex = variant.program(pack::Stage::Vertex);
     std::optional<ProgramView> fragment = variant.program(pack::Stage::Fragment);
     if (!vertex || !fragment) {
-        return makeError(ErrorCode::InvalidInput, result.mDescription + ": needs a vertex and a fragment program");
+        return makeError(ErrorCode::InvalidInput,
+                         result.mDescription + ": needs a vertex and a fragment program");
     }
     pack::ProgramReflection vertexReflection = vertex->reflection();
     pack::ProgramReflection fragmentReflection = fragment->reflection();
@@ -90,10 +94,20 @@ Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const Va
 
     std::string vertexEntry(vertex->entryPoint()), fragmentEntry(fragment->entryPoint());
     std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-    stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_VERTEX_BIT,
-                 modules[0].get(), vertexEntry.c_str(), nullptr};
-    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0, VK_SHADER_STAGE_FRAGMENT_BIT,
-                 modules[1].get(), fragmentEntry.c_str(), nullptr};
+    stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                 nullptr,
+                 0,
+                 VK_SHADER_STAGE_VERTEX_BIT,
+                 modules[0].get(),
+                 vertexEntry.c_str(),
+                 nullptr};
+    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                 nullptr,
+                 0,
+                 VK_SHADER_STAGE_FRAGMENT_BIT,
+                 modules[1].get(),
+                 fragmentEntry.c_str(),
+                 nullptr};
 
     VkPipelineVertexInputStateCreateInfo vertexInputInfo{};
 
@@ -101,7 +115,8 @@ Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const Va
     if (!vertexInput->attributes.empty()) {
         vertexInputInfo.vertexBindingDescriptionCount = 1;
         vertexInputInfo.pVertexBindingDescriptions = &vertexInput->binding;
-        vertexInputInfo.vertexAttributeDescriptionCount = static_cast<uint32_t>(vertexInput->attributes.size());
+        vertexInputInfo.vertexAttributeDescriptionCount =
+            static_cast<uint32_t>(vertexInput->attributes.size());
         vertexInputInfo.pVertexAttributeDescriptions = vertexInput->attributes.data();
     }
     VkPipelineInputAssemblyStateCreateInfo assembly{};
@@ -117,10 +132,12 @@ Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const Va
     VulkanRenderState state = toVulkan(resolvedState, target.hasStencil);
     VkPipelineColorBlendStateCreateInfo blend{};
     blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
-    std::vector<VkPipelineColorBlendAttachmentState> attachments(target.colorAttachments, state.blend);
+    std::vector<VkPipelineColorBlendAttachmentState> attachments(target.colorAttachments,
+                                                                 state.blend);
     blend.attachmentCount = static_cast<uint32_t>(attachments.size());
     blend.pAttachments = attachments.data();
-    std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
+                                                   VK_DYNAMIC_STATE_SCISSOR};
     VkPipelineDynamicStateCreateInfo dynamic{};
     dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
     dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
@@ -142,8 +159,9 @@ Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const Va
     info.layout = layout;
     info.renderPass = target.renderPass;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    if (Status ok = checkVk(vkCreateGraphicsPipelines(context.device(), cache, 1, &info, nullptr, &pipeline),
-                            "vkCreateGraphicsPipelines");
+    if (Status ok = checkVk(
+            vkCreateGraphicsPipelines(context.device(), cache, 1, &info, nullptr, &pipeline),
+            "vkCreateGraphicsPipelines");
         !ok) {
         return withContext(result.mDescription, ok.error());
     }

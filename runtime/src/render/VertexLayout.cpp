@@ -27,10 +27,13 @@ std::optional<Stream> streamFor(const pack::VertexInput& input) {
     if (is("POSITION") || key == "VARC_VERTEX" || is("SV_POSITION")) {
         return Stream{offsetof(MeshVertex, position), VK_FORMAT_R32G32B32_SFLOAT};
     }
-    if (is("NORMAL") || key == "VARC_NORMAL") return Stream{offsetof(MeshVertex, normal), VK_FORMAT_R32G32B32_SFLOAT};
+    if (is("NORMAL") || key == "VARC_NORMAL")
+        return Stream{offsetof(MeshVertex, normal), VK_FORMAT_R32G32B32_SFLOAT};
     if (is("TANGENT")) return Stream{offsetof(MeshVertex, tangent), VK_FORMAT_R32G32B32A32_SFLOAT};
-    if (is("TEXCOORD") || is("VARC_MULTITEXCOORD")) return Stream{offsetof(MeshVertex, uv), VK_FORMAT_R32G32_SFLOAT};
-    if (is("COLOR") || key == "VARC_COLOR") return Stream{offsetof(MeshVertex, color), VK_FORMAT_R32G32B32A32_SFLOAT};
+    if (is("TEXCOORD") || is("VARC_MULTITEXCOORD"))
+        return Stream{offsetof(MeshVertex, uv), VK_FORMAT_R32G32_SFLOAT};
+    if (is("COLOR") || key == "VARC_COLOR")
+        return Stream{offsetof(MeshVertex, color), VK_FORMAT_R32G32B32A32_SFLOAT};
     return std::nullopt;
 }
 
@@ -42,9 +45,10 @@ Result<VertexInputLayout> vertexInputLayout(const std::vector<pack::VertexInput>
     for (const pack::VertexInput& input : inputs) {
         std::optional<Stream> stream = streamFor(input);
         if (!stream) {
-            return makeError(ErrorCode::InvalidInput,
-                             "vertex input '" + input.name + "' (semantic '" + input.semantic +
-                                 "') has no mesh data; supported: POSITION, NORMAL, TANGENT, TEXCOORDn, COLOR");
+            return makeError(
+                ErrorCode::InvalidInput,
+                "vertex input '" + input.name + "' (semantic '" + input.semantic +
+                    "') has no mesh data; supported: POSITION, NORMAL, TANGENT, TEXCOORDn, COLOR");
         }
         layout.attributes.push_back({input.location, 0, stream->format, stream->offset});
     }

@@ -14,7 +14,8 @@ namespace {
 // |count| distinct sorted keys with few bits set, like variant keys.
 std::string sortedKeys(uint32_t count) {
     std::set<uint64_t> keys;
-    for (uint64_t i = 0; keys.size() < count; ++i) keys.insert((i * 0x9e3779b97f4a7c15ULL) & 0x0000'0fff'00ff'0f0fULL);
+    for (uint64_t i = 0; keys.size() < count; ++i)
+        keys.insert((i * 0x9e3779b97f4a7c15ULL) & 0x0000'0fff'00ff'0f0fULL);
     std::string bytes;
     for (uint64_t key : keys) pack::appendU64(bytes, key);
     return bytes;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "varc/runtime/render/RenderStateResolver.h"
-
 #include <gtest/gtest.h>
+
+#include "varc/runtime/render/RenderStateResolver.h"
 
 namespace varc::runtime {
 namespace {
@@ -45,7 +45,8 @@ TEST(RenderStateResolver, CullingAndColorMaskFollowUnityConventions) {
     VulkanRenderState vk = toVulkan(resolveRenderState(state, {}), true);
     EXPECT_EQ(vk.rasterization.cullMode, static_cast<VkCullModeFlags>(VK_CULL_MODE_FRONT_BIT));
     EXPECT_EQ(vk.rasterization.frontFace, VK_FRONT_FACE_CLOCKWISE);
-    EXPECT_EQ(vk.blend.colorWriteMask, static_cast<VkColorComponentFlags>(VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_A_BIT));
+    EXPECT_EQ(vk.blend.colorWriteMask, static_cast<VkColorComponentFlags>(
+                                           VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_A_BIT));
 }
 
 TEST(RenderStateResolver, StencilNeedsAStencilAttachment) {

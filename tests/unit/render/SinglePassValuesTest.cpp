@@ -56,7 +56,8 @@ TEST(SinglePassValues, LightBufferPerLightType) {
     EXPECT_EQ(element(values, "_VisibleLightDirectionsOrPositions", 2), glm::vec4(1, 2, 3, 1));
     EXPECT_EQ(element(values, "_VisibleLightAttenuations", 2), glm::vec4(1.0f / 16.0f, 0, 0, 1));
     const glm::vec2 ab = spotFadeConstants(90.0f);
-    EXPECT_EQ(element(values, "_VisibleLightAttenuations", 0), glm::vec4(1.0f / 16.0f, 0, ab.x, ab.y));
+    EXPECT_EQ(element(values, "_VisibleLightAttenuations", 0),
+              glm::vec4(1.0f / 16.0f, 0, ab.x, ab.y));
     EXPECT_EQ(element(values, "_VisibleLightSpotDirections", 0), glm::vec4(0, 0, -1, 0));
     EXPECT_EQ(element(values, "_VisibleLightColors", 3), glm::vec4(0.0f));
 }
@@ -70,7 +71,8 @@ TEST(SinglePassValues, DrawListsSplitIntoPixelAndVertexLights) {
     EXPECT_EQ(element(values, "unity_4LightIndices0", 0), glm::vec4(5, 3, 9, 0));
     EXPECT_EQ(element(values, "unity_4LightIndices1", 0), glm::vec4(15, 1, 2, 7));
     scene::ObjectLightList none;
-    EXPECT_EQ(element(drawLightValues(none), "unity_LightIndicesOffsetAndCount", 0), glm::vec4(0.0f));
+    EXPECT_EQ(element(drawLightValues(none), "unity_LightIndicesOffsetAndCount", 0),
+              glm::vec4(0.0f));
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "varc/runtime/render/UniformBlockWriter.h"
-
 #include <gtest/gtest.h>
 
 #include <cstring>
+
+#include "varc/runtime/render/UniformBlockWriter.h"
 
 namespace varc::runtime {
 namespace {

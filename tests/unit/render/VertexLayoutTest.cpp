@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "varc/runtime/render/VertexLayout.h"
-
 #include <gtest/gtest.h>
 
 #include <cstddef>
+
+#include "varc/runtime/render/VertexLayout.h"
 
 namespace varc::runtime {
 namespace {

@@ -17,10 +17,10 @@ public:
 
     // "white", "black", "bump" (2D) and "white" (cube), linear-repeat sampled.
     std::optional<TextureBinding> named(std::string_view name, pack::ResourceDim dim) const;
-    TextureBinding falloff() const;           // 1024 x 1, linear, clamp
-    TextureBinding spotCookie() const;        // linear, clamp
-    TextureBinding directionalCookie() const; // linear, repeat
-    TextureBinding pointCookie() const;       // cube, linear, clamp
+    TextureBinding falloff() const;            // 1024 x 1, linear, clamp
+    TextureBinding spotCookie() const;         // linear, clamp
+    TextureBinding directionalCookie() const;  // linear, repeat
+    TextureBinding pointCookie() const;        // cube, linear, clamp
 
 private:
     std::optional<Texture> mWhite, mBlack, mBump, mWhiteCube, mFalloff, mSpot, mDirectional, mPoint;

@@ -18,8 +18,8 @@ struct DescriptorSlot {
     uint32_t binding = 0;
     VkDescriptorType type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     VkShaderStageFlags stages = 0;
-    std::string name;                          // block or resource name
-    std::optional<pack::UniformBlock> block;   // uniform buffers: the layout to fill
+    std::string name;                                 // block or resource name
+    std::optional<pack::UniformBlock> block;          // uniform buffers: the layout to fill
     pack::ResourceDim dim = pack::ResourceDim::None;  // textures: 2D, Cube, ...
 };
 
@@ -31,7 +31,8 @@ struct StageReflection {
 // Slots sorted by (set, binding). A (set, binding) used by two stages must name the same thing
 // (it then gets both stage bits); otherwise InvalidInput. Storage images, texel buffers and
 // input attachments are Unsupported (the forward and deferred techniques never use them).
-Result<std::vector<DescriptorSlot>> collectDescriptorSlots(const std::vector<StageReflection>& stages);
+Result<std::vector<DescriptorSlot>> collectDescriptorSlots(
+    const std::vector<StageReflection>& stages);
 
 // 1 + the highest set number used; 0 when there are no descriptors.
 uint32_t descriptorSetCount(const std::vector<DescriptorSlot>& slots);

@@ -21,12 +21,14 @@ struct TextureBinding {
     VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
 };
 // The texture bound for a resource name and dimension; nullopt = the runtime has none (error).
-using TextureLookup = std::function<std::optional<TextureBinding>(std::string_view name, pack::ResourceDim dim)>;
+using TextureLookup =
+    std::function<std::optional<TextureBinding>(std::string_view name, pack::ResourceDim dim)>;
 
 class DrawResources {
 public:
     // |uniformBytes| of uniform memory and room for |maxSets| descriptor sets per frame.
-    static Result<DrawResources> create(VulkanContext& context, VkDeviceSize uniformBytes = 8u << 20,
+    static Result<DrawResources> create(VulkanContext& context,
+                                        VkDeviceSize uniformBytes = 8u << 20,
                                         uint32_t maxSets = 4096);
 
     // Writes |pipeline|'s uniform blocks from |layers| and its textures from |textures|, then

@@ -21,8 +21,8 @@
 namespace varc::runtime {
 
 struct RenderedFrame {
-    Image image;                       // Rgba8 (LDR: RGBA8_UNORM) or RgbaFloat (HDR: RGBA16F)
-    std::vector<std::string> variants; // VariantView::describe() of every draw, in draw order
+    Image image;                        // Rgba8 (LDR: RGBA8_UNORM) or RgbaFloat (HDR: RGBA16F)
+    std::vector<std::string> variants;  // VariantView::describe() of every draw, in draw order
     uint32_t draws = 0;
 };
 

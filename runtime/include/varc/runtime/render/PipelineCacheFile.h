@@ -13,7 +13,8 @@
 namespace varc::runtime {
 
 // Why a cache file's contents were not used (empty = they were).
-std::string pipelineCacheMismatch(const VkPhysicalDeviceProperties& device, const std::vector<std::byte>& data);
+std::string pipelineCacheMismatch(const VkPhysicalDeviceProperties& device,
+                                  const std::vector<std::byte>& data);
 
 class PipelineCacheFile {
 public:

@@ -13,7 +13,8 @@ namespace varc::runtime {
 // Every StateField's property replaced by the material's float value (Unity's enum numbers, as
 // `Blend [_SrcBlend]` expects); fields whose property the material lacks keep their default.
 // The result has no property names left, so it compares and hashes as plain values.
-pack::PackRenderState resolveRenderState(const pack::PackRenderState& state, const ShaderValues& material);
+pack::PackRenderState resolveRenderState(const pack::PackRenderState& state,
+                                         const ShaderValues& material);
 
 // The Vulkan pieces of a resolved state. Culling uses VK_FRONT_FACE_CLOCKWISE: Unity's meshes
 // are clockwise from outside and varc's projection flips y (SHADER_ABI.md §2).

@@ -16,7 +16,8 @@ ShaderValues cameraValues(const scene::Scene& scene, const scene::CameraMatrices
 // UnityPerDraw, UnityProbes (SH of |assignment.shLights| plus ambient), UnityVertexLights
 // (§4.3–4.5), and the GLSL legacy matrices (§4.11).
 ShaderValues objectValues(const scene::Scene& scene, const scene::Object& object,
-                          const scene::CameraMatrices& camera, const scene::ForwardLightAssignment& assignment);
+                          const scene::CameraMatrices& camera,
+                          const scene::ForwardLightAssignment& assignment);
 
 // UnityLighting (§4.6) for one pixel light of a forward pass; nullptr = the ForwardBase pass
 // without a main directional light (colour 0).
@@ -24,6 +25,7 @@ ShaderValues forwardLightValues(const scene::Light* light);
 
 // Material properties as given: floats, vectors; textures get `<name>_ST` = (1, 1, 0, 0) unless
 // the material sets it. Texture names are returned through |textures| (property -> name).
-ShaderValues materialValues(const scene::Material& material, std::map<std::string, std::string>& textures);
+ShaderValues materialValues(const scene::Material& material,
+                            std::map<std::string, std::string>& textures);
 
 }  // namespace varc::runtime

@@ -25,7 +25,8 @@ struct SinglePassOptions {
 class SinglePassRenderer {
 public:
     // |packs| must outlive the renderer; shaders are found by name in the first pack that has them.
-    static Result<SinglePassRenderer> create(VulkanContext& context, std::vector<const Pack*> packs);
+    static Result<SinglePassRenderer> create(VulkanContext& context,
+                                             std::vector<const Pack*> packs);
 
     // Draws every object with its shader's first pass, in scene order (batches at the position
     // of their first object). Errors name the object and shader: an unknown shader, a shader

@@ -26,13 +26,16 @@ public:
     // SPIR-V that fails to decompress, unsupported vertex inputs or descriptors, Vulkan failures.
     static Result<VariantPipeline> create(VulkanContext& context, const VariantView& variant,
                                           const pack::PackRenderState& resolvedState,
-                                          const PipelineTarget& target, VkPipelineCache cache = VK_NULL_HANDLE);
+                                          const PipelineTarget& target,
+                                          VkPipelineCache cache = VK_NULL_HANDLE);
 
     VkPipeline pipeline() const { return mPipeline.get(); }
     VkPipelineLayout layout() const { return mLayout.get(); }
     const std::vector<DescriptorSlot>& slots() const { return mSlots; }
     // One layout per set 0..setCount-1 (empty layouts fill gaps).
-    const std::vector<UniqueHandle<VkDescriptorSetLayout>>& setLayouts() const { return mSetLayouts; }
+    const std::vector<UniqueHandle<VkDescriptorSetLayout>>& setLayouts() const {
+        return mSetLayouts;
+    }
     const std::string& description() const { return mDescription; }
 
 private:
