@@ -7,6 +7,7 @@
 
 #include "render/DeferredTargets.h"
 #include "render/GpuMesh.h"
+#include "render/RendererBase.h"
 #include "varc/runtime/PassView.h"
 #include "varc/runtime/ShaderView.h"
 #include "varc/runtime/render/BuiltinTextures.h"
@@ -62,14 +63,8 @@ Result<GpuMesh> uploadQuad(VulkanContext& context, const scene::CameraMatrices& 
 
 }  // namespace
 
-struct DeferredRenderer::State {
-    VkPipelineCache pipelineCache = VK_NULL_HANDLE;
-    VulkanContext* context = nullptr;
-    std::vector<const Pack*> packs;
+struct DeferredRenderer::State : RendererBase {
     std::string lightShader;
-    std::optional<BuiltinTextures> textures;
-    std::optional<DrawResources> resources;
-    std::map<scene::MeshKind, GpuMesh> meshes;
     UniqueHandle<VkSampler> nearest;
     struct TargetKey {
         uint32_t width, height;
@@ -78,21 +73,11 @@ struct DeferredRenderer::State {
         auto operator<=>(const TargetKey&) const = default;
     };
     std::map<TargetKey, DeferredTargets> targets;
-    struct CachedPipeline {
-        const Pack* pack;
-        std::string variant;
-        pack::PackRenderState state;
-        Phase phase;
-        bool hdr;
-        VariantPipeline pipeline;
-    };
-    std::deque<CachedPipeline> pipelines;
 
     Result<const DeferredTargets*> target(const scene::Camera& camera);
     Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
                                             const pack::PackRenderState& state, Phase phase,
                                             const DeferredTargets& target, bool hdr);
-    std::optional<ShaderView> findShader(const std::string& name, const Pack** owner) const;
 };
 
 Result<const DeferredTargets*> DeferredRenderer::State::target(const scene::Camera& camera) {
@@ -110,13 +95,6 @@ Result<const DeferredTargets*> DeferredRenderer::State::target(const scene::Came
 Result<const VariantPipeline*> DeferredRenderer::State::pipeline(
     const Pack* pack, const VariantView& variant, const pack::PackRenderState& state, Phase phase,
     const DeferredTargets& target, bool hdr) {
-    std::string name = variant.describe();
-    for (const CachedPipeline& cached : pipelines) {
-        if (cached.pack == pack && cached.hdr == hdr && cached.phase == phase &&
-            cached.variant == name && cached.state == state) {
-            return &cached.pipeline;
-        }
-    }
     PipelineTarget pipelineTarget;
     switch (phase) {
         case Phase::GBuffer:
@@ -130,21 +108,8 @@ Result<const VariantPipeline*> DeferredRenderer::State::pipeline(
             pipelineTarget = {target.decodePass(), true, 1};
             break;
     }
-    auto created = VariantPipeline::create(*context, variant, state, pipelineTarget, pipelineCache);
-    if (!created) return created.error();
-    pipelines.push_back({pack, name, state, phase, hdr, std::move(*created)});
-    return &pipelines.back().pipeline;
-}
-
-std::optional<ShaderView> DeferredRenderer::State::findShader(const std::string& name,
-                                                              const Pack** owner) const {
-    for (const Pack* pack : packs) {
-        if (auto shader = pack->findShader(name)) {
-            *owner = pack;
-            return shader;
-        }
-    }
-    return std::nullopt;
+    uint32_t targetKind = static_cast<uint32_t>(phase) * 2 + (hdr ? 1u : 0u);
+    return RendererBase::pipeline(pack, variant, state, pipelineTarget, targetKind);
 }
 
 DeferredRenderer::DeferredRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
@@ -156,21 +121,8 @@ Result<DeferredRenderer> DeferredRenderer::create(VulkanContext& context,
                                                   std::vector<const Pack*> packs,
                                                   std::string lightShader) {
     auto state = std::make_unique<State>();
-    state->context = &context;
-    state->packs = std::move(packs);
+    if (Status ready = state->init(context, std::move(packs)); !ready) return ready.error();
     state->lightShader = std::move(lightShader);
-    auto textures = BuiltinTextures::create(context);
-    if (!textures) return textures.error();
-    state->textures.emplace(std::move(*textures));
-    auto resources = DrawResources::create(context);
-    if (!resources) return resources.error();
-    state->resources.emplace(std::move(*resources));
-    for (scene::MeshKind kind :
-         {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
-        auto mesh = uploadMesh(context, scene::builtinMesh(kind));
-        if (!mesh) return mesh.error();
-        state->meshes.emplace(kind, std::move(*mesh));
-    }
     SamplerDesc nearest;
     nearest.filter = VK_FILTER_NEAREST;
     nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;

@@ -4,6 +4,7 @@
 #include <deque>
 
 #include "render/GpuMesh.h"
+#include "render/RendererBase.h"
 #include "varc/runtime/PassView.h"
 #include "varc/runtime/ShaderView.h"
 #include "varc/runtime/render/RenderStateResolver.h"
@@ -39,13 +40,7 @@ struct Draw {
 
 }  // namespace
 
-struct ForwardRenderer::State {
-    VkPipelineCache pipelineCache = VK_NULL_HANDLE;
-    VulkanContext* context = nullptr;
-    std::vector<const Pack*> packs;
-    std::optional<BuiltinTextures> textures;
-    std::optional<DrawResources> resources;
-    std::map<scene::MeshKind, GpuMesh> meshes;
+struct ForwardRenderer::State : RendererBase {
     struct TargetKey {
         uint32_t width, height;
         bool hdr;
@@ -53,20 +48,8 @@ struct ForwardRenderer::State {
         auto operator<=>(const TargetKey&) const = default;
     };
     std::map<TargetKey, RenderTarget> targets;
-    struct CachedPipeline {
-        const Pack* pack;
-        std::string variant;
-        pack::PackRenderState state;
-        bool hdr;
-        VariantPipeline pipeline;
-    };
-    std::deque<CachedPipeline> pipelines;
 
     Result<const RenderTarget*> target(const scene::Camera& camera);
-    Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
-                                            const pack::PackRenderState& state,
-                                            const RenderTarget& target, bool hdr);
-    std::optional<ShaderView> findShader(const std::string& name, const Pack** owner) const;
 };
 
 Result<const RenderTarget*> ForwardRenderer::State::target(const scene::Camera& camera) {
@@ -87,36 +70,6 @@ Result<const RenderTarget*> ForwardRenderer::State::target(const scene::Camera& 
     return &it->second;
 }
 
-Result<const VariantPipeline*> ForwardRenderer::State::pipeline(const Pack* pack,
-                                                                const VariantView& variant,
-                                                                const pack::PackRenderState& state,
-                                                                const RenderTarget& target,
-                                                                bool hdr) {
-    std::string name = variant.describe();
-    for (const CachedPipeline& cached : pipelines) {
-        if (cached.pack == pack && cached.hdr == hdr && cached.variant == name &&
-            cached.state == state) {
-            return &cached.pipeline;
-        }
-    }
-    auto created = VariantPipeline::create(
-        *context, variant, state, {target.renderPass(LoadOp::Clear), true, 1}, pipelineCache);
-    if (!created) return created.error();
-    pipelines.push_back({pack, name, state, hdr, std::move(*created)});
-    return &pipelines.back().pipeline;
-}
-
-std::optional<ShaderView> ForwardRenderer::State::findShader(const std::string& name,
-                                                             const Pack** owner) const {
-    for (const Pack* pack : packs) {
-        if (auto shader = pack->findShader(name)) {
-            *owner = pack;
-            return shader;
-        }
-    }
-    return std::nullopt;
-}
-
 ForwardRenderer::ForwardRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
 ForwardRenderer::ForwardRenderer(ForwardRenderer&&) noexcept = default;
 ForwardRenderer& ForwardRenderer::operator=(ForwardRenderer&&) noexcept = default;
@@ -125,20 +78,7 @@ ForwardRenderer::~ForwardRenderer() = default;
 Result<ForwardRenderer> ForwardRenderer::create(VulkanContext& context,
                                                 std::vector<const Pack*> packs) {
     auto state = std::make_unique<State>();
-    state->context = &context;
-    state->packs = std::move(packs);
-    auto textures = BuiltinTextures::create(context);
-    if (!textures) return textures.error();
-    state->textures.emplace(std::move(*textures));
-    auto resources = DrawResources::create(context);
-    if (!resources) return resources.error();
-    state->resources.emplace(std::move(*resources));
-    for (scene::MeshKind kind :
-         {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
-        auto mesh = uploadMesh(context, scene::builtinMesh(kind));
-        if (!mesh) return mesh.error();
-        state->meshes.emplace(kind, std::move(*mesh));
-    }
+    if (Status ready = state->init(context, std::move(packs)); !ready) return ready.error();
     return ForwardRenderer(std::move(state));
 }
 
@@ -187,7 +127,9 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
             if (!variant)
                 return makeError(variant.error().code, what + ": " + variant.error().detail);
             pack::PackRenderState state = resolveRenderState(pass->renderState(), material);
-            auto pipeline = s.pipeline(pack, *variant, state, **target, scene.camera.hdr);
+            auto pipeline =
+                s.pipeline(pack, *variant, state, {(*target)->renderPass(LoadOp::Clear), true, 1},
+                           scene.camera.hdr ? 1u : 0u);
             if (!pipeline)
                 return makeError(pipeline.error().code, what + ": " + pipeline.error().detail);
             const ShaderValues& lightValues = values.emplace_back(forwardLightValues(light));

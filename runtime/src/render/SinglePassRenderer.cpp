@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "render/GpuMesh.h"
+#include "render/RendererBase.h"
 #include "varc/runtime/PassView.h"
 #include "varc/runtime/ShaderView.h"
 #include "varc/runtime/render/BuiltinTextures.h"
@@ -124,29 +125,12 @@ struct RecordedDraw {
 
 }  // namespace
 
-struct SinglePassRenderer::State {
-    VkPipelineCache pipelineCache = VK_NULL_HANDLE;
-    VulkanContext* context = nullptr;
-    std::vector<const Pack*> packs;
-    std::optional<BuiltinTextures> textures;
-    std::optional<DrawResources> resources;
-    std::map<scene::MeshKind, GpuMesh> meshes;
+struct SinglePassRenderer::State : RendererBase {
     std::map<std::tuple<uint32_t, uint32_t, bool, std::array<float, 4>>, RenderTarget> targets;
-    struct CachedPipeline {
-        const Pack* pack;
-        std::string variant;
-        pack::PackRenderState state;
-        bool hdr;
-        VariantPipeline pipeline;
-    };
-    std::deque<CachedPipeline> pipelines;
     // Per shader pass (PassView::describe()): the INSTANCING_ON variant's layout, or null.
     std::map<std::string, std::optional<InstancedLayout>> instancedLayouts;
 
     Result<const RenderTarget*> target(const scene::Camera& camera);
-    Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
-                                            const pack::PackRenderState& state,
-                                            const RenderTarget& target, bool hdr);
     const InstancedLayout* instancing(const PassView& pass);
     Result<std::vector<DrawGroup>> group(const scene::Scene& scene,
                                          const scene::VisibleLightSet& visible, bool instancing);
@@ -172,23 +156,6 @@ Result<const RenderTarget*> SinglePassRenderer::State::target(const scene::Camer
         it = targets.emplace(key, std::move(*created)).first;
     }
     return &it->second;
-}
-
-Result<const VariantPipeline*> SinglePassRenderer::State::pipeline(
-    const Pack* pack, const VariantView& variant, const pack::PackRenderState& state,
-    const RenderTarget& target, bool hdr) {
-    std::string name = variant.describe();
-    for (const CachedPipeline& cached : pipelines) {
-        if (cached.pack == pack && cached.hdr == hdr && cached.variant == name &&
-            cached.state == state) {
-            return &cached.pipeline;
-        }
-    }
-    auto created = VariantPipeline::create(
-        *context, variant, state, {target.renderPass(LoadOp::Clear), true, 1}, pipelineCache);
-    if (!created) return created.error();
-    pipelines.push_back({pack, name, state, hdr, std::move(*created)});
-    return &pipelines.back().pipeline;
 }
 
 const InstancedLayout* SinglePassRenderer::State::instancing(const PassView& pass) {
@@ -280,20 +247,7 @@ SinglePassRenderer::~SinglePassRenderer() = default;
 Result<SinglePassRenderer> SinglePassRenderer::create(VulkanContext& context,
                                                       std::vector<const Pack*> packs) {
     auto state = std::make_unique<State>();
-    state->context = &context;
-    state->packs = std::move(packs);
-    auto textures = BuiltinTextures::create(context);
-    if (!textures) return textures.error();
-    state->textures.emplace(std::move(*textures));
-    auto resources = DrawResources::create(context);
-    if (!resources) return resources.error();
-    state->resources.emplace(std::move(*resources));
-    for (scene::MeshKind kind :
-         {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
-        auto mesh = uploadMesh(context, scene::builtinMesh(kind));
-        if (!mesh) return mesh.error();
-        state->meshes.emplace(kind, std::move(*mesh));
-    }
+    if (Status ready = state->init(context, std::move(packs)); !ready) return ready.error();
     return SinglePassRenderer(std::move(state));
 }
 
@@ -327,7 +281,9 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
         const ShaderValues& material =
             values.emplace_back(materialValues(first.material, textureNames));
         pack::PackRenderState state = resolveRenderState(group.pass->renderState(), material);
-        auto pipeline = s.pipeline(group.pack, *variant, state, **target, scene.camera.hdr);
+        auto pipeline =
+            s.pipeline(group.pack, *variant, state, {(*target)->renderPass(LoadOp::Clear), true, 1},
+                       scene.camera.hdr ? 1u : 0u);
         if (!pipeline) return pipeline.error();
         RecordedDraw draw;
         draw.pipeline = *pipeline;

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "RendererBase.h"
+
+#include "varc/scene/Mesh.h"
+
+namespace varc::runtime {
+
+Status RendererBase::init(VulkanContext& vulkan, std::vector<const Pack*> inputPacks) {
+    context = &vulkan;
+    packs = std::move(inputPacks);
+    auto builtin = BuiltinTextures::create(vulkan);
+    if (!builtin) return builtin.error();
+    textures.emplace(std::move(*builtin));
+    auto drawResources = DrawResources::create(vulkan);
+    if (!drawResources) return drawResources.error();
+    resources.emplace(std::move(*drawResources));
+    for (scene::MeshKind kind :
+         {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
+        auto mesh = uploadMesh(vulkan, scene::builtinMesh(kind));
+        if (!mesh) return mesh.error();
+        meshes.emplace(kind, std::move(*mesh));
+    }
+    return Ok{};
+}
+
+std::optional<ShaderView> RendererBase::findShader(const std::string& name,
+                                                   const Pack** owner) const {
+    for (const Pack* pack : packs) {
+        if (auto shader = pack->findShader(name)) {
+            *owner = pack;
+            return shader;
+        }
+    }
+    return std::nullopt;
+}
+
+Result<const VariantPipeline*> RendererBase::pipeline(const Pack* pack, const VariantView& variant,
+                                                      const pack::PackRenderState& state,
+                                                      const PipelineTarget& target,
+                                                      uint32_t targetKind) {
+    std::string name = variant.describe();
+    for (const CachedPipeline& cached : mPipelines) {
+        if (cached.pack == pack && cached.targetKind == targetKind && cached.variant == name &&
+            cached.state == state) {
+            return &cached.pipeline;
+        }
+    }
+    auto created = VariantPipeline::create(*context, variant, state, target, pipelineCache);
+    if (!created) return created.error();
+    mPipelines.push_back({pack, name, state, targetKind, std::move(*created)});
+    return &mPipelines.back().pipeline;
+}
+
+}  // namespace varc::runtime

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: Apache-2.0
+// What the forward, deferred and single-pass renderers share: the packs and how shaders are
+// found in them, the built-in textures and meshes, per-frame draw resources, and the pipelines
+// created so far (one per variant, resolved render state and kind of target).
+#pragma once
+
+#include <deque>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "GpuMesh.h"
+#include "varc/runtime/Pack.h"
+#include "varc/runtime/ShaderView.h"
+#include "varc/runtime/render/BuiltinTextures.h"
+#include "varc/runtime/render/DrawResources.h"
+#include "varc/runtime/render/VariantPipeline.h"
+#include "varc/scene/Scene.h"
+
+namespace varc::runtime {
+
+struct RendererBase {
+    VulkanContext* context = nullptr;
+    std::vector<const Pack*> packs;
+    std::optional<BuiltinTextures> textures;
+    std::optional<DrawResources> resources;
+    std::map<scene::MeshKind, GpuMesh> meshes;
+    VkPipelineCache pipelineCache = VK_NULL_HANDLE;  // optional, see usePipelineCache()
+
+    // Creates the textures, draw resources and built-in meshes.
+    Status init(VulkanContext& context, std::vector<const Pack*> packs);
+
+    // The shader called |name| in the first pack that has it (|owner| set to that pack).
+    std::optional<ShaderView> findShader(const std::string& name, const Pack** owner) const;
+
+    // The pipeline of |variant| with |state| for |target|, created on first use. Pipelines are
+    // reused for any render pass compatible with the one they were made for; |targetKind| tells
+    // apart targets whose formats differ (HDR/LDR, G-buffer/light/decode passes).
+    Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
+                                            const pack::PackRenderState& state,
+                                            const PipelineTarget& target, uint32_t targetKind);
+
+private:
+    struct CachedPipeline {
+        const Pack* pack;
+        std::string variant;  // VariantView::describe()
+        pack::PackRenderState state;
+        uint32_t targetKind;
+        VariantPipeline pipeline;
+    };
+    std::deque<CachedPipeline> mPipelines;  // a deque: returned pointers stay valid
+};
+
+}  // namespace varc::runtime
