@@ -107,14 +107,7 @@ protected:
         bool cookie = light && light->cookie != "none";
         TextureLookup textures = [&builtin, type, cookie](std::string_view name,
                                                           pack::ResourceDim dim) {
-            if (name == "_LightTexture0") {
-                if (type == scene::LightType::Spot) return std::optional(builtin.spotCookie());
-                if (type == scene::LightType::Point)
-                    return std::optional(cookie ? builtin.pointCookie() : builtin.falloff());
-                return cookie ? std::optional(builtin.directionalCookie())
-                              : builtin.named("white", dim);
-            }
-            if (name == "_LightTextureB0") return std::optional(builtin.falloff());
+            if (auto texture = builtin.lightTexture(name, dim, type, cookie, false)) return texture;
             return builtin.named("white", dim);
         };
         const ShaderValues* layers[] = {&values};

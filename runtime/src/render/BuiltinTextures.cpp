@@ -109,6 +109,24 @@ TextureBinding BuiltinTextures::spotCookie() const { return {mSpot->view(), mCla
 TextureBinding BuiltinTextures::directionalCookie() const {
     return {mDirectional->view(), mRepeat.get()};
 }
+std::optional<TextureBinding> BuiltinTextures::lightTexture(std::string_view name,
+                                                            pack::ResourceDim dim,
+                                                            scene::LightType type, bool cookie,
+                                                            bool deferred) const {
+    if (name == "_LightTextureB0") return falloff();
+    if (name != "_LightTexture0") return std::nullopt;
+    switch (type) {
+        case scene::LightType::Spot:
+            return spotCookie();
+        case scene::LightType::Point:
+            if (cookie) return pointCookie();
+            return deferred ? named("white", dim) : falloff();
+        case scene::LightType::Directional:
+            return cookie ? directionalCookie() : named("white", dim);
+    }
+    return std::nullopt;
+}
+
 TextureBinding BuiltinTextures::pointCookie() const { return {mPoint->view(), mClamp.get()}; }
 
 }  // namespace varc::runtime

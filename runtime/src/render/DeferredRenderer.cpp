@@ -28,18 +28,6 @@ namespace {
 // Properties default; resolveRenderState only sees what the material sets).
 constexpr float kStencilNonBackground = 128.0f;
 
-variants::LightType toVariantLight(scene::LightType type) {
-    switch (type) {
-        case scene::LightType::Directional:
-            return variants::LightType::Directional;
-        case scene::LightType::Point:
-            return variants::LightType::Point;
-        case scene::LightType::Spot:
-            return variants::LightType::Spot;
-    }
-    return variants::LightType::Directional;
-}
-
 enum class Phase { GBuffer, Light, Decode };
 
 struct Draw {
@@ -261,13 +249,7 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
             if (name == "_CameraGBufferTexture0") return gbuffer0;
             if (name == "_CameraGBufferTexture1") return gbuffer1;
             if (name == "_CameraGBufferTexture2") return gbuffer2;
-            if (name == "_LightTextureB0") return builtin.falloff();
-            if (name == "_LightTexture0") {
-                if (type == scene::LightType::Spot) return builtin.spotCookie();
-                if (type == scene::LightType::Point && cookie) return builtin.pointCookie();
-                if (type == scene::LightType::Directional && cookie)
-                    return builtin.directionalCookie();
-            }
+            if (auto texture = builtin.lightTexture(name, dim, type, cookie, true)) return texture;
             return builtin.named("white", dim);
         };
         frameData.lightDraws.push_back(std::move(draw));

@@ -18,18 +18,6 @@ namespace varc::runtime {
 
 namespace {
 
-variants::LightType toVariantLight(scene::LightType type) {
-    switch (type) {
-        case scene::LightType::Directional:
-            return variants::LightType::Directional;
-        case scene::LightType::Point:
-            return variants::LightType::Point;
-        case scene::LightType::Spot:
-            return variants::LightType::Spot;
-    }
-    return variants::LightType::Directional;
-}
-
 // One recorded draw: everything bind() and vkCmdDrawIndexed need.
 struct Draw {
     const VariantPipeline* pipeline = nullptr;
@@ -142,13 +130,8 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
             draw.textures = [&builtin, &textureNames, type, cookie](
                                 std::string_view name,
                                 pack::ResourceDim dim) -> std::optional<TextureBinding> {
-                if (name == "_LightTexture0") {
-                    if (type == scene::LightType::Spot) return builtin.spotCookie();
-                    if (type == scene::LightType::Point)
-                        return cookie ? builtin.pointCookie() : builtin.falloff();
-                    return cookie ? builtin.directionalCookie() : builtin.named("white", dim);
-                }
-                if (name == "_LightTextureB0") return builtin.falloff();
+                if (auto texture = builtin.lightTexture(name, dim, type, cookie, false))
+                    return texture;
                 auto it = textureNames.find(std::string(name));
                 // Unset textures default to white, as Unity's Properties defaults mostly do.
                 return builtin.named(it == textureNames.end() ? "white" : it->second, dim);

@@ -5,6 +5,18 @@
 
 namespace varc::runtime {
 
+variants::LightType toVariantLight(scene::LightType type) {
+    switch (type) {
+        case scene::LightType::Directional:
+            return variants::LightType::Directional;
+        case scene::LightType::Point:
+            return variants::LightType::Point;
+        case scene::LightType::Spot:
+            return variants::LightType::Spot;
+    }
+    return variants::LightType::Directional;
+}
+
 Status RendererBase::init(VulkanContext& vulkan, std::vector<const Pack*> inputPacks) {
     context = &vulkan;
     packs = std::move(inputPacks);

@@ -17,8 +17,12 @@
 #include "varc/runtime/render/DrawResources.h"
 #include "varc/runtime/render/VariantPipeline.h"
 #include "varc/scene/Scene.h"
+#include "varc/variants/LightKeywords.h"
 
 namespace varc::runtime {
+
+// The keyword model's name for a scene light type.
+variants::LightType toVariantLight(scene::LightType type);
 
 struct RendererBase {
     VulkanContext* context = nullptr;

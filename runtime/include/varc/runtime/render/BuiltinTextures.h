@@ -8,6 +8,7 @@
 
 #include "varc/runtime/render/DrawResources.h"
 #include "varc/runtime/vulkan/Texture.h"
+#include "varc/scene/Scene.h"
 
 namespace varc::runtime {
 
@@ -21,6 +22,13 @@ public:
     TextureBinding spotCookie() const;         // linear, clamp
     TextureBinding directionalCookie() const;  // linear, repeat
     TextureBinding pointCookie() const;        // cube, linear, clamp
+
+    // `_LightTexture0` / `_LightTextureB0` for a light (SHADER_ABI.md §6); nullopt for any other
+    // name. Forward POINT reads its falloff from _LightTexture0; the deferred light pass reads
+    // falloff from _LightTextureB0 and _LightTexture0 only for cookies (white otherwise).
+    std::optional<TextureBinding> lightTexture(std::string_view name, pack::ResourceDim dim,
+                                               scene::LightType type, bool cookie,
+                                               bool deferred) const;
 
 private:
     std::optional<Texture> mWhite, mBlack, mBump, mWhiteCube, mFalloff, mSpot, mDirectional, mPoint;
