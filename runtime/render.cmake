@@ -12,6 +12,7 @@ add_library(varc_render STATIC
     src/render/DrawResources.cpp
     src/render/ForwardRenderer.cpp
     src/render/GpuMesh.cpp
+    src/render/LightVolume.cpp
     src/render/RendererBase.cpp
     src/render/PipelineCacheFile.cpp
     src/render/RenderStateResolver.cpp

@@ -92,7 +92,9 @@ glm::vec3 lightPass(const scene::Light& light, const LightTextureSet& textures,
     } else {
         const glm::vec3 toLight = light.transform.position - p;
         l = glm::normalize(toLight);
-        atten = textures.falloff(glm::dot(toLight, toLight) * invRangeSq);
+        // A light volume shades nothing beyond the range (the falloff itself reaches 0 there).
+        const float t = glm::dot(toLight, toLight) * invRangeSq;
+        atten = t <= 1.0f ? textures.falloff(t) : 0.0f;
         if (light.type == scene::LightType::Spot) {
             atten *= textures.spotCookie(glm::vec2(lc) / lc.w) * (lc.w < 0.0f ? 1.0f : 0.0f);
         } else if (light.cookie != "none") {

@@ -13,6 +13,7 @@
 #include "varc/runtime/render/BuiltinTextures.h"
 #include "varc/runtime/render/DeferredValues.h"
 #include "varc/runtime/render/DrawResources.h"
+#include "varc/runtime/render/LightVolume.h"
 #include "varc/runtime/render/RenderStateResolver.h"
 #include "varc/runtime/render/SceneValues.h"
 #include "varc/runtime/render/VertexLayout.h"
@@ -54,6 +55,7 @@ Result<GpuMesh> uploadQuad(VulkanContext& context, const scene::CameraMatrices& 
 struct DeferredRenderer::State : RendererBase {
     std::string lightShader;
     UniqueHandle<VkSampler> nearest;
+    std::optional<GpuMesh> sphereVolume, pyramidVolume;
     struct TargetKey {
         uint32_t width, height;
         bool hdr;
@@ -120,6 +122,12 @@ Result<DeferredRenderer> DeferredRenderer::create(VulkanContext& context,
     auto sampler = createSampler(context, nearest);
     if (!sampler) return sampler.error();
     state->nearest = std::move(*sampler);
+    auto sphere = uploadMesh(context, unitSphereVolume());
+    if (!sphere) return sphere.error();
+    state->sphereVolume.emplace(std::move(*sphere));
+    auto pyramid = uploadMesh(context, unitPyramidVolume());
+    if (!pyramid) return pyramid.error();
+    state->pyramidVolume.emplace(std::move(*pyramid));
     return DeferredRenderer(std::move(state));
 }
 
@@ -140,6 +148,22 @@ ShaderValues lightPassMaterial(bool hdr) {
     material.set("_DstBlend", hdr ? 1.0f : 0.0f);
     material.set("_StencilNonBackground", kStencilNonBackground);
     return material;
+}
+
+// The faces and depth test a light volume is drawn with (LightVolume.h); the engine's choice, as
+// in Unity, which overrides the light pass's own Cull and ZTest for volumes.
+void applyVolumeState(LightVolumeDraw draw, pack::PackRenderState& state) {
+    switch (draw) {
+        case LightVolumeDraw::FullScreenQuad: break;
+        case LightVolumeDraw::FrontFaces:
+            state.cull.value = pack::CullMode::Back;
+            state.zTest.value = pack::CompareFunction::LessEqual;
+            break;
+        case LightVolumeDraw::BackFaces:
+            state.cull.value = pack::CullMode::Front;
+            state.zTest.value = pack::CompareFunction::GreaterEqual;
+            break;
+    }
 }
 
 }  // namespace
@@ -232,14 +256,25 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
         auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         pack::PackRenderState state = resolveRenderState(pass->renderState(), lightMaterial);
+        const LightVolume volume = chooseLightVolume(light, scene.camera, matrices);
+        applyVolumeState(volume.draw, state);
         auto pipeline = s.pipeline(lightPack, *variant, state, Phase::Light, targets, hdr);
         if (!pipeline)
             return makeError(pipeline.error().code, what + ": " + pipeline.error().detail);
-        const ShaderValues& lightLayer = frameData.values.emplace_back(deferredLightValues(light));
+        const bool asQuad = volume.draw == LightVolumeDraw::FullScreenQuad;
+        const ShaderValues& lightLayer =
+            frameData.values.emplace_back(deferredLightValues(light, asQuad));
         Draw draw;
         draw.pipeline = *pipeline;
-        draw.mesh = &*frameData.quad;
-        draw.layers = {&lightLayer, &quadLayer, &lightMaterial, &camera};
+        if (asQuad) {
+            draw.mesh = &*frameData.quad;
+            draw.layers = {&lightLayer, &quadLayer, &lightMaterial, &camera};
+        } else {
+            draw.mesh = volume.mesh == &unitSphereVolume() ? &*s.sphereVolume : &*s.pyramidVolume;
+            const ShaderValues& volumeLayer =
+                frameData.values.emplace_back(lightVolumeValues(volume.objectToWorld));
+            draw.layers = {&lightLayer, &volumeLayer, &lightMaterial, &camera};
+        }
         scene::LightType type = light.type;
         bool cookie = light.cookie != "none";
         draw.textures = [&builtin, type, cookie, depth, gbuffer0, gbuffer1, gbuffer2](

@@ -7,12 +7,12 @@
 
 namespace varc::runtime {
 
-ShaderValues deferredLightValues(const scene::Light& light) {
+ShaderValues deferredLightValues(const scene::Light& light, bool asQuad) {
     ShaderValues values;
     values.set("_LightPos", light.transform.position, 1.0f / (light.range * light.range));
     values.set("_LightDir", light.forward(), 0.0f);
     values.set("_LightColor", light.finalColor(), light.intensity);
-    values.set("_LightAsQuad", 1.0f);
+    values.set("_LightAsQuad", asQuad ? 1.0f : 0.0f);
     values.set("unity_LightmapFade", glm::vec4(0.0f));
     values.set("unity_WorldToLight", scene::worldToLight(light, /*deferredSpotConvention=*/true));
     values.set("_LightShadowData", glm::vec4(0.0f));
@@ -29,6 +29,16 @@ ShaderValues fullScreenQuadValues(const scene::CameraMatrices& camera) {
     for (const char* name : {"unity_ObjectToWorld", "_Object2World"}) values.set(name, inverseVP);
     for (const char* name : {"unity_WorldToObject", "_World2Object"})
         values.set(name, camera.viewProjection);
+    values.set("unity_WorldTransformParams", glm::vec4(0, 0, 0, 1));
+    values.set("unity_LODFade", glm::vec4(1, 1, 0, 0));
+    return values;
+}
+
+ShaderValues lightVolumeValues(const glm::mat4& objectToWorld) {
+    ShaderValues values;
+    for (const char* name : {"unity_ObjectToWorld", "_Object2World"}) values.set(name, objectToWorld);
+    for (const char* name : {"unity_WorldToObject", "_World2Object"})
+        values.set(name, glm::inverse(objectToWorld));
     values.set("unity_WorldTransformParams", glm::vec4(0, 0, 0, 1));
     values.set("unity_LODFade", glm::vec4(1, 1, 0, 0));
     return values;

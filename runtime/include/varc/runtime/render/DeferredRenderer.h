@@ -5,10 +5,10 @@
 // light's type, cookie and the camera's HDR select through the pack lookup, blended into the
 // light buffer (HDR: One One; LDR: DstColor Zero on exp2(−c)), and in LDR the decode pass.
 //
-// Every light, point and spot included, is drawn as a full-screen quad (_LightAsQuad = 1, rays in
-// the NORMALs): the attenuation is 0 outside the cone and, beyond the range, the falloff table's
-// clamped last texel (≈ 5e-5, below 0.01 LSB), so the image equals a light-volume drawing to well
-// under one LSB; volumes would save fill rate and make that exactly 0 (TODO(#6)).
+// Directional lights are drawn as a full-screen quad (_LightAsQuad = 1, rays in the NORMALs);
+// point lights as a sphere and spot lights as a pyramid around their range (_LightAsQuad = 0),
+// front faces with ZTest LEqual, or back faces with ZTest GEqual when the camera's near plane may
+// cut the volume (LightVolume.h): only pixels the light can reach are shaded.
 #pragma once
 
 #include <memory>

@@ -12,10 +12,14 @@
 namespace varc::runtime {
 
 // UnityDeferredLight (_LightPos = (position, 1/range²), _LightDir = (forward, 0), _LightColor =
-// (colour × intensity, intensity), _LightAsQuad = 1, unity_LightmapFade = 0), unity_WorldToLight
-// with the deferred spot convention, and shadow uniforms that make an unshadowed light exact
-// (_LightShadowData = 0, unity_ShadowFadeCenterAndType = 0).
-ShaderValues deferredLightValues(const scene::Light& light);
+// (colour × intensity, intensity), _LightAsQuad = 1 for the full-screen quad and 0 for a light
+// volume, unity_LightmapFade = 0), unity_WorldToLight with the deferred spot convention, and
+// shadow uniforms that make an unshadowed light exact (_LightShadowData = 0,
+// unity_ShadowFadeCenterAndType = 0).
+ShaderValues deferredLightValues(const scene::Light& light, bool asQuad);
+
+// UnityPerDraw of a light volume (LightVolume.h) placed by |objectToWorld|.
+ShaderValues lightVolumeValues(const glm::mat4& objectToWorld);
 
 // UnityPerDraw of the full-screen quad: unity_ObjectToWorld = inverse(unity_MatrixVP), so the
 // quad's vertices (Vulkan NDC) clip to themselves through UnityObjectToClipPos.
