@@ -3,10 +3,14 @@
 //
 // Three phases, each deterministic whatever the thread count:
 //  1. per (pass, variant, stage): preprocess with the variant's defines, prune to the entry
-//     point, and intern the text -> source ids (identical programs found before glslang runs);
+//     point, and intern the text -> source ids (identical programs found before glslang runs).
+//     Defines the pass text never names are dropped first (ObservedDefines.h), so variants and
+//     stages that differ only in those share one preprocessing and one pruning;
 //  2. per distinct source: glslang -> SPIRV-Tools optimise -> validate, in parallel;
 //  3. intern the SPIR-V bytes -> program ids, in enumeration order, and derive the statistics.
 #include "varc/compiler/CompileDriver.h"
+
+#include <xxhash.h>
 
 #include <atomic>
 #include <ctime>
@@ -15,14 +19,15 @@
 #include <unordered_map>
 
 #include "DiagnosticGrouper.h"
+#include "varc/compiler/GlslLegacyPreamble.h"
 #include "varc/compiler/GlslangFrontend.h"
 #include "varc/compiler/GlslangLogParser.h"
-#include "varc/compiler/GlslLegacyPreamble.h"
+#include "varc/compiler/ObservedDefines.h"
 #include "varc/compiler/ParallelFor.h"
 #include "varc/compiler/PassDefines.h"
 #include "varc/compiler/SpirvReflection.h"
-#include "varc/compiler/StagePruner.h"
 #include "varc/compiler/StageEffects.h"
+#include "varc/compiler/StagePruner.h"
 
 namespace varc::compiler {
 
@@ -38,8 +43,26 @@ struct PassJob {
     std::vector<variants::VariantKey> keys;
     std::vector<std::pair<uint32_t, std::string>> stages;  // (stage bit, entry point)
     std::string text;  // the expanded source, in the front end's #line convention
+    std::optional<ObservedNames> observed;  // the macro names |text| can see
     // sourceIds[variant * stages.size() + stageIndex]
     std::vector<uint32_t> sourceIds;
+};
+
+// 128-bit content hash of a (preprocessing, stage, entry point): what an item's outcome depends on.
+struct ItemKey {
+    uint64_t low = 0, high = 0;
+    bool operator==(const ItemKey&) const = default;
+};
+
+struct ItemKeyHash {
+    size_t operator()(const ItemKey& key) const { return static_cast<size_t>(key.low); }
+};
+
+// What a (variant, stage) item came to, remembered for every item with the same ItemKey.
+struct ItemOutcome {
+    bool ok = false;
+    uint32_t source = kNoProgram;
+    std::vector<Diagnostic> diagnostics;
 };
 
 // One distinct preprocessed, pruned program.
@@ -98,48 +121,73 @@ bool collectStages(PassJob& job, DiagnosticSink& sink) {
     auto entry = [&](const std::string& name) { return glsl ? std::string("main") : name; };
     if (!glsl && (kw.vertexEntry.empty() || kw.fragmentEntry.empty())) {
         sink.error(job.pass->pass->program->origin,
-                   std::string("missing #pragma ") + (kw.vertexEntry.empty() ? "vertex" : "fragment") +
-                       " in " + describePass(job.shader->ast, *job.pass->pass, job.pass->index));
+                   std::string("missing #pragma ") +
+                       (kw.vertexEntry.empty() ? "vertex" : "fragment") + " in " +
+                       describePass(job.shader->ast, *job.pass->pass, job.pass->index));
         return false;
     }
     job.stages.push_back({variants::kStageVertex, entry(kw.vertexEntry)});
     job.stages.push_back({variants::kStageFragment, entry(kw.fragmentEntry)});
-    if (!kw.geometryEntry.empty()) job.stages.push_back({variants::kStageGeometry, entry(kw.geometryEntry)});
+    if (!kw.geometryEntry.empty())
+        job.stages.push_back({variants::kStageGeometry, entry(kw.geometryEntry)});
     if (!kw.hullEntry.empty()) job.stages.push_back({variants::kStageHull, kw.hullEntry});
     if (!kw.domainEntry.empty()) job.stages.push_back({variants::kStageDomain, kw.domainEntry});
     return true;
 }
 
-StageResult preprocessStage(const PassJob& job, size_t variant, size_t stageIndex,
-                            const BuildOptions& options, const includes::SourceMap& sourceMap) {
+// The preamble of one (variant, stage) without the defines the pass text cannot observe.
+std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex) {
     const auto& [stage, entry] = job.stages[stageIndex];
     DefineContext context{job.pass->pass->lightMode(), job.pass->keywords.target, languageOf(job),
                           stage, job.pass->space->table().namesOf(job.keys[variant])};
-    std::string preamble = makePreamble(context);
+    std::string preamble = dropUnobservedDefines(makePreamble(context), *job.observed);
     if (languageOf(job) == shaderlab::ProgramLanguage::Glsl) {
         preamble += legacyGlslPreamble(job.text, stage);
     }
-    PreprocessOutput pre = preprocessProgram(
-        {job.text, preamble, languageOf(job), stage, entry});
+    return preamble;
+}
+
+// glslang's preprocessing of |job|'s text: HLSL's does not depend on the stage beyond the
+// preamble, GLSL's version and extension handling may.
+std::string preprocessKeyOf(const PassJob& job, uint32_t stage, std::string preamble) {
+    if (languageOf(job) != shaderlab::ProgramLanguage::Glsl) return preamble;
+    return std::to_string(stage) + "\n" + preamble;
+}
+
+ItemKey itemKeyOf(const std::string& preprocessKey, uint32_t stage, const std::string& entry) {
+    std::string text = preprocessKey;
+    text += '\0';
+    text += std::to_string(stage);
+    text += '\0';
+    text += entry;
+    XXH128_hash_t hash = XXH3_128bits(text.data(), text.size());
+    return {hash.low64, hash.high64};
+}
+
+StageResult preprocessStage(const PassJob& job, uint32_t stage, const std::string& entry,
+                            const std::string& preamble, const includes::SourceMap& sourceMap) {
+    PreprocessOutput pre = preprocessProgram({job.text, preamble, languageOf(job), stage, entry});
     StageResult result;
     result.diagnostics = parseGlslangLog(pre.log, sourceMap);
     result.ok = pre.ok;
-    if (!pre.ok) return result;
-    if (options.pruneStages) {
-        ShaderDialect dialect = languageOf(job) == shaderlab::ProgramLanguage::Glsl
-                                    ? ShaderDialect::Glsl
-                                    : ShaderDialect::Hlsl;
-        result.text = pruneToEntryPoint(pre.text, entry, dialect).text;
-    } else {
-        result.text = std::move(pre.text);
-    }
+    result.text = std::move(pre.text);
     return result;
+}
+
+std::string pruneStage(const PassJob& job, const std::string& preprocessed,
+                       const std::string& entry, const BuildOptions& options) {
+    if (!options.pruneStages) return preprocessed;
+    ShaderDialect dialect = languageOf(job) == shaderlab::ProgramLanguage::Glsl
+                                ? ShaderDialect::Glsl
+                                : ShaderDialect::Hlsl;
+    return pruneToEntryPoint(preprocessed, entry, dialect).text;
 }
 
 class Builder {
 public:
     Builder(const includes::SourceMap& sourceMap, const BuildOptions& options)
-        : mSourceMap(sourceMap), mOptions(options),
+        : mSourceMap(sourceMap),
+          mOptions(options),
           mThreads(options.jobs ? options.jobs : defaultThreadCount()) {}
 
     bool plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sink);
@@ -148,17 +196,25 @@ public:
     BuildOutput assemble();
     void flushDiagnostics(DiagnosticSink& sink) const { mGrouper.flush(sink); }
 
+    size_t preprocessedPrograms() const { return mPreprocessed; }
+
 private:
-    void internItem(size_t jobIndex, size_t variant, size_t stageIndex, StageResult& result);
+    bool internChunk(size_t jobIndex, size_t firstItem, size_t count);
+    uint32_t internSource(size_t jobIndex, size_t variant, size_t stageIndex, std::string text);
+    void applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
+                      const ItemOutcome& outcome);
     CompiledSource compileSource(const SourceProgram& source) const;
-    void fillStats(const PassJob& job, CompiledPass& pass, const std::vector<uint32_t>& finalIds) const;
+    void fillStats(const PassJob& job, CompiledPass& pass,
+                   const std::vector<uint32_t>& finalIds) const;
 
     const includes::SourceMap& mSourceMap;
     BuildOptions mOptions;
     unsigned mThreads;
     std::vector<PassJob> mJobs;
     std::vector<SourceProgram> mSources;
-    std::unordered_map<std::string, uint32_t> mSourceIndex;  // key: stage|entry|text
+    std::unordered_map<std::string, uint32_t> mSourceIndex;           // key: stage|entry|text
+    std::unordered_map<ItemKey, ItemOutcome, ItemKeyHash> mOutcomes;  // of the current job
+    size_t mPreprocessed = 0;                                         // glslang preprocessing runs
     std::vector<CompiledSource> mCompiled;
     DiagnosticGrouper mGrouper;
 };
@@ -181,45 +237,114 @@ bool Builder::plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sin
                            ? toGlslLineConvention(job.pass->source.text)
                            : job.pass->source.text;
             job.sourceIds.assign(job.keys.size() * job.stages.size(), kNoProgram);
+            job.observed.emplace(job.text);
             mJobs.push_back(std::move(job));
         }
     }
     return ok;
 }
 
-void Builder::internItem(size_t jobIndex, size_t variant, size_t stageIndex, StageResult& result) {
+uint32_t Builder::internSource(size_t jobIndex, size_t variant, size_t stageIndex,
+                               std::string text) {
+    const auto& [stage, entry] = mJobs[jobIndex].stages[stageIndex];
+    std::string key = std::to_string(stage) + "|" + entry + "|" + text;
+    auto [it, inserted] =
+        mSourceIndex.emplace(std::move(key), static_cast<uint32_t>(mSources.size()));
+    if (inserted) mSources.push_back({jobIndex, stage, entry, std::move(text), variant, 0});
+    return it->second;
+}
+
+void Builder::applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
+                           const ItemOutcome& outcome) {
     PassJob& job = mJobs[jobIndex];
-    const auto& [stage, entry] = job.stages[stageIndex];
-    if (!result.diagnostics.empty()) {
-        mGrouper.add(result.diagnostics, job.pass->pass->location, contextOf(job, stage, variant), 1);
+    if (!outcome.diagnostics.empty()) {
+        mGrouper.add(outcome.diagnostics, job.pass->pass->location,
+                     contextOf(job, job.stages[stageIndex].first, variant), 1);
     }
-    if (!result.ok) return;
-    std::string key = std::to_string(stage) + "|" + entry + "|" + result.text;
-    auto [it, inserted] = mSourceIndex.emplace(std::move(key), static_cast<uint32_t>(mSources.size()));
-    if (inserted) {
-        mSources.push_back({jobIndex, stage, entry, std::move(result.text), variant, 0});
+    if (!outcome.ok) return;
+    ++mSources[outcome.source].variants;
+    job.sourceIds[variant * job.stages.size() + stageIndex] = outcome.source;
+}
+
+// Items [firstItem, firstItem + count) of job |jobIndex| (item = variant * stages + stage):
+// preprocesses each distinct preamble once and prunes each distinct (preprocessing, stage) once,
+// in parallel, then interns in item order so source ids never depend on thread timing.
+bool Builder::internChunk(size_t jobIndex, size_t firstItem, size_t count) {
+    const PassJob& job = mJobs[jobIndex];
+    const size_t stages = job.stages.size();
+    struct Pending {
+        size_t preprocess;  // into preambles
+        size_t stageIndex;
+        StageResult result;
+    };
+    std::vector<ItemKey> itemKeys(count);
+    std::vector<size_t> pendingOf(count, SIZE_MAX);
+    std::vector<std::string> preambles;        // distinct preprocessings this chunk needs
+    std::vector<size_t> preprocessStageIndex;  // a stage that needs each preprocessing
+    std::vector<Pending> pending;
+    std::unordered_map<std::string, size_t> preprocessIndex;
+    std::unordered_map<ItemKey, size_t, ItemKeyHash> pendingIndex;
+    for (size_t i = 0; i < count; ++i) {
+        size_t item = firstItem + i;
+        size_t variant = item / stages, stageIndex = item % stages;
+        const auto& [stage, entry] = job.stages[stageIndex];
+        std::string preamble = preambleOf(job, variant, stageIndex);
+        std::string preprocessKey = preprocessKeyOf(job, stage, preamble);
+        itemKeys[i] = itemKeyOf(preprocessKey, stage, entry);
+        if (mOutcomes.count(itemKeys[i])) continue;
+        auto [known, inserted] = pendingIndex.emplace(itemKeys[i], pending.size());
+        if (inserted) {
+            auto [pre, fresh] = preprocessIndex.emplace(std::move(preprocessKey), preambles.size());
+            if (fresh) {
+                preambles.push_back(std::move(preamble));
+                preprocessStageIndex.push_back(stageIndex);
+            }
+            pending.push_back({pre->second, stageIndex, {}});
+        }
+        pendingOf[i] = known->second;
     }
-    ++mSources[it->second].variants;
-    job.sourceIds[variant * job.stages.size() + stageIndex] = it->second;
+    std::vector<StageResult> preprocessed(preambles.size());
+    parallelFor(
+        preambles.size(), mThreads,
+        [&](size_t p) {
+            const auto& [stage, entry] = job.stages[preprocessStageIndex[p]];
+            preprocessed[p] = preprocessStage(job, stage, entry, preambles[p], mSourceMap);
+        },
+        /*firstAlone=*/mSources.empty() && mPreprocessed == 0);
+    mPreprocessed += preambles.size();
+    parallelFor(pending.size(), mThreads, [&](size_t p) {
+        const StageResult& pre = preprocessed[pending[p].preprocess];
+        StageResult& result = pending[p].result;
+        result.ok = pre.ok;
+        result.diagnostics = pre.diagnostics;
+        if (pre.ok)
+            result.text =
+                pruneStage(job, pre.text, job.stages[pending[p].stageIndex].second, mOptions);
+    });
+    for (size_t i = 0; i < count; ++i) {
+        size_t item = firstItem + i;
+        size_t variant = item / stages, stageIndex = item % stages;
+        auto known = mOutcomes.find(itemKeys[i]);
+        if (known == mOutcomes.end()) {
+            StageResult& result = pending[pendingOf[i]].result;
+            ItemOutcome outcome{result.ok, kNoProgram, std::move(result.diagnostics)};
+            if (result.ok)
+                outcome.source =
+                    internSource(jobIndex, variant, stageIndex, std::move(result.text));
+            known = mOutcomes.emplace(itemKeys[i], std::move(outcome)).first;
+        }
+        applyOutcome(jobIndex, variant, stageIndex, known->second);
+    }
+    return !(mGrouper.hasErrors() && !mOptions.keepGoing);
 }
 
 bool Builder::internSources() {
     for (size_t j = 0; j < mJobs.size(); ++j) {
+        mOutcomes.clear();
         const PassJob& job = mJobs[j];
         size_t items = job.keys.size() * job.stages.size();
         for (size_t chunk = 0; chunk < items; chunk += kChunkSize) {
-            size_t count = std::min(kChunkSize, items - chunk);
-            std::vector<StageResult> results(count);
-            parallelFor(count, mThreads, [&](size_t i) {
-                size_t item = chunk + i;
-                results[i] = preprocessStage(job, item / job.stages.size(), item % job.stages.size(),
-                                             mOptions, mSourceMap);
-            }, /*firstAlone=*/mSources.empty() && chunk == 0);
-            for (size_t i = 0; i < count; ++i) {
-                size_t item = chunk + i;
-                internItem(j, item / job.stages.size(), item % job.stages.size(), results[i]);
-            }
-            if (mGrouper.hasErrors() && !mOptions.keepGoing) return false;
+            if (!internChunk(j, chunk, std::min(kChunkSize, items - chunk))) return false;
         }
     }
     return !mGrouper.hasErrors();
@@ -228,25 +353,32 @@ bool Builder::internSources() {
 CompiledSource Builder::compileSource(const SourceProgram& source) const {
     const PassJob& job = mJobs[source.job];
     CompiledSource result;
-    CompileOutput compiled = compileProgram({source.text, "", languageOf(job), source.stage, source.entryPoint});
+    CompileOutput compiled =
+        compileProgram({source.text, "", languageOf(job), source.stage, source.entryPoint});
     result.diagnostics = parseGlslangLog(compiled.log, mSourceMap);
     if (!compiled.ok) return result;
     SpirvResult optimized = optimizeSpirv(compiled.spirv, mOptions.optimization);
     if (!optimized.ok) {
-        result.diagnostics.push_back({Severity::Error, job.pass->pass->program->origin,
-                                      "SPIR-V optimisation failed: " + optimized.message, {}});
+        result.diagnostics.push_back({Severity::Error,
+                                      job.pass->pass->program->origin,
+                                      "SPIR-V optimisation failed: " + optimized.message,
+                                      {}});
         return result;
     }
     if (auto invalid = validateSpirv(optimized.spirv)) {
-        result.diagnostics.push_back({Severity::Error, job.pass->pass->program->origin,
-                                      "generated SPIR-V is invalid: " + *invalid, {}});
+        result.diagnostics.push_back({Severity::Error,
+                                      job.pass->pass->program->origin,
+                                      "generated SPIR-V is invalid: " + *invalid,
+                                      {}});
         return result;
     }
-    auto reflection = reflectSpirv(optimized.spirv, compiled.spirv,
-                                   source.stage == variants::kStageVertex);
+    auto reflection =
+        reflectSpirv(optimized.spirv, compiled.spirv, source.stage == variants::kStageVertex);
     if (!reflection) {
-        result.diagnostics.push_back({Severity::Error, job.pass->pass->program->origin,
-                                      "cannot reflect the generated SPIR-V", {}});
+        result.diagnostics.push_back({Severity::Error,
+                                      job.pass->pass->program->origin,
+                                      "cannot reflect the generated SPIR-V",
+                                      {}});
         return result;
     }
     result.ok = true;
@@ -259,14 +391,17 @@ bool Builder::compileSources() {
     mCompiled.assign(mSources.size(), {});
     std::atomic<bool> failed{false};
     std::atomic<size_t> done{0};
-    parallelFor(mSources.size(), mThreads, [&](size_t i) {
-        if (failed.load() && !mOptions.keepGoing) return;
-        double start = threadCpuSeconds();
-        mCompiled[i] = compileSource(mSources[i]);
-        mCompiled[i].seconds = threadCpuSeconds() - start;
-        if (!mCompiled[i].ok) failed.store(true);
-        if (mOptions.progress) mOptions.progress(done.fetch_add(1) + 1, mSources.size());
-    }, /*firstAlone=*/true);
+    parallelFor(
+        mSources.size(), mThreads,
+        [&](size_t i) {
+            if (failed.load() && !mOptions.keepGoing) return;
+            double start = threadCpuSeconds();
+            mCompiled[i] = compileSource(mSources[i]);
+            mCompiled[i].seconds = threadCpuSeconds() - start;
+            if (!mCompiled[i].ok) failed.store(true);
+            if (mOptions.progress) mOptions.progress(done.fetch_add(1) + 1, mSources.size());
+        },
+        /*firstAlone=*/true);
     for (size_t i = 0; i < mSources.size(); ++i) {
         const SourceProgram& source = mSources[i];
         if (mCompiled[i].diagnostics.empty()) continue;
@@ -308,9 +443,9 @@ BuildOutput Builder::assemble() {
             auto [it, inserted] = byBytes.emplace(mCompiled[source].spirv,
                                                   static_cast<uint32_t>(output.programs.size()));
             if (inserted) {
-                output.programs.push_back({program.stage, program.entryPoint, mCompiled[source].spirv,
-                                           mCompiled[source].reflection, job.shaderIndex,
-                                           job.passIndex});
+                output.programs.push_back({program.stage, program.entryPoint,
+                                           mCompiled[source].spirv, mCompiled[source].reflection,
+                                           job.shaderIndex, job.passIndex});
             }
             finalIds[source] = it->second;
         }
@@ -339,24 +474,31 @@ BuildOutput Builder::assemble() {
 
 size_t stageSlot(uint32_t stageBit) {
     switch (stageBit) {
-        case variants::kStageVertex: return 0;
-        case variants::kStageFragment: return 1;
-        case variants::kStageGeometry: return 2;
-        case variants::kStageHull: return 3;
-        case variants::kStageDomain: return 4;
-        default: return kStageCount;
+        case variants::kStageVertex:
+            return 0;
+        case variants::kStageFragment:
+            return 1;
+        case variants::kStageGeometry:
+            return 2;
+        case variants::kStageHull:
+            return 3;
+        case variants::kStageDomain:
+            return 4;
+        default:
+            return kStageCount;
     }
 }
 
 uint32_t stageBitOfSlot(size_t slot) {
-    static constexpr uint32_t kBits[kStageCount] = {variants::kStageVertex, variants::kStageFragment,
-                                                    variants::kStageGeometry, variants::kStageHull,
-                                                    variants::kStageDomain};
+    static constexpr uint32_t kBits[kStageCount] = {
+        variants::kStageVertex, variants::kStageFragment, variants::kStageGeometry,
+        variants::kStageHull, variants::kStageDomain};
     return slot < kStageCount ? kBits[slot] : 0;
 }
 
 const char* stageName(uint32_t stageBit) {
-    static const char* const kNames[kStageCount] = {"vertex", "fragment", "geometry", "hull", "domain"};
+    static const char* const kNames[kStageCount] = {"vertex", "fragment", "geometry", "hull",
+                                                    "domain"};
     size_t slot = stageSlot(stageBit);
     return slot < kStageCount ? kNames[slot] : "unknown";
 }
@@ -373,7 +515,9 @@ std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shader
     if (ok || options.keepGoing) ok = builder.compileSources() && ok;
     builder.flushDiagnostics(sink);
     if (!ok) return std::nullopt;
-    return builder.assemble();
+    BuildOutput output = builder.assemble();
+    output.preprocessedPrograms = builder.preprocessedPrograms();
+    return output;
 }
 
 }  // namespace varc::compiler

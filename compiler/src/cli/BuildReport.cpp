@@ -88,7 +88,8 @@ void printBuildReport(const std::vector<compiler::LoadedShader>& shaders,
         }
     }
     out << "Built " << variants << " variants from " << build.compiledSources
-        << " distinct programs into " << build.programs.size() << " SPIR-V modules in "
+        << " distinct programs (" << build.preprocessedPrograms << " preprocessed) into "
+        << build.programs.size() << " SPIR-V modules in "
         << std::fixed << std::setprecision(2) << seconds << " s; raw SPIR-V "
         << kibibytes(sizes.rawSpirvBytes) << ", unique " << kibibytes(sizes.uniqueSpirvBytes)
         << ", pack " << kibibytes(sizes.packBytes) << "\n";
@@ -116,6 +117,7 @@ Json buildReportJson(const std::vector<compiler::LoadedShader>& shaders,
     return {{"passes", passes},
             {"programs", build.programs.size()},
             {"compiled_sources", build.compiledSources},
+            {"preprocessed", build.preprocessedPrograms},
             {"bytes", {{"raw", sizes.rawSpirvBytes}, {"unique", sizes.uniqueSpirvBytes}, {"pack", sizes.packBytes}}},
             {"seconds", seconds}};
 }

@@ -194,6 +194,50 @@ TEST_F(CompileDriverTest, ErrorInSharedIncludeIsReportedOnceWithVariantCountAndM
     EXPECT_NE(errors[0].notes.back().message.find("stage of pass 0"), std::string::npos);
 }
 
+TEST_F(CompileDriverTest, VariantsDifferingOnlyInUnobservedDefinesSharePreprocessing) {
+    std::string shader = kTwoKeywordShader;
+    shader.replace(shader.find("#pragma multi_compile _ TINTED"), 30,
+                   "#pragma multi_compile _ TINTED\n#pragma multi_compile _ NEVER_TESTED");
+    auto output = build(shader);
+    ASSERT_TRUE(output);
+    const CompiledPass& pass = output->passes[0];
+    EXPECT_EQ(pass.variants.size(), 8u);
+    // 8 variants x 2 stages, but neither NEVER_TESTED nor the SHADER_STAGE_* macros occur in the
+    // text: one preprocessing per WOBBLE x TINTED choice.
+    EXPECT_EQ(output->preprocessedPrograms, 4u);
+    EXPECT_EQ(pass.stats.distinctSources[stageSlot(variants::kStageVertex)], 2u);
+    EXPECT_EQ(pass.stats.distinctSources[stageSlot(variants::kStageFragment)], 2u);
+    EXPECT_EQ(output->compiledSources, 4u);
+}
+
+TEST_F(CompileDriverTest, AStageMacroTheTextTestsIsPreprocessedPerStage) {
+    std::string shader = kTwoKeywordShader;
+    shader.replace(shader.find("float4 _Tint;"), 13,
+                   "#ifdef SHADER_STAGE_VERTEX\nfloat4 _VertexOnly;\n#endif\nfloat4 _Tint;");
+    auto output = build(shader);
+    ASSERT_TRUE(output);
+    EXPECT_EQ(output->preprocessedPrograms, 8u);  // 4 variants x 2 stages
+}
+
+TEST_F(CompileDriverTest, APreprocessingErrorSharedByVariantsIsReportedOnce) {
+    std::string shader = kTwoKeywordShader;
+    shader.replace(shader.find("float4 _Tint;"), 13,
+                   "#ifdef TINTED\n#error tinted is unsupported\n#endif\nfloat4 _Tint;");
+    BuildOptions options;
+    options.keepGoing = true;
+    EXPECT_FALSE(build(shader, options));
+    size_t mentions = 0;
+    for (const Diagnostic& d : mDiagnostics.diagnostics()) {
+        if (d.severity != Severity::Error) continue;
+        ASSERT_FALSE(d.notes.empty());
+        EXPECT_NE(d.notes.back().message.find("TINTED"), std::string::npos) << d.notes.back().message;
+        if (d.message.find("tinted is unsupported") == std::string::npos) continue;
+        ++mentions;
+        EXPECT_EQ(mSourceMap.path(d.location.file), "shaders/test.shader");
+    }
+    EXPECT_EQ(mentions, 1u);
+}
+
 TEST_F(CompileDriverTest, MissingEntryPragmaIsAnError) {
     std::string shader = kTwoKeywordShader;
     shader.erase(shader.find("#pragma fragment frag"), 21);

@@ -72,7 +72,8 @@ struct CompiledPass {
 struct BuildOutput {
     std::vector<CompiledPass> passes;
     std::vector<CompiledProgram> programs;  // deduplicated by bytes, in first-use order
-    size_t compiledSources = 0;             // glslang invocations
+    size_t compiledSources = 0;             // glslang compilations
+    size_t preprocessedPrograms = 0;        // glslang preprocessing runs (before pruning)
     // Sum over compiled sources of their in-process compile CPU time (glslang, optimiser,
     // validator, reflection), excluding preprocessing and dedup: divided by the thread count, the
     // floor a parallel build of these distinct programs cannot beat. Measured: not deterministic.
