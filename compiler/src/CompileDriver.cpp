@@ -15,6 +15,8 @@
 #include <atomic>
 #include <ctime>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <set>
 #include <unordered_map>
 
@@ -25,6 +27,7 @@
 #include "varc/compiler/ObservedDefines.h"
 #include "varc/compiler/ParallelFor.h"
 #include "varc/compiler/PassDefines.h"
+#include "varc/compiler/ProgramCache.h"
 #include "varc/compiler/SpirvReflection.h"
 #include "varc/compiler/StageEffects.h"
 #include "varc/compiler/StagePruner.h"
@@ -83,6 +86,7 @@ struct StageResult {
 
 struct CompiledSource {
     bool ok = false;
+    bool fromCache = false;
     double seconds = 0;  // CPU time of compileSource on its worker thread
     std::vector<uint32_t> spirv;
     pack::ProgramReflection reflection;
@@ -188,7 +192,11 @@ public:
     Builder(const includes::SourceMap& sourceMap, const BuildOptions& options)
         : mSourceMap(sourceMap),
           mOptions(options),
-          mThreads(options.jobs ? options.jobs : defaultThreadCount()) {}
+          mThreads(options.jobs ? options.jobs : defaultThreadCount()) {
+        if (!options.cacheDirectory.empty()) {
+            mCache = std::make_unique<ProgramCache>(options.cacheDirectory);
+        }
+    }
 
     bool plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sink);
     bool internSources();
@@ -197,6 +205,7 @@ public:
     void flushDiagnostics(DiagnosticSink& sink) const { mGrouper.flush(sink); }
 
     size_t preprocessedPrograms() const { return mPreprocessed; }
+    const std::string& cacheError() const { return mCacheError; }
 
 private:
     bool internChunk(size_t jobIndex, size_t firstItem, size_t count);
@@ -217,6 +226,9 @@ private:
     size_t mPreprocessed = 0;                                         // glslang preprocessing runs
     std::vector<CompiledSource> mCompiled;
     DiagnosticGrouper mGrouper;
+    std::unique_ptr<ProgramCache> mCache;  // null without BuildOptions::cacheDirectory
+    mutable std::mutex mCacheErrorMutex;
+    mutable std::string mCacheError;  // the first failure to store an entry
 };
 
 bool Builder::plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sink) {
@@ -352,34 +364,53 @@ bool Builder::internSources() {
 
 CompiledSource Builder::compileSource(const SourceProgram& source) const {
     const PassJob& job = mJobs[source.job];
+    const bool vertex = source.stage == variants::kStageVertex;
     CompiledSource result;
+    std::optional<ProgramCacheKey> key;
+    if (mCache) {
+        key = mCache->keyOf(
+            {mOptions.optimization, languageOf(job), source.stage, source.entryPoint, source.text});
+        if (std::optional<CachedProgram> hit = mCache->load(*key)) {
+            if (auto reflection = reflectSpirv(hit->spirv, hit->semantics, vertex)) {
+                result.ok = result.fromCache = true;
+                result.diagnostics = parseGlslangLog(hit->log, mSourceMap);
+                result.spirv = std::move(hit->spirv);
+                result.reflection = std::move(*reflection);
+                return result;
+            }
+        }
+    }
     CompileOutput compiled =
         compileProgram({source.text, "", languageOf(job), source.stage, source.entryPoint});
     result.diagnostics = parseGlslangLog(compiled.log, mSourceMap);
     if (!compiled.ok) return result;
+    const SourceLocation origin = job.pass->pass->program->origin;
     SpirvResult optimized = optimizeSpirv(compiled.spirv, mOptions.optimization);
     if (!optimized.ok) {
-        result.diagnostics.push_back({Severity::Error,
-                                      job.pass->pass->program->origin,
-                                      "SPIR-V optimisation failed: " + optimized.message,
-                                      {}});
+        result.diagnostics.push_back(
+            {Severity::Error, origin, "SPIR-V optimisation failed: " + optimized.message, {}});
         return result;
     }
     if (auto invalid = validateSpirv(optimized.spirv)) {
-        result.diagnostics.push_back({Severity::Error,
-                                      job.pass->pass->program->origin,
-                                      "generated SPIR-V is invalid: " + *invalid,
-                                      {}});
+        result.diagnostics.push_back(
+            {Severity::Error, origin, "generated SPIR-V is invalid: " + *invalid, {}});
         return result;
     }
-    auto reflection =
-        reflectSpirv(optimized.spirv, compiled.spirv, source.stage == variants::kStageVertex);
+    std::optional<SemanticsByLocation> semantics = hlslSemantics(compiled.spirv);
+    std::optional<pack::ProgramReflection> reflection;
+    if (semantics) reflection = reflectSpirv(optimized.spirv, *semantics, vertex);
     if (!reflection) {
-        result.diagnostics.push_back({Severity::Error,
-                                      job.pass->pass->program->origin,
-                                      "cannot reflect the generated SPIR-V",
-                                      {}});
+        result.diagnostics.push_back(
+            {Severity::Error, origin, "cannot reflect the generated SPIR-V", {}});
         return result;
+    }
+    if (mCache) {
+        Status stored =
+            mCache->store(*key, {optimized.spirv, std::move(*semantics), std::move(compiled.log)});
+        if (!stored) {
+            std::lock_guard<std::mutex> lock(mCacheErrorMutex);
+            if (mCacheError.empty()) mCacheError = stored.error().detail;
+        }
     }
     result.ok = true;
     result.spirv = std::move(optimized.spirv);
@@ -433,6 +464,7 @@ void Builder::fillStats(const PassJob& job, CompiledPass& pass,
 BuildOutput Builder::assemble() {
     BuildOutput output;
     output.compiledSources = mSources.size();
+    for (const CompiledSource& compiled : mCompiled) output.cachedSources += compiled.fromCache;
     for (const CompiledSource& compiled : mCompiled) output.compileSeconds += compiled.seconds;
     std::map<std::vector<uint32_t>, uint32_t> byBytes;
     std::vector<uint32_t> finalIds(mSources.size(), kNoProgram);
@@ -514,6 +546,9 @@ std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shader
     if (ok || options.keepGoing) ok = builder.internSources() && ok;
     if (ok || options.keepGoing) ok = builder.compileSources() && ok;
     builder.flushDiagnostics(sink);
+    if (!builder.cacheError().empty()) {
+        sink.warning({}, "the program cache is not updated: " + builder.cacheError());
+    }
     if (!ok) return std::nullopt;
     BuildOutput output = builder.assemble();
     output.preprocessedPrograms = builder.preprocessedPrograms();

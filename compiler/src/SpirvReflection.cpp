@@ -229,13 +229,25 @@ void sortReflection(pack::ProgramReflection& reflection) {
 
 }  // namespace
 
+std::optional<SemanticsByLocation> hlslSemantics(std::span<const uint32_t> withSemantics) {
+    auto original = SpirvModule::parse(withSemantics);
+    if (!original) return std::nullopt;
+    return semanticsByLocation(*original);
+}
+
 std::optional<pack::ProgramReflection> reflectSpirv(std::span<const uint32_t> optimized,
                                                     std::span<const uint32_t> withSemantics,
                                                     bool isVertexStage) {
+    auto semantics = hlslSemantics(withSemantics);
+    if (!semantics) return std::nullopt;
+    return reflectSpirv(optimized, *semantics, isVertexStage);
+}
+
+std::optional<pack::ProgramReflection> reflectSpirv(std::span<const uint32_t> optimized,
+                                                    const SemanticsByLocation& semantics,
+                                                    bool isVertexStage) {
     auto module = SpirvModule::parse(optimized);
-    auto original = SpirvModule::parse(withSemantics);
-    if (!module || !original) return std::nullopt;
-    std::map<uint32_t, std::string> semantics = semanticsByLocation(*original);
+    if (!module) return std::nullopt;
     pack::ProgramReflection reflection;
     for (const SpirvVariable& variable : module->variables()) {
         switch (variable.storageClass) {

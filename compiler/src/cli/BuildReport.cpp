@@ -78,21 +78,25 @@ void printBuildReport(const std::vector<compiler::LoadedShader>& shaders,
         const compiler::LoadedShader& shader = shaders[pass.shaderIndex];
         const compiler::LoadedPass& loaded = shader.passes[pass.passIndex];
         variants += pass.stats.variants;
-        out << "Compiling " << compiler::describePass(shader.ast, *loaded.pass, loaded.index) << "\n"
+        out << "Compiling " << compiler::describePass(shader.ast, *loaded.pass, loaded.index)
+            << "\n"
             << "    Full variant space:          " << pass.stats.declaredVariants << "\n"
             << "    After skips and rules:       " << pass.stats.variants << "\n"
-            << "    Distinct programs:           " << stageCounts(pass.stats.distinctSources) << "\n"
-            << "    Compiled SPIR-V modules:     " << stageCounts(pass.stats.distinctModules) << "\n";
+            << "    Distinct programs:           " << stageCounts(pass.stats.distinctSources)
+            << "\n"
+            << "    Compiled SPIR-V modules:     " << stageCounts(pass.stats.distinctModules)
+            << "\n";
         for (const auto& [keywords, stages] : unaffectedStages(loaded, pass)) {
             out << "    Does not affect " << joined(stages, ", ") << ": " << keywords << "\n";
         }
     }
     out << "Built " << variants << " variants from " << build.compiledSources
-        << " distinct programs (" << build.preprocessedPrograms << " preprocessed) into "
-        << build.programs.size() << " SPIR-V modules in "
-        << std::fixed << std::setprecision(2) << seconds << " s; raw SPIR-V "
-        << kibibytes(sizes.rawSpirvBytes) << ", unique " << kibibytes(sizes.uniqueSpirvBytes)
-        << ", pack " << kibibytes(sizes.packBytes) << "\n";
+        << " distinct programs (" << build.preprocessedPrograms << " preprocessed";
+    if (build.cachedSources > 0) out << ", " << build.cachedSources << " from the cache";
+    out << ") into " << build.programs.size() << " SPIR-V modules in " << std::fixed
+        << std::setprecision(2) << seconds << " s; raw SPIR-V " << kibibytes(sizes.rawSpirvBytes)
+        << ", unique " << kibibytes(sizes.uniqueSpirvBytes) << ", pack "
+        << kibibytes(sizes.packBytes) << "\n";
 }
 
 Json buildReportJson(const std::vector<compiler::LoadedShader>& shaders,
@@ -108,17 +112,26 @@ Json buildReportJson(const std::vector<compiler::LoadedShader>& shaders,
             sources[name] = pass.stats.distinctSources[slot];
             programs[name] = pass.stats.distinctModules[slot];
         }
-        for (const auto& [keywords, stages] : unaffectedStages(loaded, pass)) unaffected[keywords] = stages;
-        passes.push_back({{"shader", shader.ast.name}, {"pass", loaded.index},
+        for (const auto& [keywords, stages] : unaffectedStages(loaded, pass))
+            unaffected[keywords] = stages;
+        passes.push_back({{"shader", shader.ast.name},
+                          {"pass", loaded.index},
                           {"lightmode", loaded.pass->lightMode()},
-                          {"declared", pass.stats.declaredVariants}, {"variants", pass.stats.variants},
-                          {"sources", sources}, {"programs", programs}, {"unaffected", unaffected}});
+                          {"declared", pass.stats.declaredVariants},
+                          {"variants", pass.stats.variants},
+                          {"sources", sources},
+                          {"programs", programs},
+                          {"unaffected", unaffected}});
     }
     return {{"passes", passes},
             {"programs", build.programs.size()},
             {"compiled_sources", build.compiledSources},
             {"preprocessed", build.preprocessedPrograms},
-            {"bytes", {{"raw", sizes.rawSpirvBytes}, {"unique", sizes.uniqueSpirvBytes}, {"pack", sizes.packBytes}}},
+            {"cached_sources", build.cachedSources},
+            {"bytes",
+             {{"raw", sizes.rawSpirvBytes},
+              {"unique", sizes.uniqueSpirvBytes},
+              {"pack", sizes.packBytes}}},
             {"seconds", seconds}};
 }
 

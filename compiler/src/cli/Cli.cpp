@@ -178,6 +178,7 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     buildOptions.optimization = *compiler::parseOptimizationLevel(options.optimization);
     buildOptions.jobs = options.jobs;
     buildOptions.keepGoing = options.keepGoing;
+    buildOptions.cacheDirectory = options.cacheDirectory;
     buildOptions.progress = progressPrinter(err);
     auto build = compiler::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);
     printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);

@@ -75,6 +75,10 @@ void addBuild(CLI::App& app, Options& options) {
     cmd->add_option("--depfile", options.depfilePath, "Write a Make-style dependency file");
     cmd->add_flag("--json", options.json, "Print the build summary as JSON");
     cmd->add_flag("--keep-going", options.keepGoing, "Compile everything to report all errors");
+    cmd->add_option("--cache-dir", options.cacheDirectory,
+                    "Reuse and store compiled programs in this folder (ccache-like)")
+        ->envname("VARC_CACHE_DIR")
+        ->type_name("DIR");
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Build; });
 }

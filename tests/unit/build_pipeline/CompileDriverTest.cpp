@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
 #include <set>
 
 #include "varc/compiler/ShaderLoader.h"
@@ -236,6 +239,29 @@ TEST_F(CompileDriverTest, APreprocessingErrorSharedByVariantsIsReportedOnce) {
         EXPECT_EQ(mSourceMap.path(d.location.file), "shaders/test.shader");
     }
     EXPECT_EQ(mentions, 1u);
+}
+
+TEST_F(CompileDriverTest, ASecondBuildTakesEveryProgramFromTheCacheWithIdenticalResults) {
+    BuildOptions options;
+    options.cacheDirectory = ::testing::TempDir() + "varc-driver-cache-" + std::to_string(::getpid());
+    std::filesystem::remove_all(options.cacheDirectory);
+    auto cold = build(kTwoKeywordShader, options);
+    ASSERT_TRUE(cold);
+    EXPECT_EQ(cold->cachedSources, 0u);
+    auto warm = build(kTwoKeywordShader, options);
+    ASSERT_TRUE(warm);
+    EXPECT_EQ(warm->cachedSources, warm->compiledSources);
+    ASSERT_EQ(warm->programs.size(), cold->programs.size());
+    for (size_t i = 0; i < cold->programs.size(); ++i) {
+        EXPECT_EQ(warm->programs[i].spirv, cold->programs[i].spirv) << i;
+        EXPECT_EQ(warm->programs[i].reflection, cold->programs[i].reflection) << i;
+    }
+    // A different optimisation level is a different program: nothing comes from the cache.
+    options.optimization = OptimizationLevel::None;
+    auto other = build(kTwoKeywordShader, options);
+    ASSERT_TRUE(other);
+    EXPECT_EQ(other->cachedSources, 0u);
+    std::filesystem::remove_all(options.cacheDirectory);
 }
 
 TEST_F(CompileDriverTest, MissingEntryPragmaIsAnError) {

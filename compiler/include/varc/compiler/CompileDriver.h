@@ -31,6 +31,9 @@ struct BuildOptions {
     unsigned jobs = 0;         // 0 = the machine's hardware concurrency
     bool keepGoing = false;    // compile everything even after errors, to report them all
     bool pruneStages = true;   // prune each stage to what its entry point reaches before dedup
+    // A ProgramCache folder: programs found there are not compiled again, programs compiled are
+    // stored there. "" = no cache.
+    std::string cacheDirectory;
     // Called from worker threads after each distinct program compiles: (done, total). Must be
     // thread-safe; may be empty.
     std::function<void(size_t, size_t)> progress;
@@ -74,6 +77,7 @@ struct BuildOutput {
     std::vector<CompiledProgram> programs;  // deduplicated by bytes, in first-use order
     size_t compiledSources = 0;             // glslang compilations
     size_t preprocessedPrograms = 0;        // glslang preprocessing runs (before pruning)
+    size_t cachedSources = 0;               // of compiledSources, taken from the program cache
     // Sum over compiled sources of their in-process compile CPU time (glslang, optimiser,
     // validator, reflection), excluding preprocessing and dedup: divided by the thread count, the
     // floor a parallel build of these distinct programs cannot beat. Measured: not deterministic.

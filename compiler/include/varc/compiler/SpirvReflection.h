@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <span>
+#include <string>
 
 #include "varc/pack/ProgramReflection.h"
 
@@ -18,6 +20,17 @@ namespace varc::compiler {
 // give equal reflection. Returns nullopt for a malformed module.
 std::optional<pack::ProgramReflection> reflectSpirv(std::span<const uint32_t> optimized,
                                                     std::span<const uint32_t> withSemantics,
+                                                    bool isVertexStage);
+
+// HLSL semantic names by input/output location, e.g. {0: "POSITION", 1: "TEXCOORD0"}.
+using SemanticsByLocation = std::map<uint32_t, std::string>;
+
+// The semantics glslang recorded in |withSemantics|; nullopt for a malformed module.
+std::optional<SemanticsByLocation> hlslSemantics(std::span<const uint32_t> withSemantics);
+
+// reflectSpirv with the semantics already read (e.g. kept in the program cache).
+std::optional<pack::ProgramReflection> reflectSpirv(std::span<const uint32_t> optimized,
+                                                    const SemanticsByLocation& semantics,
                                                     bool isVertexStage);
 
 }  // namespace varc::compiler

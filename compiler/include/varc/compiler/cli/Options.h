@@ -34,6 +34,7 @@ struct Options {
     unsigned jobs = 0;                     // -j N; 0 = hardware concurrency
     std::string optimization = "-O";       // -O0 | -O | -Os
     bool keepGoing = false;                // --keep-going
+    std::string cacheDirectory;            // --cache-dir DIR or VARC_CACHE_DIR
     // info / extract / lookup
     std::string packPath;                  // the PACK argument
     std::string lookupShader;              // --shader NAME
