@@ -47,6 +47,7 @@ struct PassJob {
     std::vector<std::pair<uint32_t, std::string>> stages;  // (stage bit, entry point)
     std::string text;  // the expanded source, in the front end's #line convention
     std::optional<ObservedNames> observed;  // the macro names |text| can see
+    ProgramCacheKey textHash;               // of |text|, when a program cache is used
     // sourceIds[variant * stages.size() + stageIndex]
     std::vector<uint32_t> sourceIds;
 };
@@ -206,6 +207,7 @@ public:
 
     size_t preprocessedPrograms() const { return mPreprocessed; }
     const std::string& cacheError() const { return mCacheError; }
+    size_t cachedStageSources() const { return mCachedStageSources; }
 
 private:
     bool internChunk(size_t jobIndex, size_t firstItem, size_t count);
@@ -213,6 +215,8 @@ private:
     void applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
                       const ItemOutcome& outcome);
     CompiledSource compileSource(const SourceProgram& source) const;
+    // Remembers the first failure to write the cache (thread-safe); the build goes on.
+    void noteCacheFailure(const Status& stored) const;
     void fillStats(const PassJob& job, CompiledPass& pass,
                    const std::vector<uint32_t>& finalIds) const;
 
@@ -224,6 +228,7 @@ private:
     std::unordered_map<std::string, uint32_t> mSourceIndex;           // key: stage|entry|text
     std::unordered_map<ItemKey, ItemOutcome, ItemKeyHash> mOutcomes;  // of the current job
     size_t mPreprocessed = 0;                                         // glslang preprocessing runs
+    size_t mCachedStageSources = 0;  // pruned sources read from the cache
     std::vector<CompiledSource> mCompiled;
     DiagnosticGrouper mGrouper;
     std::unique_ptr<ProgramCache> mCache;  // null without BuildOptions::cacheDirectory
@@ -250,6 +255,7 @@ bool Builder::plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sin
                            : job.pass->source.text;
             job.sourceIds.assign(job.keys.size() * job.stages.size(), kNoProgram);
             job.observed.emplace(job.text);
+            if (mCache) job.textHash = ProgramCache::hashText(job.text);
             mJobs.push_back(std::move(job));
         }
     }
@@ -315,23 +321,53 @@ bool Builder::internChunk(size_t jobIndex, size_t firstItem, size_t count) {
         }
         pendingOf[i] = known->second;
     }
+    // The program cache may hold a pending item's pruned source already.
+    std::vector<char> resolved(pending.size(), 0);
+    std::vector<ProgramCacheKey> sourceKeys(mCache ? pending.size() : 0);
+    if (mCache) {
+        parallelFor(pending.size(), mThreads, [&](size_t p) {
+            const auto& [stage, entry] = job.stages[pending[p].stageIndex];
+            sourceKeys[p] =
+                mCache->sourceKeyOf({job.textHash, languageOf(job), stage, entry,
+                                     preambles[pending[p].preprocess], mOptions.pruneStages});
+            if (std::optional<std::string> text = mCache->loadSource(sourceKeys[p])) {
+                pending[p].result.ok = true;
+                pending[p].result.text = std::move(*text);
+                resolved[p] = 1;
+            }
+        });
+    }
+    std::vector<size_t> needed;  // the preprocessings some unresolved item needs
+    std::vector<char> isNeeded(preambles.size(), 0);
+    for (size_t p = 0; p < pending.size(); ++p) {
+        if (!resolved[p]) isNeeded[pending[p].preprocess] = 1;
+        mCachedStageSources += resolved[p];
+    }
+    for (size_t k = 0; k < preambles.size(); ++k) {
+        if (isNeeded[k]) needed.push_back(k);
+    }
     std::vector<StageResult> preprocessed(preambles.size());
     parallelFor(
-        preambles.size(), mThreads,
-        [&](size_t p) {
-            const auto& [stage, entry] = job.stages[preprocessStageIndex[p]];
-            preprocessed[p] = preprocessStage(job, stage, entry, preambles[p], mSourceMap);
+        needed.size(), mThreads,
+        [&](size_t n) {
+            const size_t k = needed[n];
+            const auto& [stage, entry] = job.stages[preprocessStageIndex[k]];
+            preprocessed[k] = preprocessStage(job, stage, entry, preambles[k], mSourceMap);
         },
         /*firstAlone=*/mSources.empty() && mPreprocessed == 0);
-    mPreprocessed += preambles.size();
+    mPreprocessed += needed.size();
     parallelFor(pending.size(), mThreads, [&](size_t p) {
+        if (resolved[p]) return;
         const StageResult& pre = preprocessed[pending[p].preprocess];
         StageResult& result = pending[p].result;
         result.ok = pre.ok;
         result.diagnostics = pre.diagnostics;
-        if (pre.ok)
-            result.text =
-                pruneStage(job, pre.text, job.stages[pending[p].stageIndex].second, mOptions);
+        if (!pre.ok) return;
+        result.text = pruneStage(job, pre.text, job.stages[pending[p].stageIndex].second, mOptions);
+        // Only silent preprocessings are cached: a hit must not lose a warning.
+        if (mCache && result.diagnostics.empty()) {
+            noteCacheFailure(mCache->storeSource(sourceKeys[p], result.text));
+        }
     });
     for (size_t i = 0; i < count; ++i) {
         size_t item = firstItem + i;
@@ -360,6 +396,12 @@ bool Builder::internSources() {
         }
     }
     return !mGrouper.hasErrors();
+}
+
+void Builder::noteCacheFailure(const Status& stored) const {
+    if (stored) return;
+    std::lock_guard<std::mutex> lock(mCacheErrorMutex);
+    if (mCacheError.empty()) mCacheError = stored.error().detail;
 }
 
 CompiledSource Builder::compileSource(const SourceProgram& source) const {
@@ -405,12 +447,8 @@ CompiledSource Builder::compileSource(const SourceProgram& source) const {
         return result;
     }
     if (mCache) {
-        Status stored =
-            mCache->store(*key, {optimized.spirv, std::move(*semantics), std::move(compiled.log)});
-        if (!stored) {
-            std::lock_guard<std::mutex> lock(mCacheErrorMutex);
-            if (mCacheError.empty()) mCacheError = stored.error().detail;
-        }
+        noteCacheFailure(
+            mCache->store(*key, {optimized.spirv, std::move(*semantics), std::move(compiled.log)}));
     }
     result.ok = true;
     result.spirv = std::move(optimized.spirv);
@@ -552,6 +590,7 @@ std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shader
     if (!ok) return std::nullopt;
     BuildOutput output = builder.assemble();
     output.preprocessedPrograms = builder.preprocessedPrograms();
+    output.cachedStageSources = builder.cachedStageSources();
     return output;
 }
 

@@ -17,11 +17,13 @@ namespace varc::compiler {
 
 namespace {
 
-// Entry layout, little-endian: magic, key (low, high), u32 log bytes, u32 semantics, u32 SPIR-V
-// words, the log, per semantic (u32 location, u32 length, bytes), the SPIR-V words, then the
-// XXH64 of everything before it.
-constexpr std::string_view kMagic = "VARCPRG1";
-constexpr size_t kHeaderBytes = 8 + 16 + 3 * 4;
+// Entry layout, little-endian: magic (8 bytes: "VARCPRG1" for programs, "VARCSRC1" for pruned
+// sources), key (low, high), the payload, then the XXH64 of everything before it. A program's
+// payload: u32 log bytes, u32 semantics, u32 SPIR-V words, the log, per semantic (u32 location,
+// u32 length, bytes), the words. A source's payload: the pruned text.
+constexpr std::string_view kProgramMagic = "VARCPRG1";
+constexpr std::string_view kSourceMagic = "VARCSRC1";
+constexpr size_t kEntryOverhead = 8 + 16 + 8;
 constexpr uint32_t kMaxField = 1u << 30;  // no real entry comes near; bounds corrupt sizes
 
 void putU32(std::string& out, uint32_t v) {
@@ -132,9 +134,10 @@ std::string ProgramCacheKey::hex() const {
 ProgramCache::ProgramCache(std::string directory)
     : mDirectory(std::move(directory)), mToolchain(executableHash()) {}
 
+ProgramCacheKey ProgramCache::hashText(std::string_view text) { return hash128(text); }
+
 ProgramCacheKey ProgramCache::keyOf(const ProgramCacheInput& input) const {
-    std::string text;
-    putU32(text, 1);  // key scheme version
+    std::string text(kProgramMagic);
     putU64(text, mToolchain.low);
     putU64(text, mToolchain.high);
     putU32(text, static_cast<uint32_t>(input.optimization));
@@ -146,14 +149,31 @@ ProgramCacheKey ProgramCache::keyOf(const ProgramCacheInput& input) const {
     return hash128(text);
 }
 
-std::string ProgramCache::pathOf(const ProgramCacheKey& key) const {
-    std::string hex = key.hex();
-    return mDirectory + "/" + hex.substr(0, 2) + "/" + hex + ".program";
+ProgramCacheKey ProgramCache::sourceKeyOf(const SourceCacheInput& input) const {
+    std::string text(kSourceMagic);
+    putU64(text, mToolchain.low);
+    putU64(text, mToolchain.high);
+    putU64(text, input.passText.low);
+    putU64(text, input.passText.high);
+    putU32(text, static_cast<uint32_t>(input.language));
+    putU32(text, input.stage);
+    putU32(text, input.pruned ? 1 : 0);
+    putU32(text, static_cast<uint32_t>(input.entryPoint.size()));
+    text += input.entryPoint;
+    text += input.preamble;
+    return hash128(text);
 }
 
-std::optional<CachedProgram> ProgramCache::load(const ProgramCacheKey& key) const {
-    std::optional<std::string> file = readFile(pathOf(key));
-    if (!file || file->size() < kHeaderBytes + 8) return std::nullopt;
+std::string ProgramCache::pathOf(const ProgramCacheKey& key, std::string_view extension) const {
+    std::string hex = key.hex();
+    return mDirectory + "/" + hex.substr(0, 2) + "/" + hex + std::string(extension);
+}
+
+std::optional<std::string> ProgramCache::loadPayload(const ProgramCacheKey& key,
+                                                     std::string_view magic,
+                                                     std::string_view extension) const {
+    std::optional<std::string> file = readFile(pathOf(key, extension));
+    if (!file || file->size() < kEntryOverhead) return std::nullopt;
     std::string_view bytes(*file);
     std::string_view body = bytes.substr(0, bytes.size() - 8);
     Reader checksum(bytes.substr(bytes.size() - 8));
@@ -161,12 +181,39 @@ std::optional<CachedProgram> ProgramCache::load(const ProgramCacheKey& key) cons
     if (!checksum.u64(expected) || XXH64(body.data(), body.size(), 0) != expected)
         return std::nullopt;
     Reader in(body);
-    std::string_view magic;
+    std::string_view storedMagic;
     ProgramCacheKey stored;
+    if (!in.bytes(magic.size(), storedMagic) || storedMagic != magic || !in.u64(stored.low) ||
+        !in.u64(stored.high) || !(stored == key)) {
+        return std::nullopt;
+    }
+    return std::string(body.substr(in.offset()));
+}
+
+Status ProgramCache::storePayload(const ProgramCacheKey& key, std::string_view magic,
+                                  std::string_view extension, std::string_view payload) const {
+    std::string bytes(magic);
+    putU64(bytes, key.low);
+    putU64(bytes, key.high);
+    bytes += payload;
+    putU64(bytes, XXH64(bytes.data(), bytes.size(), 0));
+    const std::string path = pathOf(key, extension);
+    std::error_code error;
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), error);
+    if (error) {
+        return makeError(ErrorCode::IoError, "cannot create the program cache folder for " + path +
+                                                 ": " + error.message());
+    }
+    return writeFileAtomically(path, bytes);
+}
+
+std::optional<CachedProgram> ProgramCache::load(const ProgramCacheKey& key) const {
+    std::optional<std::string> payload = loadPayload(key, kProgramMagic, ".program");
+    if (!payload) return std::nullopt;
+    Reader in(*payload);
     uint32_t logBytes = 0, semantics = 0, words = 0;
-    if (!in.bytes(kMagic.size(), magic) || magic != kMagic || !in.u64(stored.low) ||
-        !in.u64(stored.high) || !(stored == key) || !in.u32(logBytes) || !in.u32(semantics) ||
-        !in.u32(words) || logBytes > kMaxField || semantics > kMaxField || words > kMaxField) {
+    if (!in.u32(logBytes) || !in.u32(semantics) || !in.u32(words) || logBytes > kMaxField ||
+        semantics > kMaxField || words > kMaxField) {
         return std::nullopt;
     }
     CachedProgram program;
@@ -183,33 +230,31 @@ std::optional<CachedProgram> ProgramCache::load(const ProgramCacheKey& key) cons
     for (uint32_t& word : program.spirv) {
         if (!in.u32(word)) return std::nullopt;
     }
-    if (in.offset() != body.size() || program.spirv.empty()) return std::nullopt;
+    if (in.offset() != payload->size() || program.spirv.empty()) return std::nullopt;
     return program;
 }
 
 Status ProgramCache::store(const ProgramCacheKey& key, const CachedProgram& program) const {
-    std::string bytes(kMagic);
-    putU64(bytes, key.low);
-    putU64(bytes, key.high);
-    putU32(bytes, static_cast<uint32_t>(program.log.size()));
-    putU32(bytes, static_cast<uint32_t>(program.semantics.size()));
-    putU32(bytes, static_cast<uint32_t>(program.spirv.size()));
-    bytes += program.log;
+    std::string payload;
+    putU32(payload, static_cast<uint32_t>(program.log.size()));
+    putU32(payload, static_cast<uint32_t>(program.semantics.size()));
+    putU32(payload, static_cast<uint32_t>(program.spirv.size()));
+    payload += program.log;
     for (const auto& [location, name] : program.semantics) {
-        putU32(bytes, location);
-        putU32(bytes, static_cast<uint32_t>(name.size()));
-        bytes += name;
+        putU32(payload, location);
+        putU32(payload, static_cast<uint32_t>(name.size()));
+        payload += name;
     }
-    for (uint32_t word : program.spirv) putU32(bytes, word);
-    putU64(bytes, XXH64(bytes.data(), bytes.size(), 0));
-    const std::string path = pathOf(key);
-    std::error_code error;
-    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), error);
-    if (error) {
-        return makeError(ErrorCode::IoError, "cannot create the program cache folder for " + path +
-                                                 ": " + error.message());
-    }
-    return writeFileAtomically(path, bytes);
+    for (uint32_t word : program.spirv) putU32(payload, word);
+    return storePayload(key, kProgramMagic, ".program", payload);
+}
+
+std::optional<std::string> ProgramCache::loadSource(const ProgramCacheKey& key) const {
+    return loadPayload(key, kSourceMagic, ".source");
+}
+
+Status ProgramCache::storeSource(const ProgramCacheKey& key, std::string_view text) const {
+    return storePayload(key, kSourceMagic, ".source", text);
 }
 
 }  // namespace varc::compiler

@@ -92,7 +92,10 @@ void printBuildReport(const std::vector<compiler::LoadedShader>& shaders,
     }
     out << "Built " << variants << " variants from " << build.compiledSources
         << " distinct programs (" << build.preprocessedPrograms << " preprocessed";
-    if (build.cachedSources > 0) out << ", " << build.cachedSources << " from the cache";
+    if (build.cachedSources + build.cachedStageSources > 0) {
+        out << "; cache: " << build.cachedStageSources << " sources, " << build.cachedSources
+            << " programs";
+    }
     out << ") into " << build.programs.size() << " SPIR-V modules in " << std::fixed
         << std::setprecision(2) << seconds << " s; raw SPIR-V " << kibibytes(sizes.rawSpirvBytes)
         << ", unique " << kibibytes(sizes.uniqueSpirvBytes) << ", pack "
@@ -128,6 +131,7 @@ Json buildReportJson(const std::vector<compiler::LoadedShader>& shaders,
             {"compiled_sources", build.compiledSources},
             {"preprocessed", build.preprocessedPrograms},
             {"cached_sources", build.cachedSources},
+            {"cached_stage_sources", build.cachedStageSources},
             {"bytes",
              {{"raw", sizes.rawSpirvBytes},
               {"unique", sizes.uniqueSpirvBytes},

@@ -251,6 +251,8 @@ TEST_F(CompileDriverTest, ASecondBuildTakesEveryProgramFromTheCacheWithIdentical
     auto warm = build(kTwoKeywordShader, options);
     ASSERT_TRUE(warm);
     EXPECT_EQ(warm->cachedSources, warm->compiledSources);
+    EXPECT_EQ(warm->preprocessedPrograms, 0u) << "every pruned source comes from the cache";
+    EXPECT_EQ(warm->cachedStageSources, 8u);  // 4 variants x 2 stages
     ASSERT_EQ(warm->programs.size(), cold->programs.size());
     for (size_t i = 0; i < cold->programs.size(); ++i) {
         EXPECT_EQ(warm->programs[i].spirv, cold->programs[i].spirv) << i;

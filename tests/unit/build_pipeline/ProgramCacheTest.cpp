@@ -97,6 +97,40 @@ TEST_F(ProgramCacheTest, EveryTruncationAndEveryByteFlipIsRejected) {
     EXPECT_TRUE(cache.load(key));
 }
 
+TEST_F(ProgramCacheTest, PrunedSourcesRoundTripAndDamageIsRejected) {
+    ProgramCache cache(mDir.string());
+    SourceCacheInput input{ProgramCache::hashText("pass text"), shaderlab::ProgramLanguage::Cg,
+                           1, "frag", "#define POINT 1\n", true};
+    ProgramCacheKey key = cache.sourceKeyOf(input);
+    EXPECT_FALSE(cache.loadSource(key));
+    const std::string text = "#line 3 1\nfloat4 frag() : SV_Target { return 1; }\n";
+    ASSERT_TRUE(cache.storeSource(key, text).ok());
+    EXPECT_EQ(cache.loadSource(key), text);
+    // A source and a program never answer for each other, even under the same key.
+    EXPECT_FALSE(cache.load(key));
+    const std::string path = cache.pathOf(key, ".source");
+    const std::string good = readAll(path);
+    for (size_t at = 0; at < good.size(); at += 7) {
+        std::string bad = good;
+        bad[at] = static_cast<char>(bad[at] ^ 0x40);
+        writeAll(path, bad);
+        EXPECT_FALSE(cache.loadSource(key)) << "byte changed at " << at;
+    }
+    // Every input of the key matters.
+    SourceCacheInput other = input;
+    other.preamble = "#define SPOT 1\n";
+    EXPECT_NE(cache.sourceKeyOf(other), key);
+    other = input;
+    other.passText = ProgramCache::hashText("pass text 2");
+    EXPECT_NE(cache.sourceKeyOf(other), key);
+    other = input;
+    other.pruned = false;
+    EXPECT_NE(cache.sourceKeyOf(other), key);
+    other = input;
+    other.stage = 2;
+    EXPECT_NE(cache.sourceKeyOf(other), key);
+}
+
 TEST_F(ProgramCacheTest, AnEntryCopiedToAnotherKeyIsNotTrusted) {
     ProgramCache cache(mDir.string());
     ProgramCacheKey one = cache.keyOf(input("one")), two = cache.keyOf(input("two"));

@@ -78,6 +78,7 @@ struct BuildOutput {
     size_t compiledSources = 0;             // glslang compilations
     size_t preprocessedPrograms = 0;        // glslang preprocessing runs (before pruning)
     size_t cachedSources = 0;               // of compiledSources, taken from the program cache
+    size_t cachedStageSources = 0;          // pruned (variant, stage) sources taken from it
     // Sum over compiled sources of their in-process compile CPU time (glslang, optimiser,
     // validator, reflection), excluding preprocessing and dedup: divided by the thread count, the
     // floor a parallel build of these distinct programs cannot beat. Measured: not deterministic.

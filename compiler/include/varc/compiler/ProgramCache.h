@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // ProgramCache: a directory of compiled stage programs keyed by everything that determines them,
 // so a rebuild compiles only the programs it has not seen before (what ccache does for C++ and
-// Unreal's derived-data cache for shader permutations).
+// Unreal's derived-data cache for shader permutations), and of preprocessed, pruned stage sources,
+// so it does not even preprocess what it has seen.
 //
 // The key hashes (XXH3-128) the running executable's GNU build ID (or, without one, its bytes), so
 // a rebuilt varc never reuses another build's output, the optimisation level, language, stage,
@@ -48,12 +49,24 @@ struct ProgramCacheInput {
     std::string_view text;  // preprocessed and pruned
 };
 
+// Everything besides the executable that determines a preprocessed, pruned stage source.
+struct SourceCacheInput {
+    ProgramCacheKey passText;  // ProgramCache::hashText of the expanded pass source
+    shaderlab::ProgramLanguage language = shaderlab::ProgramLanguage::Cg;
+    uint32_t stage = 0;
+    std::string_view entryPoint;
+    std::string_view preamble;  // the defines the text observes (+ the legacy GLSL preamble)
+    bool pruned = true;
+};
+
 class ProgramCache {
 public:
     // Uses |directory| (created on the first store).
     explicit ProgramCache(std::string directory);
 
     ProgramCacheKey keyOf(const ProgramCacheInput& input) const;
+    ProgramCacheKey sourceKeyOf(const SourceCacheInput& input) const;
+    static ProgramCacheKey hashText(std::string_view text);
 
     // The entry for |key|; nullopt when there is none or it cannot be trusted.
     std::optional<CachedProgram> load(const ProgramCacheKey& key) const;
@@ -61,12 +74,21 @@ public:
     // Writes the entry for |key| atomically. Errors name the file and the reason.
     Status store(const ProgramCacheKey& key, const CachedProgram& program) const;
 
-    // Where the entry for |key| lives: <directory>/<2 hex>/<32 hex>.program.
-    std::string pathOf(const ProgramCacheKey& key) const;
+    // The pruned source for |key|, or nullopt; and storing one.
+    std::optional<std::string> loadSource(const ProgramCacheKey& key) const;
+    Status storeSource(const ProgramCacheKey& key, std::string_view text) const;
+
+    // Where an entry lives: <directory>/<2 hex>/<32 hex><extension> (".program", ".source").
+    std::string pathOf(const ProgramCacheKey& key, std::string_view extension = ".program") const;
 
     const std::string& directory() const { return mDirectory; }
 
 private:
+    std::optional<std::string> loadPayload(const ProgramCacheKey& key, std::string_view magic,
+                                           std::string_view extension) const;
+    Status storePayload(const ProgramCacheKey& key, std::string_view magic,
+                        std::string_view extension, std::string_view payload) const;
+
     std::string mDirectory;
     ProgramCacheKey mToolchain;  // hash of the running executable
 };
