@@ -407,26 +407,49 @@ void Builder::noteCacheFailure(const Status& stored) const {
 CompiledSource Builder::compileSource(const SourceProgram& source) const {
     const PassJob& job = mJobs[source.job];
     const bool vertex = source.stage == variants::kStageVertex;
+    const SourceLocation origin = job.pass->pass->program->origin;
     CompiledSource result;
+    // Reflection needs the names, so the cache keeps the optimised module with them, and what
+    // ships is stripped afterwards unless BuildOptions::debugNames.
+    auto finish = [&](std::vector<uint32_t> named, const SemanticsByLocation& semantics) {
+        auto reflection = reflectSpirv(named, semantics, vertex);
+        if (!reflection) {
+            result.diagnostics.push_back(
+                {Severity::Error, origin, "cannot reflect the generated SPIR-V", {}});
+            return false;
+        }
+        if (!mOptions.debugNames) {
+            SpirvResult stripped = stripDebugInfo(named);
+            if (!stripped.ok) {
+                result.diagnostics.push_back(
+                    {Severity::Error,
+                     origin,
+                     "cannot strip SPIR-V debug names: " + stripped.message,
+                     {}});
+                return false;
+            }
+            named = std::move(stripped.spirv);
+        }
+        result.ok = true;
+        result.spirv = std::move(named);
+        result.reflection = std::move(*reflection);
+        return true;
+    };
     std::optional<ProgramCacheKey> key;
     if (mCache) {
         key = mCache->keyOf(
             {mOptions.optimization, languageOf(job), source.stage, source.entryPoint, source.text});
         if (std::optional<CachedProgram> hit = mCache->load(*key)) {
-            if (auto reflection = reflectSpirv(hit->spirv, hit->semantics, vertex)) {
-                result.ok = result.fromCache = true;
-                result.diagnostics = parseGlslangLog(hit->log, mSourceMap);
-                result.spirv = std::move(hit->spirv);
-                result.reflection = std::move(*reflection);
-                return result;
-            }
+            result.diagnostics = parseGlslangLog(hit->log, mSourceMap);
+            result.fromCache = true;
+            if (finish(std::move(hit->spirv), hit->semantics)) return result;
+            result = CompiledSource{};  // an entry that does not reflect: compile afresh
         }
     }
     CompileOutput compiled =
         compileProgram({source.text, "", languageOf(job), source.stage, source.entryPoint});
     result.diagnostics = parseGlslangLog(compiled.log, mSourceMap);
     if (!compiled.ok) return result;
-    const SourceLocation origin = job.pass->pass->program->origin;
     SpirvResult optimized = optimizeSpirv(compiled.spirv, mOptions.optimization);
     if (!optimized.ok) {
         result.diagnostics.push_back(
@@ -439,20 +462,15 @@ CompiledSource Builder::compileSource(const SourceProgram& source) const {
         return result;
     }
     std::optional<SemanticsByLocation> semantics = hlslSemantics(compiled.spirv);
-    std::optional<pack::ProgramReflection> reflection;
-    if (semantics) reflection = reflectSpirv(optimized.spirv, *semantics, vertex);
-    if (!reflection) {
+    if (!semantics) {
         result.diagnostics.push_back(
             {Severity::Error, origin, "cannot reflect the generated SPIR-V", {}});
         return result;
     }
     if (mCache) {
-        noteCacheFailure(
-            mCache->store(*key, {optimized.spirv, std::move(*semantics), std::move(compiled.log)}));
+        noteCacheFailure(mCache->store(*key, {optimized.spirv, *semantics, compiled.log}));
     }
-    result.ok = true;
-    result.spirv = std::move(optimized.spirv);
-    result.reflection = std::move(*reflection);
+    finish(std::move(optimized.spirv), *semantics);
     return result;
 }
 

@@ -48,6 +48,17 @@ SpirvResult optimizeSpirv(const std::vector<uint32_t>& spirv, OptimizationLevel 
     return result;
 }
 
+SpirvResult stripDebugInfo(const std::vector<uint32_t>& spirv) {
+    SpirvResult result;
+    spvtools::Optimizer optimizer(kTargetEnv);
+    optimizer.SetMessageConsumer(collectInto(result.message));
+    optimizer.RegisterPass(spvtools::CreateStripDebugInfoPass());
+    spvtools::OptimizerOptions options;
+    options.set_run_validator(false);
+    result.ok = optimizer.Run(spirv.data(), spirv.size(), &result.spirv, options);
+    return result;
+}
+
 std::optional<std::string> validateSpirv(const std::vector<uint32_t>& spirv) {
     spvtools::SpirvTools tools(kTargetEnv);
     std::string message;

@@ -179,6 +179,7 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     buildOptions.jobs = options.jobs;
     buildOptions.keepGoing = options.keepGoing;
     buildOptions.cacheDirectory = options.cacheDirectory;
+    buildOptions.debugNames = options.debugNames;
     buildOptions.progress = progressPrinter(err);
     auto build = compiler::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);
     printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);

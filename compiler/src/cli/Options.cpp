@@ -3,7 +3,6 @@
 #include "varc/compiler/cli/Options.h"
 
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <cstdlib>
 #include <ostream>
@@ -31,8 +30,9 @@ std::optional<GrowthLimit> parseGrowth(const std::string& text) {
 void addInputOptions(CLI::App& command, Options& options) {
     command.add_option("-I,--include-dir", options.includeDirs, "Add an include directory")
         ->type_name("DIR");
-    command.add_option("--builtin-include-dir", options.builtinIncludeDir,
-                       "Override the built-in include directory")
+    command
+        .add_option("--builtin-include-dir", options.builtinIncludeDir,
+                    "Override the built-in include directory")
         ->type_name("DIR");
     command.add_option("paths", options.inputs, "Shader files, or directories to search")
         ->required()
@@ -75,6 +75,8 @@ void addBuild(CLI::App& app, Options& options) {
     cmd->add_option("--depfile", options.depfilePath, "Write a Make-style dependency file");
     cmd->add_flag("--json", options.json, "Print the build summary as JSON");
     cmd->add_flag("--keep-going", options.keepGoing, "Compile everything to report all errors");
+    cmd->add_flag("-g,--debug-names", options.debugNames,
+                  "Keep OpName/OpMemberName in the SPIR-V (bigger packs; for GPU debuggers)");
     cmd->add_option("--cache-dir", options.cacheDirectory,
                     "Reuse and store compiled programs in this folder (ccache-like)")
         ->envname("VARC_CACHE_DIR")
@@ -84,7 +86,8 @@ void addBuild(CLI::App& app, Options& options) {
 }
 
 void addInfo(CLI::App& app, Options& options) {
-    CLI::App* cmd = app.add_subcommand("info", "Describe a pack: shaders, passes, variants, programs");
+    CLI::App* cmd =
+        app.add_subcommand("info", "Describe a pack: shaders, passes, variants, programs");
     cmd->add_flag("--json", options.json, "Print JSON");
     cmd->add_option("pack", options.packPath, "Pack file")->required()->type_name("PACK");
     cmd->callback([&options] { options.command = Command::Info; });
@@ -93,7 +96,9 @@ void addInfo(CLI::App& app, Options& options) {
 void addExtract(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("extract", "Write every program as .spv plus manifest.json");
     cmd->add_option("pack", options.packPath, "Pack file")->required()->type_name("PACK");
-    cmd->add_option("-o,--output", options.outputPath, "Directory to write")->required()->type_name("DIR");
+    cmd->add_option("-o,--output", options.outputPath, "Directory to write")
+        ->required()
+        ->type_name("DIR");
     cmd->callback([&options] { options.command = Command::Extract; });
 }
 
@@ -101,10 +106,14 @@ void addLookup(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("lookup", "Find the variant for keywords or a light");
     cmd->add_option("pack", options.packPath, "Pack file")->required()->type_name("PACK");
     cmd->add_option("--shader", options.lookupShader, "Shader name")->required();
-    cmd->add_option("--pass", options.lookupPass, "Pass index or LightMode")->required()->type_name("N|LIGHTMODE");
-    auto* keywords = cmd->add_option("--keywords", options.lookupKeywords,
-                                     "Enabled keywords, space-separated (with --light: the material's)");
-    auto* light = cmd->add_option("--light", options.lookupLight, "Light type: directional, point or spot");
+    cmd->add_option("--pass", options.lookupPass, "Pass index or LightMode")
+        ->required()
+        ->type_name("N|LIGHTMODE");
+    auto* keywords =
+        cmd->add_option("--keywords", options.lookupKeywords,
+                        "Enabled keywords, space-separated (with --light: the material's)");
+    auto* light =
+        cmd->add_option("--light", options.lookupLight, "Light type: directional, point or spot");
     cmd->add_flag("--cookie", options.lookupCookie, "The light has a cookie")->needs(light);
     cmd->add_option("--shadows", options.lookupShadows, "none, hard or soft")->needs(light);
     cmd->add_option("--vertex-lights", options.lookupVertexLights, "Point lights shaded per vertex")
@@ -125,18 +134,22 @@ void addRender(CLI::App& app, Options& options) {
     cmd->add_option("packs", options.packPaths, "Pack files")->required()->type_name("PACK");
     cmd->add_option("--scene", options.scenePath, "Scene JSON")->required();
     cmd->add_option("-o,--output", options.outputPath, "PNG to write")->required();
-    cmd->add_option("--reference", options.referencePath, "Also render the CPU reference to this PNG");
+    cmd->add_option("--reference", options.referencePath,
+                    "Also render the CPU reference to this PNG");
     cmd->add_option("--diff", options.diffPath, "Also compare and write the diff image here");
-    cmd->add_option("--pipeline-cache", options.pipelineCachePath, "VkPipelineCache file to load and save");
+    cmd->add_option("--pipeline-cache", options.pipelineCachePath,
+                    "VkPipelineCache file to load and save");
     cmd->callback([&options] { options.command = Command::Render; });
 }
 
 void addValidate(CLI::App& app, Options& options) {
-    CLI::App* cmd = app.add_subcommand("validate", "Render every scene and compare with the CPU reference");
+    CLI::App* cmd =
+        app.add_subcommand("validate", "Render every scene and compare with the CPU reference");
     cmd->add_option("--pack", options.packPaths, "Pack files (repeat)")->required();
     cmd->add_option("--scenes", options.scenesDir, "Scene folder (default tests/scenes/forward)");
     cmd->add_option("--out", options.outputPath, "Folder for the PNGs (default validate-out)");
-    cmd->add_option("--pipeline-cache", options.pipelineCachePath, "VkPipelineCache file to load and save");
+    cmd->add_option("--pipeline-cache", options.pipelineCachePath,
+                    "VkPipelineCache file to load and save");
     cmd->callback([&options] { options.command = Command::Validate; });
 }
 

@@ -83,7 +83,11 @@ std::string trainDictionary(const std::vector<std::string>& blobs, size_t maxByt
         samples += blob;
         sizes.push_back(blob.size());
     }
-    size_t capacity = std::min(maxBytes, samples.size() / 10);
+    // About 1/40 of the samples: measured on the shader library's 700 KB of SPIR-V at level 19,
+    // blobs + dictionary total 131 KB with 16 KB, 135 KB with 32 KB, 149 KB with 64 KB.
+    // Never below kMinDictionaryBytes nor above 1/10 (too few samples to fill it).
+    size_t capacity = std::min({maxBytes, std::max(samples.size() / 40, kMinDictionaryBytes),
+                                samples.size() / 10});
     if (capacity < kMinDictionaryBytes) return {};
     std::string dictionary(capacity, '\0');
     size_t size = ZDICT_trainFromBuffer(dictionary.data(), capacity, samples.data(), sizes.data(),

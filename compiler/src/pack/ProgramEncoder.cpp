@@ -22,15 +22,16 @@ uint32_t count(size_t size) {
     return static_cast<uint32_t>(size);
 }
 
+// Each encode* below appends one program's list as a run; identical lists (the same UnityPerDraw
+// block in every program, say) share one run (TableBuilder::addRun).
 uint32_t encodeMembers(const std::vector<pack::BlockMember>& members, TableSet& tables) {
-    TableBuilder& table = tables.table(Chunk::BlockMembers);
-    uint32_t first = table.size();
+    std::vector<uint32_t> fields;
     for (const pack::BlockMember& member : members) {
-        table.add({tables.strings().intern(member.name), member.offset, member.size,
-                   tables.strings().intern(member.type), member.arrayCount,
-                   member.rowMajor ? 1u : 0u});
+        fields.insert(fields.end(), {tables.strings().intern(member.name), member.offset,
+                                     member.size, tables.strings().intern(member.type),
+                                     member.arrayCount, member.rowMajor ? 1u : 0u});
     }
-    return first;
+    return tables.table(Chunk::BlockMembers).addRun(fields);
 }
 
 // Uniform blocks and push-constant blocks share the UniformBlocks table.
@@ -38,8 +39,7 @@ template <typename Block>
 uint32_t encodeBlocks(const std::vector<Block>& blocks, TableSet& tables) {
     std::vector<uint32_t> memberFirsts;
     for (const Block& block : blocks) memberFirsts.push_back(encodeMembers(block.members, tables));
-    TableBuilder& table = tables.table(Chunk::UniformBlocks);
-    uint32_t first = table.size();
+    std::vector<uint32_t> fields;
     for (size_t i = 0; i < blocks.size(); ++i) {
         const Block& block = blocks[i];
         uint32_t set = 0, binding = 0;
@@ -47,41 +47,39 @@ uint32_t encodeBlocks(const std::vector<Block>& blocks, TableSet& tables) {
             set = block.set;
             binding = block.binding;
         }
-        table.add({tables.strings().intern(block.name), set, binding, block.size, memberFirsts[i],
-                   count(block.members.size())});
+        fields.insert(fields.end(), {tables.strings().intern(block.name), set, binding, block.size,
+                                     memberFirsts[i], count(block.members.size())});
     }
-    return first;
+    return tables.table(Chunk::UniformBlocks).addRun(fields);
 }
 
 uint32_t encodeResources(const std::vector<pack::ResourceBinding>& resources, TableSet& tables) {
-    TableBuilder& table = tables.table(Chunk::Resources);
-    uint32_t first = table.size();
+    std::vector<uint32_t> fields;
     for (const pack::ResourceBinding& r : resources) {
-        table.add({tables.strings().intern(r.name), static_cast<uint32_t>(r.kind),
-                   static_cast<uint32_t>(r.dim), r.set, r.binding, r.arraySize,
-                   r.multisampled ? 1u : 0u});
+        fields.insert(fields.end(), {tables.strings().intern(r.name), static_cast<uint32_t>(r.kind),
+                                     static_cast<uint32_t>(r.dim), r.set, r.binding, r.arraySize,
+                                     r.multisampled ? 1u : 0u});
     }
-    return first;
+    return tables.table(Chunk::Resources).addRun(fields);
 }
 
 uint32_t encodeVertexInputs(const std::vector<pack::VertexInput>& inputs, TableSet& tables) {
-    TableBuilder& table = tables.table(Chunk::VertexInputs);
-    uint32_t first = table.size();
+    std::vector<uint32_t> fields;
     for (const pack::VertexInput& input : inputs) {
-        table.add({tables.strings().intern(input.name), tables.strings().intern(input.semantic),
-                   input.location, tables.strings().intern(input.type)});
+        fields.insert(fields.end(),
+                      {tables.strings().intern(input.name), tables.strings().intern(input.semantic),
+                       input.location, tables.strings().intern(input.type)});
     }
-    return first;
+    return tables.table(Chunk::VertexInputs).addRun(fields);
 }
 
 uint32_t encodeStageVariables(const std::vector<pack::StageVariable>& vars, TableSet& tables) {
-    TableBuilder& table = tables.table(Chunk::StageVariables);
-    uint32_t first = table.size();
+    std::vector<uint32_t> fields;
     for (const pack::StageVariable& var : vars) {
-        table.add(
-            {tables.strings().intern(var.name), var.location, tables.strings().intern(var.type)});
+        fields.insert(fields.end(), {tables.strings().intern(var.name), var.location,
+                                     tables.strings().intern(var.type)});
     }
-    return first;
+    return tables.table(Chunk::StageVariables).addRun(fields);
 }
 
 uint32_t encodeReflection(const pack::ProgramReflection& reflection, TableSet& tables) {

@@ -17,6 +17,17 @@ uint32_t TableBuilder::add(std::span<const uint32_t> fields) {
     return index;
 }
 
+uint32_t TableBuilder::addRun(std::span<const uint32_t> fields) {
+    VARC_CHECK(fields.size() % mFieldCount == 0)
+        << "table run has " << fields.size() << " fields, not a multiple of " << mFieldCount;
+    if (fields.empty()) return size();
+    auto [it, inserted] =
+        mRuns.emplace(std::vector<uint32_t>(fields.begin(), fields.end()), size());
+    if (!inserted) return it->second;
+    for (size_t i = 0; i < fields.size(); i += mFieldCount) add(fields.subspan(i, mFieldCount));
+    return it->second;
+}
+
 std::string TableBuilder::serialize() const {
     std::string out;
     out.reserve(pack::kTableHeaderSize + 4 * mFields.size());

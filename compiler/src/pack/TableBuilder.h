@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <map>
 #include <span>
 #include <string>
 #include <vector>
@@ -20,6 +21,11 @@ public:
         return add(std::span<const uint32_t>(fields.begin(), fields.size()));
     }
 
+    // Appends the records in |fields| (a whole number of records) as one run referenced by
+    // (first, count), unless an identical run was added through addRun before: then returns that
+    // run's first index and adds nothing. An empty run returns size().
+    uint32_t addRun(std::span<const uint32_t> fields);
+
     uint32_t fieldCount() const { return mFieldCount; }
     uint32_t size() const { return static_cast<uint32_t>(mFields.size() / mFieldCount); }
 
@@ -29,6 +35,7 @@ public:
 private:
     uint32_t mFieldCount;
     std::vector<uint32_t> mFields;
+    std::map<std::vector<uint32_t>, uint32_t> mRuns;  // run fields -> first record
 };
 
 }  // namespace varc::compiler

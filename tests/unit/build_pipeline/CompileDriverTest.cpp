@@ -1,15 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // The compile driver: distinct programs per stage, dedup before and after glslang, determinism
 // across thread counts, grouped and mapped errors.
-#include "varc/compiler/CompileDriver.h"
-
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 
+#include "varc/compiler/CompileDriver.h"
 #include "varc/compiler/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
 #include "varc/variants/PassKeywords.h"
@@ -73,7 +72,9 @@ protected:
 
 TEST_F(CompileDriverTest, KeywordsTouchingOneStageEachGiveTwoProgramsPerStage) {
     auto output = build(kTwoKeywordShader);
-    ASSERT_TRUE(output) << (mDiagnostics.diagnostics().empty() ? "" : mDiagnostics.diagnostics()[0].message);
+    ASSERT_TRUE(output) << (mDiagnostics.diagnostics().empty()
+                                ? ""
+                                : mDiagnostics.diagnostics()[0].message);
     ASSERT_EQ(output->passes.size(), 1u);
     const CompiledPass& pass = output->passes[0];
     EXPECT_EQ(pass.variants.size(), 4u);
@@ -154,8 +155,10 @@ TEST_F(CompileDriverTest, ReflectsOneDescriptorSetPerStageWithRealBindings) {
 )");
     ASSERT_TRUE(output);
     const CompiledVariant& variant = output->passes[0].variants[0];
-    const auto& vertex = output->programs[variant.programs[stageSlot(variants::kStageVertex)]].reflection;
-    const auto& fragment = output->programs[variant.programs[stageSlot(variants::kStageFragment)]].reflection;
+    const auto& vertex =
+        output->programs[variant.programs[stageSlot(variants::kStageVertex)]].reflection;
+    const auto& fragment =
+        output->programs[variant.programs[stageSlot(variants::kStageFragment)]].reflection;
     ASSERT_EQ(vertex.uniformBlocks.size(), 1u);
     EXPECT_EQ(vertex.uniformBlocks[0].set, 0u);
     ASSERT_EQ(fragment.resources.size(), 2u);
@@ -189,7 +192,8 @@ TEST_F(CompileDriverTest, ErrorInSharedIncludeIsReportedOnceWithVariantCountAndM
     EXPECT_EQ(errors[0].location.line, 1u);
     EXPECT_NE(errors[0].message.find("undefinedValue"), std::string::npos) << errors[0].message;
     size_t mentions = 0;
-    for (const Diagnostic& d : errors) mentions += d.message.find("undefinedValue") != std::string::npos;
+    for (const Diagnostic& d : errors)
+        mentions += d.message.find("undefinedValue") != std::string::npos;
     EXPECT_EQ(mentions, 1u);
     ASSERT_FALSE(errors[0].notes.empty());
     EXPECT_NE(errors[0].notes.back().message.find("variants affected"), std::string::npos)
@@ -233,7 +237,8 @@ TEST_F(CompileDriverTest, APreprocessingErrorSharedByVariantsIsReportedOnce) {
     for (const Diagnostic& d : mDiagnostics.diagnostics()) {
         if (d.severity != Severity::Error) continue;
         ASSERT_FALSE(d.notes.empty());
-        EXPECT_NE(d.notes.back().message.find("TINTED"), std::string::npos) << d.notes.back().message;
+        EXPECT_NE(d.notes.back().message.find("TINTED"), std::string::npos)
+            << d.notes.back().message;
         if (d.message.find("tinted is unsupported") == std::string::npos) continue;
         ++mentions;
         EXPECT_EQ(mSourceMap.path(d.location.file), "shaders/test.shader");
@@ -243,7 +248,8 @@ TEST_F(CompileDriverTest, APreprocessingErrorSharedByVariantsIsReportedOnce) {
 
 TEST_F(CompileDriverTest, ASecondBuildTakesEveryProgramFromTheCacheWithIdenticalResults) {
     BuildOptions options;
-    options.cacheDirectory = ::testing::TempDir() + "varc-driver-cache-" + std::to_string(::getpid());
+    options.cacheDirectory =
+        ::testing::TempDir() + "varc-driver-cache-" + std::to_string(::getpid());
     std::filesystem::remove_all(options.cacheDirectory);
     auto cold = build(kTwoKeywordShader, options);
     ASSERT_TRUE(cold);
@@ -266,12 +272,39 @@ TEST_F(CompileDriverTest, ASecondBuildTakesEveryProgramFromTheCacheWithIdentical
     std::filesystem::remove_all(options.cacheDirectory);
 }
 
+// Whether |spirv| holds an instruction with |opcode| (OpName = 5, OpMemberName = 6).
+bool hasInstruction(const std::vector<uint32_t>& spirv, uint32_t opcode) {
+    for (size_t i = 5; i < spirv.size(); i += std::max<uint32_t>(spirv[i] >> 16, 1)) {
+        if ((spirv[i] & 0xffff) == opcode) return true;
+    }
+    return false;
+}
+
+TEST_F(CompileDriverTest, ShippedSpirvHasNoNamesUnlessAskedButReflectionKeepsThem) {
+    for (bool debugNames : {false, true}) {
+        BuildOptions options;
+        options.debugNames = debugNames;
+        auto output = build(kTwoKeywordShader, options);
+        ASSERT_TRUE(output);
+        bool sawTint = false;
+        for (const CompiledProgram& program : output->programs) {
+            EXPECT_EQ(hasInstruction(program.spirv, 5), debugNames);
+            for (const pack::UniformBlock& block : program.reflection.uniformBlocks) {
+                for (const pack::BlockMember& member : block.members)
+                    sawTint |= member.name == "_Tint";
+            }
+        }
+        EXPECT_TRUE(sawTint) << "reflection must name the members either way";
+    }
+}
+
 TEST_F(CompileDriverTest, MissingEntryPragmaIsAnError) {
     std::string shader = kTwoKeywordShader;
     shader.erase(shader.find("#pragma fragment frag"), 21);
     EXPECT_FALSE(build(shader));
     ASSERT_TRUE(mDiagnostics.hasErrors());
-    EXPECT_NE(mDiagnostics.diagnostics()[0].message.find("missing #pragma fragment"), std::string::npos);
+    EXPECT_NE(mDiagnostics.diagnostics()[0].message.find("missing #pragma fragment"),
+              std::string::npos);
 }
 
 }  // namespace

@@ -31,6 +31,7 @@ struct BuildOptions {
     unsigned jobs = 0;         // 0 = the machine's hardware concurrency
     bool keepGoing = false;    // compile everything even after errors, to report them all
     bool pruneStages = true;   // prune each stage to what its entry point reaches before dedup
+    bool debugNames = false;   // keep OpName/OpMemberName/OpSource in the shipped SPIR-V
     // A ProgramCache folder: programs found there are not compiled again, programs compiled are
     // stored there. "" = no cache.
     std::string cacheDirectory;

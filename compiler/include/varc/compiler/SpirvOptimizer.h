@@ -26,6 +26,10 @@ struct SpirvResult {
 // give equal bytes. Deterministic for equal input.
 SpirvResult optimizeSpirv(const std::vector<uint32_t>& spirv, OptimizationLevel level);
 
+// |spirv| without debug instructions (OpName, OpMemberName, OpSource, OpLine, ...): what ships
+// when names are not asked for. The pack's reflection, taken before, keeps every name it needs.
+SpirvResult stripDebugInfo(const std::vector<uint32_t>& spirv);
+
 // Validates |spirv| for Vulkan 1.0; returns the validator's message, or nullopt when valid.
 std::optional<std::string> validateSpirv(const std::vector<uint32_t>& spirv);
 

@@ -35,6 +35,7 @@ struct Options {
     std::string optimization = "-O";       // -O0 | -O | -Os
     bool keepGoing = false;                // --keep-going
     std::string cacheDirectory;            // --cache-dir DIR or VARC_CACHE_DIR
+    bool debugNames = false;               // -g, --debug-names
     // info / extract / lookup
     std::string packPath;                  // the PACK argument
     std::string lookupShader;              // --shader NAME
