@@ -96,7 +96,7 @@ const Synthetic& synthetic() {
                                                {"Bench.shader", 10 + stage, {}}});
             }
         }
-        s.contents.shaders.push_back({"Bench/Synthetic", {syntheticPass(s)}});
+        s.contents.shaders.push_back({"Bench/Synthetic", {syntheticPass(s)}, {}});
         auto start = std::chrono::steady_clock::now();
         s.bytes = compiler::serializePack(s.contents, {}, &s.stats);
         s.serializeSeconds =

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "varc/compiler/GlslangFrontend.h"
+#include "varc/compiler/PropertyDefaults.h"
 #include "varc/compiler/RenderStateConversion.h"
 #include "varc/compiler/SpirvOptimizer.h"
 
@@ -18,7 +19,8 @@ pack::Stage packStage(uint32_t stageBit) { return static_cast<pack::Stage>(stage
 
 std::vector<pack::DeclaredSet> declaredSets(const variants::PassKeywords& keywords) {
     std::vector<pack::DeclaredSet> sets;
-    for (const variants::KeywordSetDecl& set : keywords.sets) sets.push_back({set.directive, set.keywords});
+    for (const variants::KeywordSetDecl& set : keywords.sets)
+        sets.push_back({set.directive, set.keywords});
     return sets;
 }
 
@@ -27,7 +29,8 @@ std::optional<pack::PackPass> assemblePass(const LoadedShader& shader, const Com
     const LoadedPass& loaded = shader.passes[compiled.passIndex];
     ConvertedRenderState state = fromShaderLab(loaded.pass->state);
     for (const std::string& error : state.errors) {
-        sink.error(loaded.pass->location, error + " in " + describePass(shader.ast, *loaded.pass, loaded.index));
+        sink.error(loaded.pass->location,
+                   error + " in " + describePass(shader.ast, *loaded.pass, loaded.index));
     }
     if (!state.ok()) return std::nullopt;
     pack::PackPass pass;
@@ -74,6 +77,21 @@ std::string keywordList(const std::vector<std::string>& names) {
     return text;
 }
 
+// The shader's Properties defaults; one that cannot be read is left out with a warning (the
+// runtime then has no default for it, as before packs stored them).
+std::vector<pack::ShaderProperty> propertiesOf(const LoadedShader& shader, DiagnosticSink& sink) {
+    std::vector<pack::ShaderProperty> properties;
+    for (const shaderlab::Property& property : shader.ast.properties) {
+        Result<pack::ShaderProperty> converted = toPackProperty(property);
+        if (converted) {
+            properties.push_back(std::move(*converted));
+        } else {
+            sink.warning(property.location, converted.error().detail);
+        }
+    }
+    return properties;
+}
+
 }  // namespace
 
 std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& shaders,
@@ -86,7 +104,8 @@ std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& 
                           {"glslang", glslangVersionString()},
                           {"SPIRV-Tools", spirvToolsVersionString()}};
     std::string fingerprint = optionsFingerprint;
-    for (const pack::ToolVersion& tool : contents.toolchain) fingerprint += "|" + tool.name + " " + tool.version;
+    for (const pack::ToolVersion& tool : contents.toolchain)
+        fingerprint += "|" + tool.name + " " + tool.version;
     contents.inputsHash = inputsHash(sourceMap, fingerprint);
     bool ok = true;
     std::vector<size_t> shaderSlot(shaders.size(), SIZE_MAX);
@@ -94,7 +113,7 @@ std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& 
         const LoadedShader& shader = shaders[compiled.shaderIndex];
         if (shaderSlot[compiled.shaderIndex] == SIZE_MAX) {
             shaderSlot[compiled.shaderIndex] = contents.shaders.size();
-            contents.shaders.push_back({shader.ast.name, {}});
+            contents.shaders.push_back({shader.ast.name, {}, propertiesOf(shader, sink)});
         }
         auto pass = assemblePass(shader, compiled, sink);
         if (!pass) {
@@ -104,9 +123,9 @@ std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& 
         contents.shaders[shaderSlot[compiled.shaderIndex]].passes.push_back(std::move(*pass));
     }
     for (const CompiledProgram& program : build.programs) {
-        contents.programs.push_back({packStage(program.stage), program.entryPoint, program.spirv,
-                                     program.reflection,
-                                     sourceInfo(shaders[program.shaderIndex], program.passIndex, sourceMap)});
+        contents.programs.push_back(
+            {packStage(program.stage), program.entryPoint, program.spirv, program.reflection,
+             sourceInfo(shaders[program.shaderIndex], program.passIndex, sourceMap)});
     }
     if (!ok) return std::nullopt;
     return contents;
@@ -120,21 +139,26 @@ bool checkStageInterfaces(const std::vector<LoadedShader>& shaders, const BuildO
         for (const CompiledVariant& variant : pass.variants) {
             uint32_t vertex = variant.programs[stageSlot(variants::kStageVertex)];
             uint32_t fragment = variant.programs[stageSlot(variants::kStageFragment)];
-            if (vertex == kNoProgram || fragment == kNoProgram || !checked.insert({vertex, fragment}).second) continue;
+            if (vertex == kNoProgram || fragment == kNoProgram ||
+                !checked.insert({vertex, fragment}).second)
+                continue;
             const auto& outputs = build.programs[vertex].reflection.outputs;
             for (const pack::StageVariable& input : build.programs[fragment].reflection.inputs) {
                 bool matched = false;
                 for (const pack::StageVariable& output : outputs) {
-                    matched = matched || (output.location == input.location && output.type == input.type);
+                    matched =
+                        matched || (output.location == input.location && output.type == input.type);
                 }
                 if (matched) continue;
                 const LoadedShader& shader = shaders[pass.shaderIndex];
                 const LoadedPass& loaded = shader.passes[pass.passIndex];
-                sink.error(loaded.pass->program->origin,
-                           "fragment input '" + input.name + "' (location " + std::to_string(input.location) +
-                               ", " + input.type + ") is not written by the vertex program in " +
-                               describePass(shader.ast, *loaded.pass, loaded.index) + ", keywords: " +
-                               keywordList(loaded.space->table().namesOf(variant.key)));
+                sink.error(
+                    loaded.pass->program->origin,
+                    "fragment input '" + input.name + "' (location " +
+                        std::to_string(input.location) + ", " + input.type +
+                        ") is not written by the vertex program in " +
+                        describePass(shader.ast, *loaded.pass, loaded.index) +
+                        ", keywords: " + keywordList(loaded.space->table().namesOf(variant.key)));
                 ok = false;
             }
         }

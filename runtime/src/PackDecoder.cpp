@@ -56,6 +56,7 @@ Result<pack::PackContents> decodePack(const Pack& pack) {
         shader.name = view.name();
         for (size_t p = 0; p < view.passCount(); ++p)
             shader.passes.push_back(decodePass(*view.pass(p)));
+        shader.properties = view.properties();
         contents.shaders.push_back(std::move(shader));
     }
     for (size_t i = 0; i < pack.programCount(); ++i) {

@@ -36,7 +36,9 @@ Status PackImage::load(const OpenOptions& options) {
     mKeyIndexes.resize(count(pack::Chunk::Passes));
     for (uint32_t pass = 0; options.indexKeys && pass < count(pack::Chunk::Passes); ++pass) {
         uint32_t variants = get(pack::Chunk::Passes, pass, pack::kPassVariantCount);
-        if (get(pack::Chunk::Passes, pass, pack::kPassKeyWords) != 1 || variants < KeyHashIndex::kMinKeys) continue;
+        if (get(pack::Chunk::Passes, pass, pack::kPassKeyWords) != 1 ||
+            variants < KeyHashIndex::kMinKeys)
+            continue;
         const std::byte* keys = raw(pack::Chunk::VariantKeys).data() +
                                 8 * size_t{get(pack::Chunk::Passes, pass, pack::kPassKeyFirst)};
         mKeyIndexes[pass] = KeyHashIndex(keys, variants);
@@ -53,6 +55,12 @@ Status PackImage::loadTables(const ChunkDirectory& directory) {
         mRaw[i] = bytes;
         if (!pack::chunkInfo(chunk).table) continue;
         std::string name = pack::chunkInfo(chunk).name;
+        if (bytes.empty() && !pack::chunkInfo(chunk).required) {
+            // An absent optional table reads as one without records.
+            mTables[i] =
+                TableView{nullptr, static_cast<uint32_t>(pack::tableSchema(chunk).size()), 0};
+            continue;
+        }
         if (bytes.size() < pack::kTableHeaderSize) {
             return makeError(ErrorCode::InvalidInput, "table chunk " + name + " is too short");
         }

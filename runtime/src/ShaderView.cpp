@@ -2,6 +2,8 @@
 // One shader of an open Pack: its name and passes.
 #include "varc/runtime/ShaderView.h"
 
+#include <bit>
+
 #include "AsciiCase.h"
 #include "PackImage.h"
 #include "varc/pack/PackTables.h"
@@ -30,6 +32,25 @@ std::optional<PassView> ShaderView::pass(std::string_view lightMode) const {
         if (detail::equalsIgnoreAsciiCase(candidate.lightMode(), lightMode)) return candidate;
     }
     return std::nullopt;
+}
+
+std::vector<pack::ShaderProperty> ShaderView::properties() const {
+    std::vector<pack::ShaderProperty> properties;
+    for (uint32_t record = 0; record < mImage->count(Chunk::Properties); ++record) {
+        if (mImage->get(Chunk::Properties, record, pack::kPropertyShader) != mIndex) continue;
+        pack::ShaderProperty property;
+        property.name = mImage->string(mImage->get(Chunk::Properties, record, pack::kPropertyName));
+        property.kind = static_cast<pack::PropertyKind>(
+            mImage->get(Chunk::Properties, record, pack::kPropertyKind));
+        for (uint32_t i = 0; i < 4; ++i) {
+            property.value[i] =
+                std::bit_cast<float>(mImage->get(Chunk::Properties, record, pack::kPropertyX + i));
+        }
+        property.texture =
+            mImage->string(mImage->get(Chunk::Properties, record, pack::kPropertyTexture));
+        properties.push_back(std::move(property));
+    }
+    return properties;
 }
 
 }  // namespace varc::runtime

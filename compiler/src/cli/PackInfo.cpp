@@ -67,6 +67,32 @@ std::string hex64(uint64_t value) {
     return text;
 }
 
+// The shader's Properties defaults: {"name", "kind", "default"}; default is a number, [x,y,z,w]
+// or the texture's name.
+Json propertiesJson(const runtime::ShaderView& shader) {
+    static const char* const kKinds[] = {"float", "vector", "color", "texture"};
+    Json properties = Json::array();
+    for (const pack::ShaderProperty& property : shader.properties()) {
+        Json value;
+        switch (property.kind) {
+            case pack::PropertyKind::Float:
+                value = property.value[0];
+                break;
+            case pack::PropertyKind::Vector:
+            case pack::PropertyKind::Color:
+                value = property.value;
+                break;
+            case pack::PropertyKind::Texture:
+                value = property.texture;
+                break;
+        }
+        properties.push_back({{"name", property.name},
+                              {"kind", kKinds[static_cast<size_t>(property.kind)]},
+                              {"default", value}});
+    }
+    return properties;
+}
+
 Json infoJson(const runtime::Pack& pack, const std::string& path) {
     Json shaders = Json::array();
     uint64_t total = 0;
@@ -84,7 +110,10 @@ Json infoJson(const runtime::Pack& pack, const std::string& path) {
                               {"programs", programsJson(pass)}});
             shaderTotal += pass.variantCount();
         }
-        shaders.push_back({{"name", shader.name()}, {"passes", passes}, {"variants", shaderTotal}});
+        shaders.push_back({{"name", shader.name()},
+                           {"passes", passes},
+                           {"variants", shaderTotal},
+                           {"properties", propertiesJson(shader)}});
         total += shaderTotal;
     }
     Json toolchain = Json::object();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Encodes shaders, passes, keyword tables, render states and the sorted variant index.
 #include <algorithm>
+#include <bit>
 #include <map>
 #include <numeric>
 
@@ -163,7 +164,18 @@ void encodeShaders(const pack::PackContents& contents, const ProgramTable& progr
         for (const pack::PackPass& pass : shader.passes) {
             encodePass(pass, programs, tables, renderStates);
         }
-        tables.table(Chunk::Shaders).add({name, passFirst, count(shader.passes.size())});
+        uint32_t shaderIndex =
+            tables.table(Chunk::Shaders).add({name, passFirst, count(shader.passes.size())});
+        for (const pack::ShaderProperty& property : shader.properties) {
+            tables.table(Chunk::Properties)
+                .add({shaderIndex, tables.strings().intern(property.name),
+                      static_cast<uint32_t>(property.kind),
+                      std::bit_cast<uint32_t>(property.value[0]),
+                      std::bit_cast<uint32_t>(property.value[1]),
+                      std::bit_cast<uint32_t>(property.value[2]),
+                      std::bit_cast<uint32_t>(property.value[3]),
+                      tables.strings().intern(property.texture)});
+        }
     }
     encodeShaderNames(contents, tables);
 }

@@ -38,7 +38,10 @@ std::vector<std::pair<pack::Chunk, std::string>> TableSet::finish() const {
         } else if (chunk == pack::Chunk::StringBytes) {
             chunks.emplace_back(chunk, mStrings.bytesChunk());
         } else if (info.table) {
-            chunks.emplace_back(chunk, mTables[i]->serialize());
+            // An optional table without records is left out (packs without it stay 1.0-shaped).
+            if (info.required || mTables[i]->size() > 0) {
+                chunks.emplace_back(chunk, mTables[i]->serialize());
+            }
         } else if (info.required || !mRaw[i].empty()) {
             chunks.emplace_back(chunk, mRaw[i]);
         }

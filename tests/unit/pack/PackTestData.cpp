@@ -178,17 +178,21 @@ pack::PackContents makeSampleContents() {
     contents.toolchain = {{"varc", "0.1.0"}, {"glslang", "12.0.0"}, {"zstd", "1.5.4"}};
     contents.inputsHash = 0x0123456789abcdefull;
     ProgramMaker programs(contents);
-    pack::PackShader lit{"Custom/Lit", {}};
+    pack::PackShader lit{"Custom/Lit", {}, {}};
+    lit.properties = {{"_Color", pack::PropertyKind::Color, {1.0f, 0.5f, 0.25f, 1.0f}, ""},
+                      {"_Glossiness", pack::PropertyKind::Float, {0.5f, 0, 0, 0}, ""},
+                      {"_MainTex", pack::PropertyKind::Texture, {}, "white"}};
     lit.passes.push_back(forwardBase(programs));
     lit.passes.push_back(forwardAdd(programs));
     lit.passes.push_back(shadowCaster(programs));
-    pack::PackShader unlit{"Custom/Unlit", {}};
+    pack::PackShader unlit{"Custom/Unlit", {}, {}};
+    unlit.properties = {{"_BumpMap", pack::PropertyKind::Texture, {}, "bump"}};
     pack::PackPass only;
     only.variants.push_back({});
     only.variants[0].programs[0] = programs.get(Stage::Vertex, "base_v");  // shared with Lit
     only.variants[0].programs[1] = programs.get(Stage::Fragment, "unlit_f");
     unlit.passes.push_back(only);
-    pack::PackShader empty{"Custom/Empty", {}};
+    pack::PackShader empty{"Custom/Empty", {}, {}};
     empty.passes.emplace_back();
     empty.passes[0].keywordTable = {"UNUSED"};
     empty.passes[0].sets = {{"shader_feature", {"", "UNUSED"}}};

@@ -33,6 +33,21 @@ TEST(PackWriter, RoundTripGivesEqualContents) {
     EXPECT_EQ(roundTrip(serializePack(contents)), contents);
 }
 
+TEST(PackWriter, PropertiesRoundTripAndAPackWithoutAnyLacksThePropChunk) {
+    pack::PackContents contents = packtest::makeSampleContents();
+    Result<runtime::Pack> pack = runtime::Pack::fromBytes(serializePack(contents));
+    ASSERT_TRUE(pack.ok());
+    std::optional<runtime::ShaderView> lit = pack->findShader("Custom/Lit");
+    ASSERT_TRUE(lit);
+    EXPECT_EQ(lit->properties(), contents.shaders[0].properties);
+    EXPECT_TRUE(pack->findShader("Custom/Empty")->properties().empty());
+
+    for (pack::PackShader& shader : contents.shaders) shader.properties.clear();
+    std::string bytes = serializePack(contents);
+    EXPECT_EQ(bytes.find("PROP"), std::string::npos) << "an empty optional table is left out";
+    EXPECT_EQ(roundTrip(bytes), contents);
+}
+
 TEST(PackWriter, RoundTripWithAndWithoutDictionary) {
     pack::PackContents contents = packtest::makeSampleContents();
     for (PackDictionary mode : {PackDictionary::Never, PackDictionary::Always}) {
@@ -145,7 +160,7 @@ TEST(PackWriter, KeysBeyond64KeywordsRoundTrip) {
         variant.programs[0] = 0;
         pass.variants.push_back(variant);
     }
-    contents.shaders.push_back({"Wide", {pass}});
+    contents.shaders.push_back({"Wide", {pass}, {}});
     EXPECT_EQ(roundTrip(serializePack(contents)), contents);
 }
 

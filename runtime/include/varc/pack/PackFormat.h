@@ -26,7 +26,7 @@ inline constexpr std::array<char, 8> kMagic = {'V', 'A', 'R', 'C', 'P', 'A', 'C'
 // chunks (unknown chunk ids are skipped) or append fields to table records (readers ignore
 // fields past the ones they know). Anything else bumps the major version.
 inline constexpr uint16_t kVersionMajor = 1;
-inline constexpr uint16_t kVersionMinor = 0;
+inline constexpr uint16_t kVersionMinor = 1;  // 1.1: the optional PROP chunk
 
 inline constexpr size_t kHeaderSize = 64;
 inline constexpr size_t kChunkEntrySize = 32;
@@ -81,8 +81,9 @@ enum class Chunk : uint8_t {
     Blobs,            // table: codec, offset, size, raw size of each SPIR-V blob
     BlobData,         // raw: the (compressed) blobs
     Dictionary,       // raw, optional: the zstd dictionary shared by ZstdDictionary blobs
+    Properties,       // table, optional (format 1.1): the shaders' Properties defaults
 };
-inline constexpr size_t kChunkCount = static_cast<size_t>(Chunk::Dictionary) + 1;
+inline constexpr size_t kChunkCount = static_cast<size_t>(Chunk::Properties) + 1;
 
 constexpr uint32_t makeFourcc(const char (&text)[5]) {
     return static_cast<uint32_t>(static_cast<unsigned char>(text[0])) |
@@ -110,7 +111,7 @@ inline constexpr std::array<ChunkInfo, kChunkCount> kChunkInfo = {{
     {makeFourcc("UMEM"), "UMEM", true, true},   {makeFourcc("RRES"), "RRES", true, true},
     {makeFourcc("VINP"), "VINP", true, true},   {makeFourcc("SVAR"), "SVAR", true, true},
     {makeFourcc("BLOB"), "BLOB", true, true},   {makeFourcc("BDAT"), "BDAT", false, true},
-    {makeFourcc("DICT"), "DICT", false, false},
+    {makeFourcc("DICT"), "DICT", false, false}, {makeFourcc("PROP"), "PROP", true, false},
 }};
 
 constexpr const ChunkInfo& chunkInfo(Chunk chunk) { return kChunkInfo[static_cast<size_t>(chunk)]; }

@@ -72,9 +72,24 @@ struct PackPass {
     friend bool operator==(const PackPass&, const PackPass&) = default;
 };
 
+// What a ShaderLab property holds by default: Float (Float, Range, Int, Integer), Vector,
+// Color or a texture (2D, 3D, Cube, arrays).
+enum class PropertyKind : uint8_t { Float = 0, Vector = 1, Color = 2, Texture = 3 };
+inline constexpr uint32_t kPropertyKindCount = 4;
+
+// One entry of a shader's `Properties` block, with its default value.
+struct ShaderProperty {
+    std::string name;  // "_Color"
+    PropertyKind kind = PropertyKind::Float;
+    std::array<float, 4> value{};  // Float: value[0]; Vector, Color: xyzw; Texture: 0
+    std::string texture;           // Texture: the default's name ("white", "bump", ...; "" none)
+    friend bool operator==(const ShaderProperty&, const ShaderProperty&) = default;
+};
+
 struct PackShader {
     std::string name;  // `Shader "Custom/Name"`
     std::vector<PackPass> passes;
+    std::vector<ShaderProperty> properties;  // declaration order
     friend bool operator==(const PackShader&, const PackShader&) = default;
 };
 

@@ -202,6 +202,27 @@ enum BlobField : uint32_t {
 inline constexpr FieldSpec kBlobSchema[] = {belowField(kBlobCodecCount), valueField(), valueField(),
                                             valueField()};
 
+// Properties defaults (optional chunk, format 1.1): records grouped by shader, declaration order.
+enum PropertyField : uint32_t {
+    kPropertyShader,
+    kPropertyName,
+    kPropertyKind,
+    kPropertyX,  // float bits
+    kPropertyY,
+    kPropertyZ,
+    kPropertyW,
+    kPropertyTexture,  // string ("" for none)
+    kPropertyFieldCount
+};
+inline constexpr FieldSpec kPropertySchema[] = {indexField(Chunk::Shaders),
+                                                stringField(),
+                                                belowField(kPropertyKindCount),
+                                                valueField(),
+                                                valueField(),
+                                                valueField(),
+                                                valueField(),
+                                                stringField()};
+
 // The schema of each chunk; empty for raw chunks.
 inline constexpr std::array<std::span<const FieldSpec>, kChunkCount> kTableSchemas = {{
     kStringSchema,
@@ -227,6 +248,7 @@ inline constexpr std::array<std::span<const FieldSpec>, kChunkCount> kTableSchem
     kBlobSchema,
     {},
     {},
+    kPropertySchema,
 }};
 
 constexpr std::span<const FieldSpec> tableSchema(Chunk chunk) {
@@ -236,6 +258,7 @@ constexpr std::span<const FieldSpec> tableSchema(Chunk chunk) {
 static_assert(std::size(kStringSchema) == kStringFieldCount);
 static_assert(std::size(kToolSchema) == kToolFieldCount);
 static_assert(std::size(kShaderSchema) == kShaderFieldCount);
+static_assert(std::size(kPropertySchema) == kPropertyFieldCount);
 static_assert(std::size(kShaderNameSchema) == kShaderNameFieldCount);
 static_assert(std::size(kPassSchema) == kPassFieldCount);
 static_assert(std::size(kTagSchema) == kTagFieldCount);

@@ -6,7 +6,9 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
+#include <vector>
 
+#include "varc/pack/PackModel.h"
 #include "varc/runtime/PassView.h"
 
 namespace varc::runtime {
@@ -15,7 +17,8 @@ namespace detail {
 class PackImage;
 }
 
-// A cheap handle (pointer + index); valid while its Pack lives. Allocation-free.
+// A cheap handle (pointer + index); valid while its Pack lives. Allocation-free except
+// properties().
 class ShaderView {
 public:
     ShaderView(const detail::PackImage* image, uint32_t index) : mImage(image), mIndex(index) {}
@@ -30,6 +33,10 @@ public:
     // The first pass whose LightMode tag equals |lightMode| (ASCII case-insensitive, as Unity
     // compares tags); nullopt when none.
     std::optional<PassView> pass(std::string_view lightMode) const;
+
+    // The shader's `Properties` with their defaults, in declaration order (empty for packs of
+    // format 1.0, which did not store them). Engines start a material from these.
+    std::vector<pack::ShaderProperty> properties() const;
 
 private:
     const detail::PackImage* mImage;
