@@ -58,6 +58,8 @@ Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
     Solid solids[] = {{&textures.mWhite, solid(255, 255, 255, 255), "white"},
                       {&textures.mBlack, solid(0, 0, 0, 0), "black"},
                       {&textures.mBump, solid(128, 128, 255, 255), "bump"},
+                      {&textures.mGray, solid(128, 128, 128, 255), "gray"},
+                      {&textures.mRed, solid(255, 0, 0, 255), "red"},
                       {&textures.mFalloff, falloffImage(), "falloff"},
                       {&textures.mSpot, cookieLayers(scene::defaultSpotCookie())[0], "spot cookie"},
                       {&textures.mDirectional, cookieLayers(scene::defaultDirectionalCookie())[0],
@@ -101,6 +103,8 @@ std::optional<TextureBinding> BuiltinTextures::named(std::string_view name,
     if (name == "white" || name.empty()) return TextureBinding{mWhite->view(), mRepeat.get()};
     if (name == "black") return TextureBinding{mBlack->view(), mRepeat.get()};
     if (name == "bump") return TextureBinding{mBump->view(), mRepeat.get()};
+    if (name == "gray" || name == "grey") return TextureBinding{mGray->view(), mRepeat.get()};
+    if (name == "red") return TextureBinding{mRed->view(), mRepeat.get()};
     return std::nullopt;
 }
 

@@ -108,8 +108,23 @@ ShaderValues forwardLightValues(const scene::Light* light) {
 }
 
 ShaderValues materialValues(const scene::Material& material,
-                            std::map<std::string, std::string>& textures) {
+                            std::map<std::string, std::string>& textures,
+                            const std::vector<pack::ShaderProperty>& defaults) {
     ShaderValues values;
+    for (const pack::ShaderProperty& property : defaults) {
+        const std::array<float, 4>& v = property.value;
+        switch (property.kind) {
+            case pack::PropertyKind::Float: values.set(property.name, v[0]); break;
+            case pack::PropertyKind::Vector:
+            case pack::PropertyKind::Color:
+                values.set(property.name, glm::vec4(v[0], v[1], v[2], v[3]));
+                break;
+            case pack::PropertyKind::Texture:
+                // Unity's default for an empty or unknown name is gray.
+                textures[property.name] = property.texture.empty() ? "gray" : property.texture;
+                break;
+        }
+    }
     for (const auto& [name, value] : material.properties) {
         if (const float* number = std::get_if<float>(&value)) {
             values.set(name, *number);

@@ -16,7 +16,8 @@ class BuiltinTextures {
 public:
     static Result<BuiltinTextures> create(VulkanContext& context);
 
-    // "white", "black", "bump" (2D) and "white" (cube), linear-repeat sampled.
+    // "white", "black", "bump", "gray" ("grey"), "red" (2D; Unity's default texture names) and
+    // "white" (cube), linear-repeat sampled.
     std::optional<TextureBinding> named(std::string_view name, pack::ResourceDim dim) const;
     TextureBinding falloff() const;            // 1024 x 1, linear, clamp
     TextureBinding spotCookie() const;         // linear, clamp
@@ -31,7 +32,8 @@ public:
                                                bool deferred) const;
 
 private:
-    std::optional<Texture> mWhite, mBlack, mBump, mWhiteCube, mFalloff, mSpot, mDirectional, mPoint;
+    std::optional<Texture> mWhite, mBlack, mBump, mGray, mRed, mWhiteCube, mFalloff, mSpot,
+        mDirectional, mPoint;
     UniqueHandle<VkSampler> mRepeat, mClamp;
 };
 

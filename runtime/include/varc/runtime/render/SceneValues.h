@@ -3,6 +3,7 @@
 // Pure CPU: the renderer layers them (light, object, material, camera) for UniformBlockWriter.
 #pragma once
 
+#include "varc/pack/PackModel.h"
 #include "varc/runtime/render/ShaderValues.h"
 #include "varc/scene/CameraMatrices.h"
 #include "varc/scene/ForwardLights.h"
@@ -23,9 +24,11 @@ ShaderValues objectValues(const scene::Scene& scene, const scene::Object& object
 // without a main directional light (colour 0).
 ShaderValues forwardLightValues(const scene::Light* light);
 
-// Material properties as given: floats, vectors; textures get `<name>_ST` = (1, 1, 0, 0) unless
-// the material sets it. Texture names are returned through |textures| (property -> name).
+// Material properties: the shader's |defaults| (ShaderView::properties()), overridden by what the
+// material sets; textures get `<name>_ST` = (1, 1, 0, 0) unless the material sets it. Texture
+// names are returned through |textures| (property -> name; a default "" becomes "gray").
 ShaderValues materialValues(const scene::Material& material,
-                            std::map<std::string, std::string>& textures);
+                            std::map<std::string, std::string>& textures,
+                            const std::vector<pack::ShaderProperty>& defaults = {});
 
 }  // namespace varc::runtime
