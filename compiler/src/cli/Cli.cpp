@@ -199,7 +199,9 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
         return kExitFailure;
     }
     compiler::PackWriteStats stats;
-    Status written = compiler::writePack(options.outputPath, *contents, {}, &stats);
+    compiler::PackWriteOptions writeOptions;
+    writeOptions.compressionLevel = options.compressionLevel;
+    Status written = compiler::writePack(options.outputPath, *contents, writeOptions, &stats);
     if (!written) {
         err << "varc: error: " << written.error().detail << "\n";
         return kExitFailure;

@@ -36,6 +36,7 @@ struct Options {
     bool keepGoing = false;                // --keep-going
     std::string cacheDirectory;            // --cache-dir DIR or VARC_CACHE_DIR
     bool debugNames = false;               // -g, --debug-names
+    int compressionLevel = 19;             // --compression-level N (zstd, 1..22)
     // info / extract / lookup
     std::string packPath;                  // the PACK argument
     std::string lookupShader;              // --shader NAME
