@@ -9,6 +9,7 @@ add_library(varc_render STATIC
     src/render/DeferredTargets.cpp
     src/render/DeferredValues.cpp
     src/render/DescriptorSlots.cpp
+    src/render/Draw.cpp
     src/render/DrawResources.cpp
     src/render/ForwardRenderer.cpp
     src/render/GpuMesh.cpp

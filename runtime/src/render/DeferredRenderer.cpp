@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "render/DeferredTargets.h"
+#include "render/Draw.h"
 #include "render/GpuMesh.h"
 #include "render/RendererBase.h"
 #include "varc/runtime/PassView.h"
@@ -30,13 +31,6 @@ namespace {
 constexpr float kStencilNonBackground = 128.0f;
 
 enum class Phase { GBuffer, Light, Decode };
-
-struct Draw {
-    const VariantPipeline* pipeline = nullptr;
-    const GpuMesh* mesh = nullptr;
-    std::array<const ShaderValues*, 4> layers{};  // light, object, material, camera
-    TextureLookup textures;
-};
 
 Result<GpuMesh> uploadQuad(VulkanContext& context, const scene::CameraMatrices& camera) {
     scene::Mesh mesh;
@@ -154,7 +148,8 @@ ShaderValues lightPassMaterial(bool hdr) {
 // in Unity, which overrides the light pass's own Cull and ZTest for volumes.
 void applyVolumeState(LightVolumeDraw draw, pack::PackRenderState& state) {
     switch (draw) {
-        case LightVolumeDraw::FullScreenQuad: break;
+        case LightVolumeDraw::FullScreenQuad:
+            break;
         case LightVolumeDraw::FrontFaces:
             state.cull.value = pack::CullMode::Back;
             state.zTest.value = pack::CompareFunction::LessEqual;
@@ -323,19 +318,9 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     }
 
     Status bound = Ok{};
+    // Records each pass's draws; after a bind error the later passes stay empty.
     auto record = [&](VkCommandBuffer commands, const std::vector<Draw>& draws) {
-        for (const Draw& draw : draws) {
-            if (!bound) return;
-            vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.pipeline->pipeline());
-            bound = s.resources->bind(commands, *draw.pipeline, draw.layers, draw.textures);
-            if (!bound) return;
-            VkBuffer vertexBuffer = draw.mesh->vertices.handle();
-            VkDeviceSize offset = 0;
-            vkCmdBindVertexBuffers(commands, 0, 1, &vertexBuffer, &offset);
-            vkCmdBindIndexBuffer(commands, draw.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-            vkCmdDrawIndexed(commands, draw.mesh->indexCount, 1, 0, 0, 0);
-            ++frame.draws;
-        }
+        if (bound) bound = recordDraws(commands, *s.resources, draws, frame.draws);
     };
     Status submitted = s.context->submitAndWait([&](VkCommandBuffer commands) {
         VkViewport viewport = g.viewport();

@@ -3,6 +3,7 @@
 
 #include <deque>
 
+#include "render/Draw.h"
 #include "render/GpuMesh.h"
 #include "render/RendererBase.h"
 #include "varc/runtime/PassView.h"
@@ -15,18 +16,6 @@
 #include "varc/variants/LightKeywords.h"
 
 namespace varc::runtime {
-
-namespace {
-
-// One recorded draw: everything bind() and vkCmdDrawIndexed need.
-struct Draw {
-    const VariantPipeline* pipeline = nullptr;
-    const GpuMesh* mesh = nullptr;
-    std::array<const ShaderValues*, 4> layers{};  // light, object, material, camera
-    TextureLookup textures;
-};
-
-}  // namespace
 
 struct ForwardRenderer::State : RendererBase {
     struct TargetKey {
@@ -154,29 +143,9 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
     }
 
     const RenderTarget& rt = **target;
-    Status bound = Ok{};
-    Status submitted = s.context->submitAndWait([&](VkCommandBuffer commands) {
-        rt.begin(commands, LoadOp::Clear);
-        VkViewport viewport = rt.viewport();
-        VkRect2D area = rt.area();
-        vkCmdSetViewport(commands, 0, 1, &viewport);
-        vkCmdSetScissor(commands, 0, 1, &area);
-        for (const Draw& draw : draws) {
-            vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.pipeline->pipeline());
-            bound = s.resources->bind(commands, *draw.pipeline, draw.layers, draw.textures);
-            if (!bound) break;
-            VkBuffer vertexBuffer = draw.mesh->vertices.handle();
-            VkDeviceSize offset = 0;
-            vkCmdBindVertexBuffers(commands, 0, 1, &vertexBuffer, &offset);
-            vkCmdBindIndexBuffer(commands, draw.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-            vkCmdDrawIndexed(commands, draw.mesh->indexCount, 1, 0, 0, 0);
-            ++frame.draws;
-        }
-        rt.end(commands);
-    });
-    if (Status reset = s.resources->reset(); !reset) return reset.error();
-    if (!bound) return bound.error();
-    if (!submitted) return submitted.error();
+    if (Status submitted = s.submitDraws(rt, draws, frame.draws); !submitted) {
+        return submitted.error();
+    }
     auto image = rt.readback(*s.context);
     if (!image) return image.error();
     frame.image = std::move(*image);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "RendererBase.h"
+#include "render/RendererBase.h"
 
 #include "varc/scene/Mesh.h"
 
@@ -61,6 +61,24 @@ Result<const VariantPipeline*> RendererBase::pipeline(const Pack* pack, const Va
     if (!created) return created.error();
     mPipelines.push_back({pack, name, state, targetKind, std::move(*created)});
     return &mPipelines.back().pipeline;
+}
+
+Status RendererBase::submitDraws(const RenderTarget& target, const std::vector<Draw>& draws,
+                                 uint32_t& drawCount) {
+    Status bound = Ok{};
+    Status submitted = context->submitAndWait([&](VkCommandBuffer commands) {
+        target.begin(commands, LoadOp::Clear);
+        VkViewport viewport = target.viewport();
+        VkRect2D area = target.area();
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &area);
+        bound = recordDraws(commands, *resources, draws, drawCount);
+        target.end(commands);
+    });
+    if (Status reset = resources->reset(); !reset) return reset.error();
+    if (!bound) return bound.error();
+    if (!submitted) return submitted.error();
+    return Ok{};
 }
 
 }  // namespace varc::runtime

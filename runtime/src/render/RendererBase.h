@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // What the forward, deferred and single-pass renderers share: the packs and how shaders are
-// found in them, the built-in textures and meshes, per-frame draw resources, and the pipelines
-// created so far (one per variant, resolved render state and kind of target).
+// found in them, the built-in textures and meshes, per-frame draw resources, the pipelines
+// created so far (one per variant, resolved render state and kind of target), and the submit of a
+// one-pass frame.
 #pragma once
 
 #include <deque>
@@ -10,12 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "GpuMesh.h"
+#include "render/Draw.h"
+#include "render/GpuMesh.h"
 #include "varc/runtime/Pack.h"
 #include "varc/runtime/ShaderView.h"
 #include "varc/runtime/render/BuiltinTextures.h"
 #include "varc/runtime/render/DrawResources.h"
 #include "varc/runtime/render/VariantPipeline.h"
+#include "varc/runtime/vulkan/RenderTarget.h"
 #include "varc/scene/Scene.h"
 #include "varc/variants/LightKeywords.h"
 
@@ -44,6 +47,13 @@ struct RendererBase {
     Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
                                             const pack::PackRenderState& state,
                                             const PipelineTarget& target, uint32_t targetKind);
+
+    // Records |draws| into one cleared render pass of |target| (viewport and scissor: the whole
+    // target), submits and waits, then resets the draw resources; adds the draws recorded to
+    // |drawCount|. Errors, first that applies: the reset's, the first bind error (recordDraws),
+    // the submit's.
+    Status submitDraws(const RenderTarget& target, const std::vector<Draw>& draws,
+                       uint32_t& drawCount);
 
 private:
     struct CachedPipeline {

@@ -9,6 +9,7 @@
 #include <set>
 #include <tuple>
 
+#include "render/Draw.h"
 #include "render/GpuMesh.h"
 #include "render/RendererBase.h"
 #include "varc/runtime/PassView.h"
@@ -114,15 +115,6 @@ ShaderValues singleObjectValues(const scene::Object& object) {
     return values;
 }
 
-struct RecordedDraw {
-    const VariantPipeline* pipeline = nullptr;
-    const GpuMesh* mesh = nullptr;
-    uint32_t instances = 1;
-    std::array<const ShaderValues*, 5>
-        layers{};  // instances/object, draw lights, material, light buffer, camera
-    TextureLookup textures;
-};
-
 }  // namespace
 
 struct SinglePassRenderer::State : RendererBase {
@@ -134,9 +126,6 @@ struct SinglePassRenderer::State : RendererBase {
     const InstancedLayout* instancing(const PassView& pass);
     Result<std::vector<DrawGroup>> group(const scene::Scene& scene,
                                          const scene::VisibleLightSet& visible, bool instancing);
-    // Records |draws| into one render pass of |rt|, submits and waits; counts them in |frame|.
-    Status submit(const RenderTarget& rt, const std::vector<RecordedDraw>& draws,
-                  RenderedFrame& frame);
 };
 
 Result<const RenderTarget*> SinglePassRenderer::State::target(const scene::Camera& camera) {
@@ -209,36 +198,6 @@ Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(
     return groups;
 }
 
-Status SinglePassRenderer::State::submit(const RenderTarget& rt,
-                                         const std::vector<RecordedDraw>& draws,
-                                         RenderedFrame& frame) {
-    Status bound = Ok{};
-    Status submitted = context->submitAndWait([&](VkCommandBuffer commands) {
-        rt.begin(commands, LoadOp::Clear);
-        VkViewport viewport = rt.viewport();
-        VkRect2D area = rt.area();
-        vkCmdSetViewport(commands, 0, 1, &viewport);
-        vkCmdSetScissor(commands, 0, 1, &area);
-        for (const RecordedDraw& draw : draws) {
-            vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, draw.pipeline->pipeline());
-            bound = resources->bind(commands, *draw.pipeline, draw.layers, draw.textures);
-            if (!bound) break;
-            VkBuffer vertexBuffer = draw.mesh->vertices.handle();
-            VkDeviceSize offset = 0;
-            vkCmdBindVertexBuffers(commands, 0, 1, &vertexBuffer, &offset);
-            vkCmdBindIndexBuffer(commands, draw.mesh->indices.handle(), 0, VK_INDEX_TYPE_UINT32);
-            // firstInstance 0: SV_InstanceID (gl_InstanceIndex) indexes the instance arrays.
-            vkCmdDrawIndexed(commands, draw.mesh->indexCount, draw.instances, 0, 0, 0);
-            ++frame.draws;
-        }
-        rt.end(commands);
-    });
-    if (Status reset = resources->reset(); !reset) return reset.error();
-    if (!bound) return bound.error();
-    if (!submitted) return submitted.error();
-    return Ok{};
-}
-
 SinglePassRenderer::SinglePassRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
 SinglePassRenderer::SinglePassRenderer(SinglePassRenderer&&) noexcept = default;
 SinglePassRenderer& SinglePassRenderer::operator=(SinglePassRenderer&&) noexcept = default;
@@ -265,7 +224,7 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
     const BuiltinTextures& builtin = *s.textures;
     std::deque<ShaderValues> values;  // stable storage for the layers the draws point at
     std::deque<std::map<std::string, std::string>> materialTextures;
-    std::vector<RecordedDraw> draws;
+    std::vector<Draw> draws;
     RenderedFrame frame;
     for (const DrawGroup& group : *groups) {
         const scene::Object& first = scene.objects[group.objects.front()];
@@ -285,7 +244,7 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
             s.pipeline(group.pack, *variant, state, {(*target)->renderPass(LoadOp::Clear), true, 1},
                        scene.camera.hdr ? 1u : 0u);
         if (!pipeline) return pipeline.error();
-        RecordedDraw draw;
+        Draw draw;
         draw.pipeline = *pipeline;
         draw.mesh = &s.meshes.at(group.mesh);
         draw.instances = static_cast<uint32_t>(group.objects.size());
@@ -304,7 +263,9 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
     }
 
     const RenderTarget& rt = **target;
-    if (Status submitted = s.submit(rt, draws, frame); !submitted) return submitted.error();
+    if (Status submitted = s.submitDraws(rt, draws, frame.draws); !submitted) {
+        return submitted.error();
+    }
     auto image = rt.readback(*s.context);
     if (!image) return image.error();
     frame.image = std::move(*image);
