@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 #include "VulkanTestSupport.h"
 #include "varc/reference/DeferredReference.h"
@@ -56,54 +55,7 @@ scene::Scene oneSphere(bool hdr) {
     return scene;
 }
 
-float maxAbsDifference(const Image& a, const Image& b) {
-    float worst = 0;
-    for (uint32_t y = 0; y < a.height(); ++y) {
-        for (uint32_t x = 0; x < a.width(); ++x) {
-            std::array<float, 4> pa = a.pixelFloat(x, y), pb = b.pixelFloat(x, y);
-            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(pa[c] - pb[c]));
-        }
-    }
-    return worst;
-}
-
-float sum(const Image& image) {
-    float total = 0;
-    for (uint32_t y = 0; y < image.height(); ++y) {
-        for (uint32_t x = 0; x < image.width(); ++x) {
-            std::array<float, 4> p = image.pixelFloat(x, y);
-            total += p[0] + p[1] + p[2];
-        }
-    }
-    return total;
-}
-
-class DeferredRenderTest : public testing::VulkanTest {
-protected:
-    void SetUp() override {
-        VulkanTest::SetUp();
-        if (HasFatalFailure()) return;
-        auto pack = Pack::open(VARC_TEST_PACK_DIR "/library.svpack");
-        ASSERT_TRUE(pack) << pack.error().detail;
-        mPack.emplace(std::move(*pack));
-        auto renderer = DeferredRenderer::create(context(), {&*mPack});
-        ASSERT_TRUE(renderer) << renderer.error().detail;
-        mRenderer.emplace(std::move(*renderer));
-    }
-    void TearDown() override {
-        mRenderer.reset();
-        VulkanTest::TearDown();
-    }
-
-    RenderedFrame render(const scene::Scene& scene) {
-        auto frame = mRenderer->render(scene);
-        EXPECT_TRUE(frame) << frame.error().detail;
-        return frame ? std::move(*frame) : RenderedFrame{};
-    }
-
-    std::optional<Pack> mPack;
-    std::optional<DeferredRenderer> mRenderer;
-};
+using DeferredRenderTest = testing::RendererTest<DeferredRenderer>;
 
 // The light quads cover the whole screen; the stencil bits of the G-buffer pass keep them (and
 // the LDR decode) off the background.
@@ -135,8 +87,8 @@ TEST_F(DeferredRenderTest, APointLightOutOfRangeChangesNothing) {
         RenderedFrame lit = render(scene);
         scene.lights.push_back(light(scene::LightType::Point, {30.0f, 0.0f, 0.0f}, 1.0f));
         RenderedFrame withFarLight = render(scene);
-        ASSERT_GT(sum(lit.image), 20.0f) << "the in-range light must light the sphere";
-        EXPECT_LE(maxAbsDifference(lit.image, withFarLight.image), hdr ? 1e-4f : 0.0f);
+        ASSERT_GT(testing::rgbSum(lit.image), 20.0f) << "the in-range light must light the sphere";
+        EXPECT_LE(testing::maxRgbDifference(lit.image, withFarLight.image), hdr ? 1e-4f : 0.0f);
     }
 }
 
@@ -153,8 +105,8 @@ TEST_F(DeferredRenderTest, LightsAddUpInTheHdrLightBuffer) {
     both.lights = {point, spot};
     Image imageNone = render(none).image, imageA = render(a).image, imageB = render(b).image;
     Image imageBoth = render(both).image;
-    ASSERT_GT(sum(imageA), sum(imageNone) + 10.0f);
-    ASSERT_GT(sum(imageB), sum(imageNone) + 10.0f);
+    ASSERT_GT(testing::rgbSum(imageA), testing::rgbSum(imageNone) + 10.0f);
+    ASSERT_GT(testing::rgbSum(imageB), testing::rgbSum(imageNone) + 10.0f);
     float worst = 0;
     for (size_t i = 0; i < imageBoth.floats().size(); ++i) {
         float expected = imageA.floats()[i] + imageB.floats()[i] - imageNone.floats()[i];
@@ -173,8 +125,8 @@ TEST_F(DeferredRenderTest, LdrAgreesWithHdrUpToTheEncoding) {
     Image imageHdr = render(hdr).image, imageLdr = render(ldr).image;
     ASSERT_TRUE(imageHdr.isFloat());
     ASSERT_FALSE(imageLdr.isFloat());
-    ASSERT_GT(sum(imageLdr), 20.0f);
-    EXPECT_LE(maxAbsDifference(imageHdr.toRgba8(Tonemap::Clamp), imageLdr), 4.0f / 255.0f);
+    ASSERT_GT(testing::rgbSum(imageLdr), 20.0f);
+    EXPECT_LE(testing::maxRgbDifference(imageHdr.toRgba8(Tonemap::Clamp), imageLdr), 4.0f / 255.0f);
 }
 
 TEST_F(DeferredRenderTest, AnObjectWithoutADeferredPassIsAClearError) {
@@ -240,10 +192,7 @@ TEST_F(DeferredRenderTest, ForwardAndDeferredRendersOfOneSceneAgree) {
 // Every deferred validation scene (HDR and LDR; directional, point, spot; with and without
 // cookies) matches the CPU reference within the tolerances.
 TEST_F(DeferredRenderTest, ValidationScenesMatchTheCpuReference) {
-    std::vector<std::string> scenes;
-    for (const auto& entry : std::filesystem::directory_iterator(VARC_TEST_SCENE_DIR "/deferred")) {
-        if (entry.path().extension() == ".json") scenes.push_back(entry.path().string());
-    }
+    std::vector<std::string> scenes = testing::sceneFiles("deferred");
     ASSERT_GE(scenes.size(), 10u);
     for (const std::string& path : scenes) {
         SCOPED_TRACE(path);

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 
 #include "VulkanTestSupport.h"
 #include "varc/reference/ImageCompare.h"
@@ -51,46 +50,15 @@ scene::Scene oneSphere() {
     return scene;
 }
 
-float maxAbsDifference(const Image& a, const Image& b) {
+// The largest R, G, B or A difference between two float images of one size.
+float maxRgbaDifference(const Image& a, const Image& b) {
     float worst = 0;
     for (size_t i = 0; i < a.floats().size(); ++i)
         worst = std::max(worst, std::abs(a.floats()[i] - b.floats()[i]));
     return worst;
 }
 
-float sum(const Image& image) {
-    float total = 0;
-    for (size_t i = 0; i < image.floats().size(); i += 4)
-        total += image.floats()[i] + image.floats()[i + 1] + image.floats()[i + 2];
-    return total;
-}
-
-class ForwardRenderTest : public testing::VulkanTest {
-protected:
-    void SetUp() override {
-        VulkanTest::SetUp();
-        if (HasFatalFailure()) return;
-        auto pack = Pack::open(VARC_TEST_PACK_DIR "/library.svpack");
-        ASSERT_TRUE(pack) << pack.error().detail;
-        mPack.emplace(std::move(*pack));
-        auto renderer = ForwardRenderer::create(context(), {&*mPack});
-        ASSERT_TRUE(renderer) << renderer.error().detail;
-        mRenderer.emplace(std::move(*renderer));
-    }
-    void TearDown() override {
-        mRenderer.reset();
-        VulkanTest::TearDown();
-    }
-
-    RenderedFrame render(const scene::Scene& scene) {
-        auto frame = mRenderer->render(scene);
-        EXPECT_TRUE(frame) << frame.error().detail;
-        return frame ? std::move(*frame) : RenderedFrame{};
-    }
-
-    std::optional<Pack> mPack;
-    std::optional<ForwardRenderer> mRenderer;
-};
+using ForwardRenderTest = testing::RendererTest<ForwardRenderer>;
 
 TEST_F(ForwardRenderTest, APointLightOutOfRangeChangesNothing) {
     scene::Scene scene = oneSphere();
@@ -99,8 +67,8 @@ TEST_F(ForwardRenderTest, APointLightOutOfRangeChangesNothing) {
     scene.lights.push_back(
         pointLight({30.0f, 0.0f, 0.0f}, glm::vec3(1.0f), 2.0f));  // 29.5 m from the sphere
     RenderedFrame withFarLight = render(scene);
-    ASSERT_GT(sum(lit.image), 1.0f) << "the in-range light must light the sphere";
-    EXPECT_EQ(maxAbsDifference(lit.image, withFarLight.image), 0.0f);
+    ASSERT_GT(testing::rgbSum(lit.image), 1.0f) << "the in-range light must light the sphere";
+    EXPECT_EQ(maxRgbaDifference(lit.image, withFarLight.image), 0.0f);
     EXPECT_EQ(lit.draws, withFarLight.draws);
 }
 
@@ -122,8 +90,8 @@ TEST_F(ForwardRenderTest, TwoPixelLightsAddUp) {
         }
     }
     EXPECT_LT(worst, 2e-3f) << "half-float sums of two additive passes";
-    EXPECT_GT(sum(imageA.image), 1.0f);
-    EXPECT_GT(sum(imageB.image), 1.0f);
+    EXPECT_GT(testing::rgbSum(imageA.image), 1.0f);
+    EXPECT_GT(testing::rgbSum(imageB.image), 1.0f);
 }
 
 TEST_F(ForwardRenderTest, WithNoPixelLightsAPointLightStillLightsThroughVertexLights) {
@@ -135,7 +103,7 @@ TEST_F(ForwardRenderTest, WithNoPixelLightsAPointLightStillLightsThroughVertexLi
     ASSERT_EQ(litFrame.variants.size(), 1u) << "no add pass when pixel_light_count is 0";
     EXPECT_NE(litFrame.variants[0].find("VERTEXLIGHT_ON"), std::string::npos)
         << litFrame.variants[0];
-    EXPECT_GT(sum(litFrame.image), sum(darkFrame.image) + 1.0f);
+    EXPECT_GT(testing::rgbSum(litFrame.image), testing::rgbSum(darkFrame.image) + 1.0f);
 }
 
 TEST_F(ForwardRenderTest, UnknownShaderIsAClearError) {
@@ -149,10 +117,7 @@ TEST_F(ForwardRenderTest, UnknownShaderIsAClearError) {
 
 // Every validation scene matches the CPU reference within the tolerances.
 TEST_F(ForwardRenderTest, ValidationScenesMatchTheCpuReference) {
-    std::vector<std::string> scenes;
-    for (const auto& entry : std::filesystem::directory_iterator(VARC_TEST_SCENE_DIR "/forward")) {
-        if (entry.path().extension() == ".json") scenes.push_back(entry.path().string());
-    }
+    std::vector<std::string> scenes = testing::sceneFiles("forward");
     ASSERT_GE(scenes.size(), 5u);
     for (const std::string& path : scenes) {
         SCOPED_TRACE(path);

@@ -32,61 +32,21 @@ scene::Scene loadSinglePassScene(const std::string& name) {
 
 // The largest per-channel RGB difference, in 8-bit LSB.
 float maxDifferenceLsb(const Image& a, const Image& b) {
-    float worst = 0;
-    for (uint32_t y = 0; y < a.height(); ++y) {
-        for (uint32_t x = 0; x < a.width(); ++x) {
-            std::array<float, 4> pa = a.pixelFloat(x, y), pb = b.pixelFloat(x, y);
-            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(pa[c] - pb[c]) * 255.0f);
-        }
-    }
-    return worst;
+    return testing::maxRgbDifference(a, b) * 255.0f;
 }
 
-float rgbSum(const Image& image) {
-    float total = 0;
-    for (uint32_t y = 0; y < image.height(); ++y) {
-        for (uint32_t x = 0; x < image.width(); ++x) {
-            std::array<float, 4> p = image.pixelFloat(x, y);
-            total += p[0] + p[1] + p[2];
-        }
-    }
-    return total;
-}
-
-class SinglePassRenderTest : public testing::VulkanTest {
+class SinglePassRenderTest : public testing::RendererTest<SinglePassRenderer> {
 protected:
-    void SetUp() override {
-        VulkanTest::SetUp();
-        if (HasFatalFailure()) return;
-        auto pack = Pack::open(VARC_TEST_PACK_DIR "/library.svpack");
-        ASSERT_TRUE(pack) << pack.error().detail;
-        mPack.emplace(std::move(*pack));
-        auto renderer = SinglePassRenderer::create(context(), {&*mPack});
-        ASSERT_TRUE(renderer) << renderer.error().detail;
-        mRenderer.emplace(std::move(*renderer));
-    }
-    void TearDown() override {
-        mRenderer.reset();
-        VulkanTest::TearDown();
-    }
-
     RenderedFrame render(const scene::Scene& scene, SinglePassOptions options = {}) {
-        auto frame = mRenderer->render(scene, options);
-        EXPECT_TRUE(frame) << frame.error().detail;
-        return frame ? std::move(*frame) : RenderedFrame{};
+        return testing::frameOf(mRenderer->render(scene, options));
     }
-
-    std::optional<Pack> mPack;
-    std::optional<SinglePassRenderer> mRenderer;
 };
 
 // Every single-pass validation scene matches the CPU reference within the tolerances.
 TEST_F(SinglePassRenderTest, ValidationScenesMatchTheCpuReference) {
     std::vector<std::string> scenes;
-    for (const auto& entry :
-         std::filesystem::directory_iterator(VARC_TEST_SCENE_DIR "/single_pass")) {
-        if (entry.path().extension() == ".json") scenes.push_back(entry.path().stem().string());
-    }
+    for (const std::string& path : testing::sceneFiles("single_pass"))
+        scenes.push_back(std::filesystem::path(path).stem().string());
     ASSERT_GE(scenes.size(), 5u);
     for (const std::string& name : scenes) {
         SCOPED_TRACE(name);
@@ -153,7 +113,7 @@ TEST_F(SinglePassRenderTest, LightsBeyondSixteenHaveNoEffect) {
     dark.lights.clear();
     RenderedFrame darkFrame = render(dark);
     EXPECT_GT(maxDifferenceLsb(onlyDropped.image, darkFrame.image), 40.0f);
-    EXPECT_GT(rgbSum(onlyDropped.image), rgbSum(darkFrame.image) + 20.0f);
+    EXPECT_GT(testing::rgbSum(onlyDropped.image), testing::rgbSum(darkFrame.image) + 20.0f);
 }
 
 TEST_F(SinglePassRenderTest, ZeroVisibleLightsGiveBlackObjects) {

@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-// Shared helpers for the lavapipe tests: a strict-validation fixture and a minimal pipeline.
+// Shared helpers for the lavapipe tests: a strict-validation fixture, fixtures for the renderers
+// on the library pack, image measures and a minimal pipeline.
 #include "VulkanTestSupport.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <filesystem>
 #include <utility>
 
 #include "varc/runtime/vulkan/CheckVk.h"
@@ -30,6 +34,50 @@ void VulkanTest::TearDown() {
     EXPECT_EQ(mContext->validationMessageCount(), 0u) << mContext->validationReport();
     // Messages from device and instance destruction (e.g. leaked objects) reach onMessage.
     mContext.reset();
+}
+
+void PackTest::SetUp() {
+    VulkanTest::SetUp();
+    if (HasFatalFailure()) return;
+    auto pack = Pack::open(VARC_TEST_PACK_DIR "/library.svpack");
+    ASSERT_TRUE(pack) << pack.error().detail;
+    mPack.emplace(std::move(*pack));
+}
+
+RenderedFrame frameOf(Result<RenderedFrame> rendered) {
+    EXPECT_TRUE(rendered) << rendered.error().detail;
+    return rendered ? std::move(*rendered) : RenderedFrame{};
+}
+
+std::vector<std::string> sceneFiles(const std::string& folder) {
+    std::vector<std::string> scenes;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::string(VARC_TEST_SCENE_DIR) + "/" + folder)) {
+        if (entry.path().extension() == ".json") scenes.push_back(entry.path().string());
+    }
+    return scenes;
+}
+
+float rgbSum(const Image& image) {
+    float total = 0;
+    for (uint32_t y = 0; y < image.height(); ++y) {
+        for (uint32_t x = 0; x < image.width(); ++x) {
+            std::array<float, 4> p = image.pixelFloat(x, y);
+            total += p[0] + p[1] + p[2];
+        }
+    }
+    return total;
+}
+
+float maxRgbDifference(const Image& a, const Image& b) {
+    float worst = 0;
+    for (uint32_t y = 0; y < a.height(); ++y) {
+        for (uint32_t x = 0; x < a.width(); ++x) {
+            std::array<float, 4> pa = a.pixelFloat(x, y), pb = b.pixelFloat(x, y);
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(pa[c] - pb[c]));
+        }
+    }
+    return worst;
 }
 
 namespace {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Shared helpers for the lavapipe tests: a strict-validation fixture and a minimal pipeline.
+// Shared helpers for the lavapipe tests: a strict-validation fixture, fixtures for the renderers
+// on the library pack, image measures and a minimal pipeline.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -8,9 +9,13 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "varc/core/Result.h"
+#include "varc/runtime/Pack.h"
+#include "varc/runtime/render/ForwardRenderer.h"
+#include "varc/runtime/vulkan/Image.h"
 #include "varc/runtime/vulkan/UniqueHandle.h"
 #include "varc/runtime/vulkan/VulkanContext.h"
 
@@ -34,6 +39,52 @@ protected:
     std::optional<VulkanContext> mContext;
     bool mExpectMessages = false;
 };
+
+// A VulkanTest that also opens the library pack, which the vulkan.build_packs test builds from
+// ../shared/fixtures and shaders/; a pack that does not open fails the test.
+class PackTest : public VulkanTest {
+protected:
+    void SetUp() override;
+
+    std::optional<Pack> mPack;
+};
+
+// The frame in |rendered|, or an empty frame after failing the current test with the error.
+RenderedFrame frameOf(Result<RenderedFrame> rendered);
+
+// A PackTest with a |Renderer| (ForwardRenderer, DeferredRenderer, SinglePassRenderer) created on
+// the library pack; a renderer that cannot be created fails the test. The renderer is destroyed
+// before the context.
+template <typename Renderer>
+class RendererTest : public PackTest {
+protected:
+    void SetUp() override {
+        PackTest::SetUp();
+        if (HasFatalFailure()) return;
+        auto renderer = Renderer::create(context(), {&*mPack});
+        ASSERT_TRUE(renderer) << renderer.error().detail;
+        mRenderer.emplace(std::move(*renderer));
+    }
+    void TearDown() override {
+        mRenderer.reset();
+        PackTest::TearDown();
+    }
+
+    // The renderer's frame of |scene|; a render error fails the test and gives an empty frame.
+    RenderedFrame render(const scene::Scene& scene) { return frameOf(mRenderer->render(scene)); }
+
+    std::optional<Renderer> mRenderer;
+};
+
+// The paths of the scene files (*.json) in VARC_TEST_SCENE_DIR/|folder|, e.g. "forward".
+std::vector<std::string> sceneFiles(const std::string& folder);
+
+// The sum of R, G and B over all pixels (8-bit channels as value / 255).
+float rgbSum(const Image& image);
+
+// The largest R, G or B difference between two images of one size (8-bit channels as value /
+// 255, so an Rgba8 and a float image compare too).
+float maxRgbDifference(const Image& a, const Image& b);
 
 struct PipelineDesc {
     VkShaderModule vertex = VK_NULL_HANDLE;
