@@ -5,6 +5,7 @@ find_package(glm CONFIG REQUIRED)
 
 add_library(varc_render STATIC
     src/render/BuiltinTextures.cpp
+    src/render/CameraTargetCache.cpp
     src/render/DeferredRenderer.cpp
     src/render/DeferredTargets.cpp
     src/render/DeferredValues.cpp

@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 
+#include "render/CameraTargetCache.h"
 #include "render/DeferredTargets.h"
 #include "render/Draw.h"
 #include "render/GpuMesh.h"
@@ -50,31 +51,12 @@ struct DeferredRenderer::State : RendererBase {
     std::string lightShader;
     UniqueHandle<VkSampler> nearest;
     std::optional<GpuMesh> sphereVolume, pyramidVolume;
-    struct TargetKey {
-        uint32_t width, height;
-        bool hdr;
-        std::array<float, 4> background;
-        auto operator<=>(const TargetKey&) const = default;
-    };
-    std::map<TargetKey, DeferredTargets> targets;
+    CameraTargetCache<DeferredTargets> targets;
 
-    Result<const DeferredTargets*> target(const scene::Camera& camera);
     Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
                                             const pack::PackRenderState& state, Phase phase,
                                             const DeferredTargets& target, bool hdr);
 };
-
-Result<const DeferredTargets*> DeferredRenderer::State::target(const scene::Camera& camera) {
-    const glm::vec4& b = camera.background;
-    TargetKey key{camera.width, camera.height, camera.hdr, {b.r, b.g, b.b, b.a}};
-    auto it = targets.find(key);
-    if (it == targets.end()) {
-        auto created = DeferredTargets::create(*context, camera);
-        if (!created) return created.error();
-        it = targets.emplace(key, std::move(*created)).first;
-    }
-    return &it->second;
-}
 
 Result<const VariantPipeline*> DeferredRenderer::State::pipeline(
     const Pack* pack, const VariantView& variant, const pack::PackRenderState& state, Phase phase,
@@ -169,7 +151,9 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
         return makeError(ErrorCode::InvalidInput,
                          "DeferredRenderer renders scenes with camera path 'deferred'");
     }
-    auto target = s.target(scene.camera);
+    auto target = s.targets.get(scene.camera, [&](const scene::Camera& camera) {
+        return DeferredTargets::create(*s.context, camera);
+    });
     if (!target) return target.error();
     const DeferredTargets& targets = **target;
     const bool hdr = scene.camera.hdr;

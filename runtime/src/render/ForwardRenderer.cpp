@@ -3,6 +3,7 @@
 
 #include <deque>
 
+#include "render/CameraTargetCache.h"
 #include "render/Draw.h"
 #include "render/GpuMesh.h"
 #include "render/RendererBase.h"
@@ -18,34 +19,8 @@
 namespace varc::runtime {
 
 struct ForwardRenderer::State : RendererBase {
-    struct TargetKey {
-        uint32_t width, height;
-        bool hdr;
-        std::array<float, 4> background;
-        auto operator<=>(const TargetKey&) const = default;
-    };
-    std::map<TargetKey, RenderTarget> targets;
-
-    Result<const RenderTarget*> target(const scene::Camera& camera);
+    CameraTargetCache<RenderTarget> targets;
 };
-
-Result<const RenderTarget*> ForwardRenderer::State::target(const scene::Camera& camera) {
-    const glm::vec4& b = camera.background;
-    TargetKey key{camera.width, camera.height, camera.hdr, {b.r, b.g, b.b, b.a}};
-    auto it = targets.find(key);
-    if (it == targets.end()) {
-        RenderTargetDesc desc;
-        desc.width = camera.width;
-        desc.height = camera.height;
-        desc.color = camera.hdr ? ColorFormat::Rgba16Float : ColorFormat::Rgba8Unorm;
-        desc.clearColor = key.background;
-        desc.name = "forward target";
-        auto created = RenderTarget::create(*context, desc);
-        if (!created) return created.error();
-        it = targets.emplace(key, std::move(*created)).first;
-    }
-    return &it->second;
-}
 
 ForwardRenderer::ForwardRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
 ForwardRenderer::ForwardRenderer(ForwardRenderer&&) noexcept = default;
@@ -61,7 +36,9 @@ Result<ForwardRenderer> ForwardRenderer::create(VulkanContext& context,
 
 Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
     State& s = *mState;
-    auto target = s.target(scene.camera);
+    auto target = s.targets.get(scene.camera, [&](const scene::Camera& camera) {
+        return createCameraTarget(*s.context, camera, "forward target");
+    });
     if (!target) return target.error();
     scene::CameraMatrices matrices = scene::cameraMatrices(scene.camera);
     ShaderValues camera = cameraValues(scene, matrices);

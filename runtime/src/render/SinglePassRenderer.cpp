@@ -7,8 +7,8 @@
 #include <deque>
 #include <map>
 #include <set>
-#include <tuple>
 
+#include "render/CameraTargetCache.h"
 #include "render/Draw.h"
 #include "render/GpuMesh.h"
 #include "render/RendererBase.h"
@@ -118,34 +118,14 @@ ShaderValues singleObjectValues(const scene::Object& object) {
 }  // namespace
 
 struct SinglePassRenderer::State : RendererBase {
-    std::map<std::tuple<uint32_t, uint32_t, bool, std::array<float, 4>>, RenderTarget> targets;
+    CameraTargetCache<RenderTarget> targets;
     // Per shader pass (PassView::describe()): the INSTANCING_ON variant's layout, or null.
     std::map<std::string, std::optional<InstancedLayout>> instancedLayouts;
 
-    Result<const RenderTarget*> target(const scene::Camera& camera);
     const InstancedLayout* instancing(const PassView& pass);
     Result<std::vector<DrawGroup>> group(const scene::Scene& scene,
                                          const scene::VisibleLightSet& visible, bool instancing);
 };
-
-Result<const RenderTarget*> SinglePassRenderer::State::target(const scene::Camera& camera) {
-    const glm::vec4& b = camera.background;
-    auto key = std::make_tuple(camera.width, camera.height, camera.hdr,
-                               std::array<float, 4>{b.r, b.g, b.b, b.a});
-    auto it = targets.find(key);
-    if (it == targets.end()) {
-        RenderTargetDesc desc;
-        desc.width = camera.width;
-        desc.height = camera.height;
-        desc.color = camera.hdr ? ColorFormat::Rgba16Float : ColorFormat::Rgba8Unorm;
-        desc.clearColor = std::get<3>(key);
-        desc.name = "single-pass target";
-        auto created = RenderTarget::create(*context, desc);
-        if (!created) return created.error();
-        it = targets.emplace(key, std::move(*created)).first;
-    }
-    return &it->second;
-}
 
 const InstancedLayout* SinglePassRenderer::State::instancing(const PassView& pass) {
     auto [it, inserted] = instancedLayouts.try_emplace(pass.describe());
@@ -213,7 +193,9 @@ Result<SinglePassRenderer> SinglePassRenderer::create(VulkanContext& context,
 Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
                                                  const SinglePassOptions& options) {
     State& s = *mState;
-    auto target = s.target(scene.camera);
+    auto target = s.targets.get(scene.camera, [&](const scene::Camera& camera) {
+        return createCameraTarget(*s.context, camera, "single-pass target");
+    });
     if (!target) return target.error();
     const scene::VisibleLightSet visible = scene::selectVisibleLights(scene);
     auto groups = s.group(scene, visible, options.instancing);
