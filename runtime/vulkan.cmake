@@ -12,6 +12,7 @@ add_library(varc_vulkan STATIC
     src/vulkan/Image.cpp
     src/vulkan/InstanceSetup.cpp
     src/vulkan/Png.cpp
+    src/vulkan/RenderPass.cpp
     src/vulkan/RenderTarget.cpp
     src/vulkan/Sampler.cpp
     src/vulkan/ShaderModule.cpp

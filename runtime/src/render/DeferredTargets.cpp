@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "varc/runtime/vulkan/CheckVk.h"
 #include "varc/runtime/vulkan/DeviceImage.h"
+#include "varc/runtime/vulkan/RenderPass.h"
 
 namespace varc::runtime {
 
@@ -65,41 +65,7 @@ Result<UniqueHandle<VkRenderPass>> createReadOnlyDepthPass(VkDevice device, VkFo
         VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
         kAttachmentAccess | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
         0};
-    VkRenderPassCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
-    info.attachmentCount = static_cast<uint32_t>(attachments.size());
-    info.pAttachments = attachments.data();
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = static_cast<uint32_t>(dependencies.size());
-    info.pDependencies = dependencies.data();
-    VkRenderPass pass = VK_NULL_HANDLE;
-    if (Status status = checkVk(vkCreateRenderPass(device, &info, nullptr, &pass),
-                                "vkCreateRenderPass", std::source_location::current());
-        !status) {
-        return status.error();
-    }
-    return UniqueHandle<VkRenderPass>(device, pass);
-}
-
-Result<UniqueHandle<VkFramebuffer>> createFramebuffer(VkDevice device, VkRenderPass pass,
-                                                      std::array<VkImageView, 2> views,
-                                                      uint32_t width, uint32_t height) {
-    VkFramebufferCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
-    info.renderPass = pass;
-    info.attachmentCount = static_cast<uint32_t>(views.size());
-    info.pAttachments = views.data();
-    info.width = width;
-    info.height = height;
-    info.layers = 1;
-    VkFramebuffer framebuffer = VK_NULL_HANDLE;
-    if (Status status = checkVk(vkCreateFramebuffer(device, &info, nullptr, &framebuffer),
-                                "vkCreateFramebuffer", std::source_location::current());
-        !status) {
-        return status.error();
-    }
-    return UniqueHandle<VkFramebuffer>(device, framebuffer);
+    return createOneSubpassPass(device, attachments, subpass, dependencies);
 }
 
 void beginPass(VkCommandBuffer commands, VkRenderPass pass, VkFramebuffer framebuffer,
@@ -169,9 +135,9 @@ Result<DeferredTargets> DeferredTargets::create(VulkanContext& context,
         createReadOnlyDepthPass(context.device(), lightFormat, g.depthStencilFormat(), false);
     if (!lightPass) return lightPass.error();
     targets.mLightPass = std::move(*lightPass);
-    auto lightFramebuffer =
-        createFramebuffer(context.device(), targets.mLightPass.get(),
-                          {g.colorView(kGBufferLight), g.depthView()}, g.width(), g.height());
+    auto lightFramebuffer = createPassFramebuffer(
+        context.device(), targets.mLightPass.get(),
+        std::array{g.colorView(kGBufferLight), g.depthView()}, g.width(), g.height());
     if (!lightFramebuffer) return lightFramebuffer.error();
     targets.mLightFramebuffer = std::move(*lightFramebuffer);
     if (camera.hdr) return targets;
@@ -190,9 +156,9 @@ Result<DeferredTargets> DeferredTargets::create(VulkanContext& context,
                                               g.depthStencilFormat(), true);
     if (!decodePass) return decodePass.error();
     targets.mDecodePass = std::move(*decodePass);
-    auto decodeFramebuffer =
-        createFramebuffer(context.device(), targets.mDecodePass.get(),
-                          {targets.mOutput->colorView(), g.depthView()}, g.width(), g.height());
+    auto decodeFramebuffer = createPassFramebuffer(
+        context.device(), targets.mDecodePass.get(),
+        std::array{targets.mOutput->colorView(), g.depthView()}, g.width(), g.height());
     if (!decodeFramebuffer) return decodeFramebuffer.error();
     targets.mDecodeFramebuffer = std::move(*decodeFramebuffer);
     return targets;

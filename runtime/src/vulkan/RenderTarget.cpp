@@ -9,6 +9,7 @@
 #include "varc/core/Check.h"
 #include "varc/runtime/vulkan/Buffer.h"
 #include "varc/runtime/vulkan/CheckVk.h"
+#include "varc/runtime/vulkan/RenderPass.h"
 
 namespace varc::runtime {
 
@@ -89,13 +90,16 @@ VkAttachmentDescription attachment(VkFormat format, LoadOp op, VkImageLayout ste
     return description;
 }
 
-Result<UniqueHandle<VkRenderPass>> createRenderPass(VkDevice device, const std::vector<VkFormat>& colors,
+Result<UniqueHandle<VkRenderPass>> createRenderPass(VkDevice device,
+                                                    const std::vector<VkFormat>& colors,
                                                     VkFormat depthStencil, LoadOp op) {
     std::vector<VkAttachmentDescription> attachments;
     std::vector<VkAttachmentReference> colorRefs;
     for (VkFormat color : colors) {
-        colorRefs.push_back({static_cast<uint32_t>(attachments.size()), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
-        attachments.push_back(attachment(color, op, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false));
+        colorRefs.push_back(
+            {static_cast<uint32_t>(attachments.size()), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+        attachments.push_back(
+            attachment(color, op, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, false));
     }
     VkAttachmentReference depthRef{static_cast<uint32_t>(attachments.size()),
                                    VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
@@ -108,23 +112,7 @@ Result<UniqueHandle<VkRenderPass>> createRenderPass(VkDevice device, const std::
     subpass.colorAttachmentCount = static_cast<uint32_t>(colorRefs.size());
     subpass.pColorAttachments = colorRefs.data();
     subpass.pDepthStencilAttachment = depthStencil != VK_FORMAT_UNDEFINED ? &depthRef : nullptr;
-    std::array<VkSubpassDependency, 2> dependencies = passDependencies();
-
-    VkRenderPassCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
-    info.attachmentCount = static_cast<uint32_t>(attachments.size());
-    info.pAttachments = attachments.data();
-    info.subpassCount = 1;
-    info.pSubpasses = &subpass;
-    info.dependencyCount = static_cast<uint32_t>(dependencies.size());
-    info.pDependencies = dependencies.data();
-    VkRenderPass pass = VK_NULL_HANDLE;
-    if (Status status = checkVk(vkCreateRenderPass(device, &info, nullptr, &pass),
-                                "vkCreateRenderPass", std::source_location::current());
-        !status) {
-        return status.error();
-    }
-    return UniqueHandle<VkRenderPass>(device, pass);
+    return createOneSubpassPass(device, attachments, subpass, passDependencies());
 }
 
 // Converts |bytes| read back from a |format| image to an Image.
@@ -210,7 +198,8 @@ Status RenderTarget::createImages(const VulkanContext& context) {
     for (uint32_t i = 0; i < colorAttachmentCount(); ++i) {
         ColorFormat format = attachmentFormat(i);
         colorDesc.format = toVkFormat(format);
-        if (!supportsOptimal(context.physicalDevice(), colorDesc.format, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT)) {
+        if (!supportsOptimal(context.physicalDevice(), colorDesc.format,
+                             VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT)) {
             return makeError(ErrorCode::Unsupported,
                              std::string("colour format ") + toString(format) +
                                  " cannot be a colour attachment on " + context.deviceName());
@@ -235,9 +224,11 @@ Status RenderTarget::createImages(const VulkanContext& context) {
     depthDesc.format = mDepthFormat;
     depthDesc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
     if (mDesc.sampledDepth) {
-        if (!supportsOptimal(context.physicalDevice(), mDepthFormat, VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT)) {
-            return makeError(ErrorCode::Unsupported, "the depth/stencil format cannot be sampled on " +
-                                                         context.deviceName());
+        if (!supportsOptimal(context.physicalDevice(), mDepthFormat,
+                             VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT)) {
+            return makeError(
+                ErrorCode::Unsupported,
+                "the depth/stencil format cannot be sampled on " + context.deviceName());
         }
         depthDesc.usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
     }
@@ -284,7 +275,8 @@ ColorFormat RenderTarget::attachmentFormat(uint32_t attachment) const {
 
 Status RenderTarget::createRenderPasses(const VulkanContext& context) {
     std::vector<VkFormat> colors;
-    for (uint32_t i = 0; i < colorAttachmentCount(); ++i) colors.push_back(toVkFormat(attachmentFormat(i)));
+    for (uint32_t i = 0; i < colorAttachmentCount(); ++i)
+        colors.push_back(toVkFormat(attachmentFormat(i)));
     Result<UniqueHandle<VkRenderPass>> clearPass =
         createRenderPass(context.device(), colors, mDepthFormat, LoadOp::Clear);
     if (!clearPass) return clearPass.error();
@@ -302,21 +294,10 @@ Status RenderTarget::createFramebuffer(const VulkanContext& context) {
     std::vector<VkImageView> views{mColor.view.get()};
     for (const DeviceImage& extra : mExtraColors) views.push_back(extra.view.get());
     if (mDepth.view) views.push_back(mDepth.view.get());
-    VkFramebufferCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
-    info.renderPass = mClearPass.get();
-    info.attachmentCount = static_cast<uint32_t>(views.size());
-    info.pAttachments = views.data();
-    info.width = mDesc.width;
-    info.height = mDesc.height;
-    info.layers = 1;
-    VkFramebuffer framebuffer = VK_NULL_HANDLE;
-    if (Status status = checkVk(vkCreateFramebuffer(context.device(), &info, nullptr, &framebuffer),
-                                "vkCreateFramebuffer", std::source_location::current());
-        !status) {
-        return status;
-    }
-    mFramebuffer = UniqueHandle<VkFramebuffer>(context.device(), framebuffer);
+    Result<UniqueHandle<VkFramebuffer>> framebuffer =
+        createPassFramebuffer(context.device(), mClearPass.get(), views, mDesc.width, mDesc.height);
+    if (!framebuffer) return framebuffer.error();
+    mFramebuffer = std::move(*framebuffer);
     context.nameObject(mFramebuffer, mDesc.name + " framebuffer");
     return Ok{};
 }
@@ -374,7 +355,8 @@ Result<Image> RenderTarget::readback(VulkanContext& context, uint32_t attachment
     return convertReadback(buffer->mapped(), mDesc.width, mDesc.height, format);
 }
 
-void RenderTarget::recordReadback(VkCommandBuffer commands, VkBuffer destination, uint32_t attachment) const {
+void RenderTarget::recordReadback(VkCommandBuffer commands, VkBuffer destination,
+                                  uint32_t attachment) const {
     VkImage image = attachment == 0 ? mColor.image.get() : mExtraColors[attachment - 1].image.get();
     transitionLayout(
         commands, image, VK_IMAGE_ASPECT_COLOR_BIT,
