@@ -167,9 +167,7 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     const scene::ForwardLightAssignment noLights;
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
-        std::string what = "object " + std::to_string(o) +
-                           (object.name.empty() ? "" : " '" + object.name + "'") + " (shader \"" +
-                           object.material.shader + "\")";
+        std::string what = objectLabel(o, object);
         const Pack* pack = nullptr;
         std::optional<ShaderView> shader = s.findShader(object.material.shader, &pack);
         if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");

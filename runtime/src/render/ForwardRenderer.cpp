@@ -51,9 +51,7 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
     RenderedFrame frame;
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
-        std::string what = "object " + std::to_string(o) +
-                           (object.name.empty() ? "" : " '" + object.name + "'") + " (shader \"" +
-                           object.material.shader + "\")";
+        std::string what = objectLabel(o, object);
         const Pack* pack = nullptr;
         std::optional<ShaderView> shader = s.findShader(object.material.shader, &pack);
         if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
@@ -119,13 +117,7 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
         }
     }
 
-    const RenderTarget& rt = **target;
-    if (Status submitted = s.submitDraws(rt, draws, frame.draws); !submitted) {
-        return submitted.error();
-    }
-    auto image = rt.readback(*s.context);
-    if (!image) return image.error();
-    frame.image = std::move(*image);
+    if (Status drawn = s.drawFrame(**target, draws, frame); !drawn) return drawn.error();
     return frame;
 }
 

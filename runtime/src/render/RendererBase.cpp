@@ -17,6 +17,12 @@ variants::LightType toVariantLight(scene::LightType type) {
     return variants::LightType::Directional;
 }
 
+std::string objectLabel(size_t index, const scene::Object& object) {
+    return "object " + std::to_string(index) +
+           (object.name.empty() ? "" : " '" + object.name + "'") + " (shader \"" +
+           object.material.shader + "\")";
+}
+
 Status RendererBase::init(VulkanContext& vulkan, std::vector<const Pack*> inputPacks) {
     context = &vulkan;
     packs = std::move(inputPacks);
@@ -63,8 +69,8 @@ Result<const VariantPipeline*> RendererBase::pipeline(const Pack* pack, const Va
     return &mPipelines.back().pipeline;
 }
 
-Status RendererBase::submitDraws(const RenderTarget& target, const std::vector<Draw>& draws,
-                                 uint32_t& drawCount) {
+Status RendererBase::drawFrame(const RenderTarget& target, const std::vector<Draw>& draws,
+                               RenderedFrame& frame) {
     Status bound = Ok{};
     Status submitted = context->submitAndWait([&](VkCommandBuffer commands) {
         target.begin(commands, LoadOp::Clear);
@@ -72,12 +78,15 @@ Status RendererBase::submitDraws(const RenderTarget& target, const std::vector<D
         VkRect2D area = target.area();
         vkCmdSetViewport(commands, 0, 1, &viewport);
         vkCmdSetScissor(commands, 0, 1, &area);
-        bound = recordDraws(commands, *resources, draws, drawCount);
+        bound = recordDraws(commands, *resources, draws, frame.draws);
         target.end(commands);
     });
     if (Status reset = resources->reset(); !reset) return reset.error();
     if (!bound) return bound.error();
     if (!submitted) return submitted.error();
+    auto image = target.readback(*context);
+    if (!image) return image.error();
+    frame.image = std::move(*image);
     return Ok{};
 }
 

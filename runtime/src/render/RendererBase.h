@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // What the forward, deferred and single-pass renderers share: the packs and how shaders are
 // found in them, the built-in textures and meshes, per-frame draw resources, the pipelines
-// created so far (one per variant, resolved render state and kind of target), and the submit of a
-// one-pass frame.
+// created so far (one per variant, resolved render state and kind of target), how errors name
+// objects, and the drawing of a one-pass frame.
 #pragma once
 
 #include <deque>
@@ -17,6 +17,7 @@
 #include "varc/runtime/ShaderView.h"
 #include "varc/runtime/render/BuiltinTextures.h"
 #include "varc/runtime/render/DrawResources.h"
+#include "varc/runtime/render/ForwardRenderer.h"
 #include "varc/runtime/render/VariantPipeline.h"
 #include "varc/runtime/vulkan/RenderTarget.h"
 #include "varc/scene/Scene.h"
@@ -26,6 +27,10 @@ namespace varc::runtime {
 
 // The keyword model's name for a scene light type.
 variants::LightType toVariantLight(scene::LightType type);
+
+// How errors name scene object |index|: `object 2 'floor' (shader "varc/Forward")` (the name in
+// quotes only when the object has one).
+std::string objectLabel(size_t index, const scene::Object& object);
 
 struct RendererBase {
     VulkanContext* context = nullptr;
@@ -49,11 +54,11 @@ struct RendererBase {
                                             const PipelineTarget& target, uint32_t targetKind);
 
     // Records |draws| into one cleared render pass of |target| (viewport and scissor: the whole
-    // target), submits and waits, then resets the draw resources; adds the draws recorded to
-    // |drawCount|. Errors, first that applies: the reset's, the first bind error (recordDraws),
-    // the submit's.
-    Status submitDraws(const RenderTarget& target, const std::vector<Draw>& draws,
-                       uint32_t& drawCount);
+    // target), submits and waits, resets the draw resources, then reads the colour back into
+    // |frame|.image; adds the draws recorded to |frame|.draws. Errors, first that applies: the
+    // reset's, the first bind error (recordDraws), the submit's, the readback's.
+    Status drawFrame(const RenderTarget& target, const std::vector<Draw>& draws,
+                     RenderedFrame& frame);
 
 private:
     struct CachedPipeline {

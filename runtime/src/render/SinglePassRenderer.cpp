@@ -142,17 +142,9 @@ Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(
     std::vector<DrawGroup> groups;
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
-        std::string what = "object " + std::to_string(o) +
-                           (object.name.empty() ? "" : " '" + object.name + "'") + " (shader \"" +
-                           object.material.shader + "\")";
+        std::string what = objectLabel(o, object);
         DrawGroup candidate;
-        std::optional<ShaderView> shader;
-        for (const Pack* pack : packs) {
-            if ((shader = pack->findShader(object.material.shader))) {
-                candidate.pack = pack;
-                break;
-            }
-        }
+        std::optional<ShaderView> shader = findShader(object.material.shader, &candidate.pack);
         if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
         candidate.pass = shader->pass(size_t{0});
         if (!candidate.pass)
@@ -244,13 +236,7 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
         frame.variants.push_back(variant->describe());
     }
 
-    const RenderTarget& rt = **target;
-    if (Status submitted = s.submitDraws(rt, draws, frame.draws); !submitted) {
-        return submitted.error();
-    }
-    auto image = rt.readback(*s.context);
-    if (!image) return image.error();
-    frame.image = std::move(*image);
+    if (Status drawn = s.drawFrame(**target, draws, frame); !drawn) return drawn.error();
     return frame;
 }
 
