@@ -180,8 +180,8 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         std::map<std::string, std::string>& textureNames =
             frameData.materialTextures.emplace_back();
-        ShaderValues& material =
-            frameData.values.emplace_back(materialValues(object.material, textureNames));
+        ShaderValues& material = frameData.values.emplace_back(materialValues(
+            withPropertyDefaults(object.material, shader->properties()), textureNames));
         if (!material.find("_StencilNonBackground"))
             material.set("_StencilNonBackground", kStencilNonBackground);
         pack::PackRenderState state = resolveRenderState(pass->renderState(), material);

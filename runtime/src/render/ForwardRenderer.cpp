@@ -59,8 +59,8 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
         const ShaderValues& objectValues_ =
             values.emplace_back(objectValues(scene, object, matrices, assignment));
         std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
-        const ShaderValues& material =
-            values.emplace_back(materialValues(object.material, textureNames));
+        const ShaderValues& material = values.emplace_back(materialValues(
+            withPropertyDefaults(object.material, shader->properties()), textureNames));
 
         auto addDraw = [&](const char* lightMode, const scene::Light* light) -> Status {
             std::optional<PassView> pass = shader->pass(std::string_view(lightMode));

@@ -107,24 +107,32 @@ ShaderValues forwardLightValues(const scene::Light* light) {
     return values;
 }
 
-ShaderValues materialValues(const scene::Material& material,
-                            std::map<std::string, std::string>& textures,
-                            const std::vector<pack::ShaderProperty>& defaults) {
-    ShaderValues values;
+scene::Material withPropertyDefaults(scene::Material material,
+                                     const std::vector<pack::ShaderProperty>& defaults) {
     for (const pack::ShaderProperty& property : defaults) {
+        if (material.properties.count(property.name)) continue;
         const std::array<float, 4>& v = property.value;
         switch (property.kind) {
-            case pack::PropertyKind::Float: values.set(property.name, v[0]); break;
+            case pack::PropertyKind::Float:
+                material.properties[property.name] = v[0];
+                break;
             case pack::PropertyKind::Vector:
             case pack::PropertyKind::Color:
-                values.set(property.name, glm::vec4(v[0], v[1], v[2], v[3]));
+                material.properties[property.name] = glm::vec4(v[0], v[1], v[2], v[3]);
                 break;
             case pack::PropertyKind::Texture:
-                // Unity's default for an empty or unknown name is gray.
-                textures[property.name] = property.texture.empty() ? "gray" : property.texture;
+                // Unity's texture for an empty default name is gray.
+                material.properties[property.name] =
+                    property.texture.empty() ? std::string("gray") : property.texture;
                 break;
         }
     }
+    return material;
+}
+
+ShaderValues materialValues(const scene::Material& material,
+                            std::map<std::string, std::string>& textures) {
+    ShaderValues values;
     for (const auto& [name, value] : material.properties) {
         if (const float* number = std::get_if<float>(&value)) {
             values.set(name, *number);

@@ -68,6 +68,7 @@ struct DrawGroup {
     scene::MeshKind mesh = scene::MeshKind::Sphere;
     scene::ObjectLightList lights;
     std::map<std::string, scene::PropertyValue> sharedProperties;  // instanced ones blanked
+    std::vector<pack::ShaderProperty> propertyDefaults;  // the shader's, for per-instance values
     std::vector<size_t> objects;
     const InstancedLayout* instancing = nullptr;  // null: the shader cannot instance
 };
@@ -89,9 +90,11 @@ ShaderValues instanceValues(const scene::Scene& scene, const DrawGroup& group) {
         toWorld.push_back(object.transform.localToWorld());
         toObject.push_back(glm::inverse(toWorld.back()));
         for (const std::string& name : group.instancing->properties) {
-            auto it = object.material.properties.find(name);
+            const scene::Material material =
+                withPropertyDefaults(object.material, group.propertyDefaults);
+            auto it = material.properties.find(name);
             glm::vec4 value(0.0f);
-            if (it != object.material.properties.end()) {
+            if (it != material.properties.end()) {
                 if (const auto* v = std::get_if<glm::vec4>(&it->second)) value = *v;
                 if (const auto* f = std::get_if<float>(&it->second))
                     value = glm::vec4(*f, 0.0f, 0.0f, 0.0f);
@@ -150,8 +153,10 @@ Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(
         if (!candidate.pass)
             return makeError(ErrorCode::NotFound, what + ": the shader has no pass");
         candidate.mesh = object.mesh;
+        candidate.propertyDefaults = shader->properties();
         candidate.lights = scene::objectLightList(scene, visible, object);
-        candidate.sharedProperties = object.material.properties;
+        candidate.sharedProperties =
+            withPropertyDefaults(object.material, shader->properties()).properties;
         candidate.objects = {o};
         if (instancing) candidate.instancing = this->instancing(*candidate.pass);
         if (candidate.instancing) {
@@ -211,8 +216,8 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
                 variant.error().code,
                 "object " + std::to_string(group.objects.front()) + ": " + variant.error().detail);
         std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
-        const ShaderValues& material =
-            values.emplace_back(materialValues(first.material, textureNames));
+        const ShaderValues& material = values.emplace_back(materialValues(
+            withPropertyDefaults(first.material, group.propertyDefaults), textureNames));
         pack::PackRenderState state = resolveRenderState(group.pass->renderState(), material);
         auto pipeline =
             s.pipeline(group.pack, *variant, state, {(*target)->renderPass(LoadOp::Clear), true, 1},

@@ -24,11 +24,14 @@ ShaderValues objectValues(const scene::Scene& scene, const scene::Object& object
 // without a main directional light (colour 0).
 ShaderValues forwardLightValues(const scene::Light* light);
 
-// Material properties: the shader's |defaults| (ShaderView::properties()), overridden by what the
-// material sets; textures get `<name>_ST` = (1, 1, 0, 0) unless the material sets it. Texture
-// names are returned through |textures| (property -> name; a default "" becomes "gray").
+// |material| with the shader's Properties defaults (ShaderView::properties()) added for every
+// property it does not set; a texture default "" becomes "gray" (Unity's fallback).
+scene::Material withPropertyDefaults(scene::Material material,
+                                     const std::vector<pack::ShaderProperty>& defaults);
+
+// Material properties as given: floats, vectors; textures get `<name>_ST` = (1, 1, 0, 0) unless
+// the material sets it. Texture names are returned through |textures| (property -> name).
 ShaderValues materialValues(const scene::Material& material,
-                            std::map<std::string, std::string>& textures,
-                            const std::vector<pack::ShaderProperty>& defaults = {});
+                            std::map<std::string, std::string>& textures);
 
 }  // namespace varc::runtime
