@@ -409,41 +409,24 @@ CompiledSource Builder::compileSource(const SourceProgram& source) const {
     const bool vertex = source.stage == variants::kStageVertex;
     const SourceLocation origin = job.pass->pass->program->origin;
     CompiledSource result;
-    // Reflection needs the names, so the cache keeps the optimised module with them, and what
-    // ships is stripped afterwards unless BuildOptions::debugNames.
-    auto finish = [&](std::vector<uint32_t> named, const SemanticsByLocation& semantics) {
-        auto reflection = reflectSpirv(named, semantics, vertex);
-        if (!reflection) {
-            result.diagnostics.push_back(
-                {Severity::Error, origin, "cannot reflect the generated SPIR-V", {}});
-            return false;
-        }
-        if (!mOptions.debugNames) {
-            SpirvResult stripped = stripDebugInfo(named);
-            if (!stripped.ok) {
-                result.diagnostics.push_back(
-                    {Severity::Error,
-                     origin,
-                     "cannot strip SPIR-V debug names: " + stripped.message,
-                     {}});
-                return false;
-            }
-            named = std::move(stripped.spirv);
-        }
-        result.ok = true;
-        result.spirv = std::move(named);
-        result.reflection = std::move(*reflection);
-        return true;
+    auto fail = [&](std::string message) {
+        result.diagnostics.push_back({Severity::Error, origin, std::move(message), {}});
+        return result;
     };
+    // Reflection needs the debug names; what ships goes without them unless
+    // BuildOptions::debugNames. The cache keeps both forms.
     std::optional<ProgramCacheKey> key;
     if (mCache) {
         key = mCache->keyOf(
             {mOptions.optimization, languageOf(job), source.stage, source.entryPoint, source.text});
         if (std::optional<CachedProgram> hit = mCache->load(*key)) {
-            result.diagnostics = parseGlslangLog(hit->log, mSourceMap);
-            result.fromCache = true;
-            if (finish(std::move(hit->spirv), hit->semantics)) return result;
-            result = CompiledSource{};  // an entry that does not reflect: compile afresh
+            if (auto reflection = reflectSpirv(hit->spirv, hit->semantics, vertex)) {
+                result.ok = result.fromCache = true;
+                result.diagnostics = parseGlslangLog(hit->log, mSourceMap);
+                result.spirv = std::move(mOptions.debugNames ? hit->spirv : hit->stripped);
+                result.reflection = std::move(*reflection);
+                return result;
+            }
         }
     }
     CompileOutput compiled =
@@ -451,26 +434,23 @@ CompiledSource Builder::compileSource(const SourceProgram& source) const {
     result.diagnostics = parseGlslangLog(compiled.log, mSourceMap);
     if (!compiled.ok) return result;
     SpirvResult optimized = optimizeSpirv(compiled.spirv, mOptions.optimization);
-    if (!optimized.ok) {
-        result.diagnostics.push_back(
-            {Severity::Error, origin, "SPIR-V optimisation failed: " + optimized.message, {}});
-        return result;
-    }
+    if (!optimized.ok) return fail("SPIR-V optimisation failed: " + optimized.message);
     if (auto invalid = validateSpirv(optimized.spirv)) {
-        result.diagnostics.push_back(
-            {Severity::Error, origin, "generated SPIR-V is invalid: " + *invalid, {}});
-        return result;
+        return fail("generated SPIR-V is invalid: " + *invalid);
     }
     std::optional<SemanticsByLocation> semantics = hlslSemantics(compiled.spirv);
-    if (!semantics) {
-        result.diagnostics.push_back(
-            {Severity::Error, origin, "cannot reflect the generated SPIR-V", {}});
-        return result;
-    }
+    std::optional<pack::ProgramReflection> reflection;
+    if (semantics) reflection = reflectSpirv(optimized.spirv, *semantics, vertex);
+    if (!reflection) return fail("cannot reflect the generated SPIR-V");
+    SpirvResult stripped = stripDebugInfo(optimized.spirv);
+    if (!stripped.ok) return fail("cannot strip SPIR-V debug names: " + stripped.message);
     if (mCache) {
-        noteCacheFailure(mCache->store(*key, {optimized.spirv, *semantics, compiled.log}));
+        noteCacheFailure(mCache->store(
+            *key, {optimized.spirv, stripped.spirv, std::move(*semantics), compiled.log}));
     }
-    finish(std::move(optimized.spirv), *semantics);
+    result.ok = true;
+    result.spirv = std::move(mOptions.debugNames ? optimized.spirv : stripped.spirv);
+    result.reflection = std::move(*reflection);
     return result;
 }
 

@@ -19,9 +19,10 @@ namespace {
 
 // Entry layout, little-endian: magic (8 bytes: "VARCPRG1" for programs, "VARCSRC1" for pruned
 // sources), key (low, high), the payload, then the XXH64 of everything before it. A program's
-// payload: u32 log bytes, u32 semantics, u32 SPIR-V words, the log, per semantic (u32 location,
-// u32 length, bytes), the words. A source's payload: the pruned text.
-constexpr std::string_view kProgramMagic = "VARCPRG1";
+// payload: u32 log bytes, u32 semantics, u32 SPIR-V words, u32 stripped words, the log, per
+// semantic (u32 location, u32 length, bytes), the words, the stripped words. A source's payload:
+// the pruned text.
+constexpr std::string_view kProgramMagic = "VARCPRG2";
 constexpr std::string_view kSourceMagic = "VARCSRC1";
 constexpr size_t kEntryOverhead = 8 + 16 + 8;
 constexpr uint32_t kMaxField = 1u << 30;  // no real entry comes near; bounds corrupt sizes
@@ -211,9 +212,10 @@ std::optional<CachedProgram> ProgramCache::load(const ProgramCacheKey& key) cons
     std::optional<std::string> payload = loadPayload(key, kProgramMagic, ".program");
     if (!payload) return std::nullopt;
     Reader in(*payload);
-    uint32_t logBytes = 0, semantics = 0, words = 0;
-    if (!in.u32(logBytes) || !in.u32(semantics) || !in.u32(words) || logBytes > kMaxField ||
-        semantics > kMaxField || words > kMaxField) {
+    uint32_t logBytes = 0, semantics = 0, words = 0, strippedWords = 0;
+    if (!in.u32(logBytes) || !in.u32(semantics) || !in.u32(words) || !in.u32(strippedWords) ||
+        logBytes > kMaxField || semantics > kMaxField || words > kMaxField ||
+        strippedWords > kMaxField) {
         return std::nullopt;
     }
     CachedProgram program;
@@ -230,7 +232,13 @@ std::optional<CachedProgram> ProgramCache::load(const ProgramCacheKey& key) cons
     for (uint32_t& word : program.spirv) {
         if (!in.u32(word)) return std::nullopt;
     }
-    if (in.offset() != payload->size() || program.spirv.empty()) return std::nullopt;
+    program.stripped.resize(strippedWords);
+    for (uint32_t& word : program.stripped) {
+        if (!in.u32(word)) return std::nullopt;
+    }
+    if (in.offset() != payload->size() || program.spirv.empty() || program.stripped.empty()) {
+        return std::nullopt;
+    }
     return program;
 }
 
@@ -239,6 +247,7 @@ Status ProgramCache::store(const ProgramCacheKey& key, const CachedProgram& prog
     putU32(payload, static_cast<uint32_t>(program.log.size()));
     putU32(payload, static_cast<uint32_t>(program.semantics.size()));
     putU32(payload, static_cast<uint32_t>(program.spirv.size()));
+    putU32(payload, static_cast<uint32_t>(program.stripped.size()));
     payload += program.log;
     for (const auto& [location, name] : program.semantics) {
         putU32(payload, location);
@@ -246,6 +255,7 @@ Status ProgramCache::store(const ProgramCacheKey& key, const CachedProgram& prog
         payload += name;
     }
     for (uint32_t word : program.spirv) putU32(payload, word);
+    for (uint32_t word : program.stripped) putU32(payload, word);
     return storePayload(key, kProgramMagic, ".program", payload);
 }
 

@@ -53,6 +53,14 @@ float scale() { return 2.0; }
 #endif
 )";
 
+// Whether |spirv| holds an instruction with |opcode| (OpName = 5, OpMemberName = 6).
+bool hasInstruction(const std::vector<uint32_t>& spirv, uint32_t opcode) {
+    for (size_t i = 5; i < spirv.size(); i += std::max<uint32_t>(spirv[i] >> 16, 1)) {
+        if ((spirv[i] & 0xffff) == opcode) return true;
+    }
+    return false;
+}
+
 class CompileDriverTest : public ::testing::Test {
 protected:
     std::optional<BuildOutput> build(const std::string& shaderText, BuildOptions options = {}) {
@@ -264,20 +272,21 @@ TEST_F(CompileDriverTest, ASecondBuildTakesEveryProgramFromTheCacheWithIdentical
         EXPECT_EQ(warm->programs[i].spirv, cold->programs[i].spirv) << i;
         EXPECT_EQ(warm->programs[i].reflection, cold->programs[i].reflection) << i;
     }
+    // -g reads the same entries and ships the named form.
+    options.debugNames = true;
+    auto named = build(kTwoKeywordShader, options);
+    ASSERT_TRUE(named);
+    EXPECT_EQ(named->cachedSources, named->compiledSources);
+    for (const CompiledProgram& program : named->programs) {
+        EXPECT_TRUE(hasInstruction(program.spirv, 5)) << "OpName expected with debug names";
+    }
+    options.debugNames = false;
     // A different optimisation level is a different program: nothing comes from the cache.
     options.optimization = OptimizationLevel::None;
     auto other = build(kTwoKeywordShader, options);
     ASSERT_TRUE(other);
     EXPECT_EQ(other->cachedSources, 0u);
     std::filesystem::remove_all(options.cacheDirectory);
-}
-
-// Whether |spirv| holds an instruction with |opcode| (OpName = 5, OpMemberName = 6).
-bool hasInstruction(const std::vector<uint32_t>& spirv, uint32_t opcode) {
-    for (size_t i = 5; i < spirv.size(); i += std::max<uint32_t>(spirv[i] >> 16, 1)) {
-        if ((spirv[i] & 0xffff) == opcode) return true;
-    }
-    return false;
 }
 
 TEST_F(CompileDriverTest, ShippedSpirvHasNoNamesUnlessAskedButReflectionKeepsThem) {

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Legacy GLSL built-ins are mapped per stage, and #line directives follow GLSL's convention.
-#include "varc/compiler/GlslLegacyPreamble.h"
-
 #include <gtest/gtest.h>
 
+#include "varc/compiler/GlslLegacyPreamble.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::compiler {
@@ -12,7 +11,8 @@ namespace {
 TEST(GlslLegacyPreamble, DeclaresOnlyTheBuiltinsTheSourceMentions) {
     std::string source = "void main() { gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }";
     std::string vertex = legacyGlslPreamble(source, variants::kStageVertex);
-    EXPECT_NE(vertex.find("in vec4 varc_Vertex;\n#define gl_Vertex varc_Vertex\n"), std::string::npos);
+    EXPECT_NE(vertex.find("in vec4 varc_Vertex;\n#define gl_Vertex varc_Vertex\n"),
+              std::string::npos);
     EXPECT_NE(vertex.find("uniform mat4 varc_ModelViewProjectionMatrix;"), std::string::npos);
     EXPECT_EQ(vertex.find("varc_Normal"), std::string::npos);
     EXPECT_NE(vertex.find("#define varying out\n"), std::string::npos);

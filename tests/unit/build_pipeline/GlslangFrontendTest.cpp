@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // glslang in-process: DX9-style HLSL and legacy GLSL compile to valid Vulkan SPIR-V, and the
 // #line convention varc emits maps errors back to the right original line.
-#include "varc/compiler/GlslangFrontend.h"
-
 #include <gtest/gtest.h>
 
 #include "varc/compiler/GlslLegacyPreamble.h"
+#include "varc/compiler/GlslangFrontend.h"
 #include "varc/compiler/GlslangLogParser.h"
 #include "varc/compiler/SpirvOptimizer.h"
 #include "varc/variants/PassKeywords.h"
@@ -42,8 +41,8 @@ std::vector<uint32_t> compileValid(const FrontendInput& input) {
 }
 
 TEST(GlslangFrontend, CompilesDx9StyleHlslStagesToValidSpirv) {
-    for (auto [stage, entry] : {std::pair{variants::kStageVertex, "vert"},
-                                std::pair{variants::kStageFragment, "frag"}}) {
+    for (auto [stage, entry] :
+         {std::pair{variants::kStageVertex, "vert"}, std::pair{variants::kStageFragment, "frag"}}) {
         std::vector<uint32_t> spirv =
             compileValid({kHlsl, "", shaderlab::ProgramLanguage::Cg, stage, entry});
         ASSERT_GT(spirv.size(), 5u);
@@ -53,8 +52,9 @@ TEST(GlslangFrontend, CompilesDx9StyleHlslStagesToValidSpirv) {
 
 TEST(GlslangFrontend, PreprocessingResolvesPreambleDefinesAndKeepsLineDirectives) {
     std::string source = "#line 7 2\n#ifdef POINT\nfloat point;\n#else\nfloat other;\n#endif\n";
-    PreprocessOutput pre = preprocessProgram(
-        {source, "#define POINT 1\n", shaderlab::ProgramLanguage::Hlsl, variants::kStageVertex, "v"});
+    PreprocessOutput pre =
+        preprocessProgram({source, "#define POINT 1\n", shaderlab::ProgramLanguage::Hlsl,
+                           variants::kStageVertex, "v"});
     ASSERT_TRUE(pre.ok) << pre.log;
     EXPECT_NE(pre.text.find("float point;"), std::string::npos);
     EXPECT_EQ(pre.text.find("float other;"), std::string::npos);
@@ -66,8 +66,9 @@ TEST(GlslangFrontend, HlslLineDirectiveNumbersTheNextLine) {
     includes::SourceMap sourceMap;
     sourceMap.addFile("root.shader", "");
     sourceMap.addFile("lib.cginc", "a\nb\nc\nd\nfloat4 f() { return missingThing; }\n");
-    std::string source = "#line 5 1\nfloat4 f() { return missingThing; }\n"
-                         "float4 v() : SV_Position { return f(); }\n";
+    std::string source =
+        "#line 5 1\nfloat4 f() { return missingThing; }\n"
+        "float4 v() : SV_Position { return f(); }\n";
     CompileOutput compiled =
         compileProgram({source, "", shaderlab::ProgramLanguage::Hlsl, variants::kStageVertex, "v"});
     ASSERT_FALSE(compiled.ok);
@@ -81,7 +82,8 @@ TEST(GlslangFrontend, LegacyGlslLineDirectiveMapsAfterConversion) {
     includes::SourceMap sourceMap;
     sourceMap.addFile("root.shader", "");
     sourceMap.addFile("lib.glslinc", "a\nb\nvoid main() { gl_FragColor = missingThing; }\n");
-    std::string source = toGlslLineConvention("#line 3 1\nvoid main() { gl_FragColor = missingThing; }\n");
+    std::string source =
+        toGlslLineConvention("#line 3 1\nvoid main() { gl_FragColor = missingThing; }\n");
     std::string preamble = legacyGlslPreamble(source, variants::kStageFragment);
     CompileOutput compiled = compileProgram(
         {source, preamble, shaderlab::ProgramLanguage::Glsl, variants::kStageFragment, "main"});
@@ -108,9 +110,10 @@ void main() { gl_FragColor = _Color * position + gl_LightModel.ambient; }
 )";
     for (auto stage : {variants::kStageVertex, variants::kStageFragment}) {
         std::string text = toGlslLineConvention(source);
-        std::string preamble = std::string(stage == variants::kStageVertex ? "#define VERTEX 1\n"
-                                                                           : "#define FRAGMENT 1\n") +
-                               legacyGlslPreamble(text, stage);
+        std::string preamble =
+            std::string(stage == variants::kStageVertex ? "#define VERTEX 1\n"
+                                                        : "#define FRAGMENT 1\n") +
+            legacyGlslPreamble(text, stage);
         PreprocessOutput pre =
             preprocessProgram({text, preamble, shaderlab::ProgramLanguage::Glsl, stage, "main"});
         ASSERT_TRUE(pre.ok) << pre.log;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // parseGlslangLog maps glslang's "ERROR: file:line:" lines back to files, lines and columns.
-#include "varc/compiler/GlslangLogParser.h"
-
 #include <gtest/gtest.h>
+
+#include "varc/compiler/GlslangLogParser.h"
 
 namespace varc::compiler {
 namespace {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // parallelFor runs every index exactly once, and job 0 alone first when asked.
-#include "varc/compiler/ParallelFor.h"
-
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <vector>
+
+#include "varc/compiler/ParallelFor.h"
 
 namespace varc::compiler {
 namespace {
@@ -21,19 +21,23 @@ TEST(ParallelFor, RunsEveryIndexExactlyOnce) {
 TEST(ParallelFor, FirstJobCompletesBeforeOthersStart) {
     std::atomic<bool> firstDone{false};
     std::atomic<int> startedEarly{0};
-    parallelFor(64, 4, [&](size_t i) {
-        if (i == 0) {
-            firstDone.store(true);
-        } else if (!firstDone.load()) {
-            startedEarly.fetch_add(1);
-        }
-    }, /*firstAlone=*/true);
+    parallelFor(
+        64, 4,
+        [&](size_t i) {
+            if (i == 0) {
+                firstDone.store(true);
+            } else if (!firstDone.load()) {
+                startedEarly.fetch_add(1);
+            }
+        },
+        /*firstAlone=*/true);
     EXPECT_EQ(startedEarly.load(), 0);
 }
 
 TEST(ParallelFor, HandlesZeroItems) {
     int calls = 0;
-    parallelFor(0, 4, [&](size_t) { ++calls; }, true);
+    parallelFor(
+        0, 4, [&](size_t) { ++calls; }, true);
     EXPECT_EQ(calls, 0);
 }
 

@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The predefined macros: target numbers, pass macros from LightMode, stage and keyword defines.
-#include "varc/compiler/PassDefines.h"
-
 #include <gtest/gtest.h>
 
+#include "varc/compiler/PassDefines.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::compiler {
@@ -27,8 +26,11 @@ TEST(PassDefines, MapsLightModeToPassMacroCaseInsensitively) {
 }
 
 TEST(PassDefines, PreambleListsApiTargetPassStageAndKeywordsInOrder) {
-    DefineContext context{"ForwardAdd", "3.0", shaderlab::ProgramLanguage::Cg,
-                          variants::kStageFragment, {"POINT", "SHADOWS_CUBE"}};
+    DefineContext context{"ForwardAdd",
+                          "3.0",
+                          shaderlab::ProgramLanguage::Cg,
+                          variants::kStageFragment,
+                          {"POINT", "SHADOWS_CUBE"}};
     EXPECT_EQ(makePreamble(context),
               "#define SHADER_API_VULKAN 1\n"
               "#define SHADER_API_DESKTOP 1\n"

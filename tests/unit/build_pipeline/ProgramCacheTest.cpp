@@ -28,6 +28,7 @@ protected:
 
     static CachedProgram sample() {
         return {{0x07230203u, 0x00010000u, 0u, 42u, 0u, 7u, 8u, 9u},
+                {0x07230203u, 0x00010000u, 0u, 42u, 0u, 7u},
                 {{0, "POSITION"}, {3, "TEXCOORD0"}},
                 "WARNING: program:3: something harmless\n"};
     }
@@ -55,6 +56,7 @@ TEST_F(ProgramCacheTest, AStoredEntryLoadsBackWhole) {
     std::optional<CachedProgram> loaded = cache.load(key);
     ASSERT_TRUE(loaded);
     EXPECT_EQ(loaded->spirv, sample().spirv);
+    EXPECT_EQ(loaded->stripped, sample().stripped);
     EXPECT_EQ(loaded->semantics, sample().semantics);
     EXPECT_EQ(loaded->log, sample().log);
     EXPECT_EQ(fs::path(cache.pathOf(key)).parent_path().filename().string(),
@@ -99,8 +101,12 @@ TEST_F(ProgramCacheTest, EveryTruncationAndEveryByteFlipIsRejected) {
 
 TEST_F(ProgramCacheTest, PrunedSourcesRoundTripAndDamageIsRejected) {
     ProgramCache cache(mDir.string());
-    SourceCacheInput input{ProgramCache::hashText("pass text"), shaderlab::ProgramLanguage::Cg,
-                           1, "frag", "#define POINT 1\n", true};
+    SourceCacheInput input{ProgramCache::hashText("pass text"),
+                           shaderlab::ProgramLanguage::Cg,
+                           1,
+                           "frag",
+                           "#define POINT 1\n",
+                           true};
     ProgramCacheKey key = cache.sourceKeyOf(input);
     EXPECT_FALSE(cache.loadSource(key));
     const std::string text = "#line 3 1\nfloat4 frag() : SV_Target { return 1; }\n";

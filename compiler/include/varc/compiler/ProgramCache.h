@@ -35,7 +35,8 @@ struct ProgramCacheKey {
 
 // What a cached compile produced.
 struct CachedProgram {
-    std::vector<uint32_t> spirv;    // optimised and validated
+    std::vector<uint32_t> spirv;     // optimised and validated, with debug names
+    std::vector<uint32_t> stripped;  // the same without debug names (what ships by default)
     SemanticsByLocation semantics;  // from the module before optimisation
     std::string log;                // glslang's messages, unmapped
 };
