@@ -116,6 +116,32 @@ TEST_F(ForwardRenderTest, UnknownShaderIsAClearError) {
 }
 
 // Every validation scene matches the CPU reference within the tolerances.
+// The camera and the light lie in the x = 0 plane, so mirroring the sphere in x must mirror the
+// image: a mirrored object still shows its outside (Cull Back becomes Cull Front for it). With the
+// inside faces shown instead, most of the sphere would differ.
+TEST_F(ForwardRenderTest, AMirroredObjectShowsItsOutside) {
+    scene::Scene scene = oneSphere();
+    scene.lights.push_back(pointLight({0.0f, 1.0f, -1.5f}, glm::vec3(1.0f), 5.0f));
+    RenderedFrame plain = render(scene);
+    scene.objects[0].transform.scale = {-1.0f, 1.0f, 1.0f};
+    RenderedFrame mirrored = render(scene);
+    ASSERT_GT(testing::rgbSum(plain.image), 1.0f);
+    const uint32_t w = plain.image.width(), h = plain.image.height();
+    size_t differing = 0, covered = 0;
+    for (uint32_t y = 0; y < h; ++y) {
+        for (uint32_t x = 0; x < w; ++x) {
+            const auto a = plain.image.pixelFloat(w - 1 - x, y);
+            const auto b = mirrored.image.pixelFloat(x, y);
+            covered += a[0] + a[1] + a[2] > 0.0f;
+            float worst = 0.0f;
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(a[c] - b[c]));
+            differing += worst > 2.0f / 255.0f;
+        }
+    }
+    ASSERT_GT(covered, 250u);  // the sphere covers ~11 px of radius
+    EXPECT_LT(differing, covered / 50) << differing << " of " << covered << " pixels differ";
+}
+
 TEST_F(ForwardRenderTest, ValidationScenesMatchTheCpuReference) {
     std::vector<std::string> scenes = testing::sceneFiles("forward");
     ASSERT_GE(scenes.size(), 5u);

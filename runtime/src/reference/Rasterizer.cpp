@@ -67,6 +67,7 @@ void rasterizeScreenTriangle(std::array<ScreenVertex, 3> v, uint32_t width, uint
     int64_t area = 0;
     for (int i = 0; i < 3; ++i) area += v[i].x * v[(i + 1) % 3].y - v[(i + 1) % 3].x * v[i].y;
     if (area == 0) return;
+    if (cull == CullMode::Front && area > 0) return;
     if (area < 0) {
         if (cull == CullMode::Back) return;
         std::swap(v[1], v[2]);
@@ -95,7 +96,8 @@ void rasterizeScreenTriangle(std::array<ScreenVertex, 3> v, uint32_t width, uint
             const double l1 = static_cast<double>(e[2]) / static_cast<double>(area);
             const double l2 = 1.0 - l0 - l1;
             const double q0 = l0 * v[0].invW, q1 = l1 * v[1].invW, q2 = l2 * v[2].invW;
-            const glm::dvec3 bary = (q0 * v[0].bary + q1 * v[1].bary + q2 * v[2].bary) / (q0 + q1 + q2);
+            const glm::dvec3 bary =
+                (q0 * v[0].bary + q1 * v[1].bary + q2 * v[2].bary) / (q0 + q1 + q2);
             Fragment f;
             f.x = static_cast<uint32_t>(x);
             f.y = static_cast<uint32_t>(y);
@@ -110,7 +112,8 @@ void rasterizeScreenTriangle(std::array<ScreenVertex, 3> v, uint32_t width, uint
 
 void rasterizeTriangle(const std::array<glm::vec4, 3>& clip, uint32_t width, uint32_t height,
                        CullMode cull, const FragmentFn& emit) {
-    std::vector<ClipVertex> polygon = {{clip[0], {1, 0, 0}}, {clip[1], {0, 1, 0}}, {clip[2], {0, 0, 1}}};
+    std::vector<ClipVertex> polygon = {
+        {clip[0], {1, 0, 0}}, {clip[1], {0, 1, 0}}, {clip[2], {0, 0, 1}}};
     polygon = clipAgainst(polygon, [](const glm::vec4& c) { return c.z; });
     polygon = clipAgainst(polygon, [](const glm::vec4& c) { return c.w - c.z; });
     if (polygon.size() < 3) return;
@@ -129,14 +132,18 @@ VisibilityBuffer rasterizeScene(const scene::Scene& scene, const scene::CameraMa
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
         const scene::Mesh& mesh = scene::builtinMesh(object.mesh);
-        const glm::mat4 mvp = camera.viewProjection * object.transform.localToWorld();
+        const glm::mat4 toWorld = object.transform.localToWorld();
+        const glm::mat4 mvp = camera.viewProjection * toWorld;
+        // A mirrored object's triangles turn over on screen: its back-face cull culls front faces.
+        const CullMode cull = glm::determinant(toWorld) < 0.0f ? CullMode::Front : CullMode::Back;
         std::vector<glm::vec4> clip;
         clip.reserve(mesh.positions.size());
         for (const glm::vec3& p : mesh.positions) clip.push_back(mvp * glm::vec4(p, 1.0f));
         for (size_t t = 0; t * 3 < mesh.indices.size(); ++t) {
-            const std::array<glm::vec4, 3> tri = {clip[mesh.indices[3 * t]], clip[mesh.indices[3 * t + 1]],
+            const std::array<glm::vec4, 3> tri = {clip[mesh.indices[3 * t]],
+                                                  clip[mesh.indices[3 * t + 1]],
                                                   clip[mesh.indices[3 * t + 2]]};
-            rasterizeTriangle(tri, buffer.width, buffer.height, CullMode::Back, [&](const Fragment& f) {
+            rasterizeTriangle(tri, buffer.width, buffer.height, cull, [&](const Fragment& f) {
                 SurfaceSample& s = buffer.samples[size_t{f.y} * buffer.width + f.x];
                 if (f.depth <= s.depth) {
                     s = {static_cast<int>(o), static_cast<uint32_t>(t), f.bary, f.depth};
@@ -169,7 +176,8 @@ Classification classifyPixels(const scene::Scene& scene, const VisibilityBuffer&
                     const int64_t nx = int64_t{x} + dx, ny = int64_t{y} + dy;
                     if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
                     const size_t j = static_cast<size_t>(ny) * w + static_cast<size_t>(nx);
-                    edge = visibility.samples[j].object != object || (object >= 0 && group(i) != group(j));
+                    edge = visibility.samples[j].object != object ||
+                           (object >= 0 && group(i) != group(j));
                 }
             }
             out.classes[i] = edge ? PixelClass::Edge

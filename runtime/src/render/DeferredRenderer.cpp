@@ -184,7 +184,8 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
             withPropertyDefaults(object.material, shader->properties()), textureNames));
         if (!material.find("_StencilNonBackground"))
             material.set("_StencilNonBackground", kStencilNonBackground);
-        pack::PackRenderState state = resolveRenderState(pass->renderState(), material);
+        pack::PackRenderState state = forObjectTransform(
+            resolveRenderState(pass->renderState(), material), object.transform.localToWorld());
         auto pipeline = s.pipeline(pack, *variant, state, Phase::GBuffer, targets, hdr);
         if (!pipeline)
             return makeError(pipeline.error().code, what + ": " + pipeline.error().detail);

@@ -36,7 +36,8 @@ ShaderValues fullScreenQuadValues(const scene::CameraMatrices& camera) {
 
 ShaderValues lightVolumeValues(const glm::mat4& objectToWorld) {
     ShaderValues values;
-    for (const char* name : {"unity_ObjectToWorld", "_Object2World"}) values.set(name, objectToWorld);
+    for (const char* name : {"unity_ObjectToWorld", "_Object2World"})
+        values.set(name, objectToWorld);
     for (const char* name : {"unity_WorldToObject", "_World2Object"})
         values.set(name, glm::inverse(objectToWorld));
     values.set("unity_WorldTransformParams", glm::vec4(0, 0, 0, 1));

@@ -78,7 +78,8 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
             auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
             if (!variant)
                 return makeError(variant.error().code, what + ": " + variant.error().detail);
-            pack::PackRenderState state = resolveRenderState(pass->renderState(), material);
+            pack::PackRenderState state = forObjectTransform(
+                resolveRenderState(pass->renderState(), material), object.transform.localToWorld());
             auto pipeline =
                 s.pipeline(pack, *variant, state, {(*target)->renderPass(LoadOp::Clear), true, 1},
                            scene.camera.hdr ? 1u : 0u);

@@ -171,6 +171,17 @@ pack::PackRenderState resolveRenderState(const pack::PackRenderState& state,
     return resolved;
 }
 
+pack::PackRenderState forObjectTransform(pack::PackRenderState state,
+                                         const glm::mat4& objectToWorld) {
+    if (glm::determinant(objectToWorld) >= 0.0f) return state;
+    if (state.cull.value == pack::CullMode::Back) {
+        state.cull.value = pack::CullMode::Front;
+    } else if (state.cull.value == pack::CullMode::Front) {
+        state.cull.value = pack::CullMode::Back;
+    }
+    return state;
+}
+
 VulkanRenderState toVulkan(const pack::PackRenderState& state, bool hasStencil) {
     VulkanRenderState vk;
     auto& raster = vk.rasterization;

@@ -69,6 +69,7 @@ struct DrawGroup {
     scene::ObjectLightList lights;
     std::map<std::string, scene::PropertyValue> sharedProperties;  // instanced ones blanked
     std::vector<pack::ShaderProperty> propertyDefaults;  // the shader's, for per-instance values
+    bool mirrored = false;  // negative-determinant transform: culls the other side (one pipeline)
     std::vector<size_t> objects;
     const InstancedLayout* instancing = nullptr;  // null: the shader cannot instance
 };
@@ -76,7 +77,7 @@ struct DrawGroup {
 bool sameBatch(const DrawGroup& group, const DrawGroup& candidate) {
     return group.instancing && group.pack == candidate.pack &&
            group.pass->describe() == candidate.pass->describe() && group.mesh == candidate.mesh &&
-           group.lights == candidate.lights &&
+           group.lights == candidate.lights && group.mirrored == candidate.mirrored &&
            group.sharedProperties == candidate.sharedProperties &&
            group.objects.size() < group.instancing->maxInstances;
 }
@@ -154,6 +155,7 @@ Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(
             return makeError(ErrorCode::NotFound, what + ": the shader has no pass");
         candidate.mesh = object.mesh;
         candidate.propertyDefaults = shader->properties();
+        candidate.mirrored = glm::determinant(object.transform.localToWorld()) < 0.0f;
         candidate.lights = scene::objectLightList(scene, visible, object);
         candidate.sharedProperties =
             withPropertyDefaults(object.material, shader->properties()).properties;
@@ -218,7 +220,9 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
         std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
         const ShaderValues& material = values.emplace_back(materialValues(
             withPropertyDefaults(first.material, group.propertyDefaults), textureNames));
-        pack::PackRenderState state = resolveRenderState(group.pass->renderState(), material);
+        pack::PackRenderState state =
+            forObjectTransform(resolveRenderState(group.pass->renderState(), material),
+                               first.transform.localToWorld());
         auto pipeline =
             s.pipeline(group.pack, *variant, state, {(*target)->renderPass(LoadOp::Clear), true, 1},
                        scene.camera.hdr ? 1u : 0u);

@@ -35,6 +35,11 @@ TEST(Rasterizer, CullsCounterClockwiseTriangles) {
     EXPECT_EQ(raster({at(0, 0, 8), at(0, 8, 8), at(8, 0, 8)}, 8, CullMode::None).size(), 28u);
 }
 
+TEST(Rasterizer, CullFrontDropsClockwiseTrianglesAndKeepsCounterClockwiseOnes) {
+    EXPECT_TRUE(raster({at(0, 0, 8), at(8, 0, 8), at(0, 8, 8)}, 8, CullMode::Front).empty());
+    EXPECT_EQ(raster({at(0, 0, 8), at(0, 8, 8), at(8, 0, 8)}, 8, CullMode::Front).size(), 28u);
+}
+
 // A square split along a diagonal through pixel centres: every pixel exactly once.
 TEST(Rasterizer, SharedEdgeCoversEachPixelOnce) {
     std::map<std::pair<uint32_t, uint32_t>, int> hits;

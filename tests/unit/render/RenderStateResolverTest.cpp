@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "varc/runtime/render/RenderStateResolver.h"
 
@@ -47,6 +48,23 @@ TEST(RenderStateResolver, CullingAndColorMaskFollowUnityConventions) {
     EXPECT_EQ(vk.rasterization.frontFace, VK_FRONT_FACE_CLOCKWISE);
     EXPECT_EQ(vk.blend.colorWriteMask, static_cast<VkColorComponentFlags>(
                                            VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_A_BIT));
+}
+
+TEST(RenderStateResolver, AMirroringTransformSwapsTheCulledSide) {
+    pack::PackRenderState back;
+    const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 2.0f, 1.0f));
+    const glm::mat4 plain = glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 2.0f, 1.0f));
+    EXPECT_EQ(forObjectTransform(back, mirror).cull.value, pack::CullMode::Front);
+    EXPECT_EQ(forObjectTransform(back, plain).cull.value, pack::CullMode::Back);
+    pack::PackRenderState front = back;
+    front.cull.value = pack::CullMode::Front;
+    EXPECT_EQ(forObjectTransform(front, mirror).cull.value, pack::CullMode::Back);
+    pack::PackRenderState off = back;
+    off.cull.value = pack::CullMode::Off;
+    EXPECT_EQ(forObjectTransform(off, mirror).cull.value, pack::CullMode::Off);
+    // Two mirrorings are a rotation: nothing changes.
+    const glm::mat4 twice = glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, -1.0f, 1.0f));
+    EXPECT_EQ(forObjectTransform(back, twice).cull.value, pack::CullMode::Back);
 }
 
 TEST(RenderStateResolver, StencilNeedsAStencilAttachment) {

@@ -8,16 +8,17 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <vector>
-
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "varc/scene/CameraMatrices.h"
 #include "varc/scene/Scene.h"
 
 namespace varc::reference {
 
-enum class CullMode { None, Back };
+// Back: drop back faces (counter-clockwise on screen); Front: drop front faces, what a back-face
+// cull becomes for an object mirrored by a negative-determinant transform (Unity flips it).
+enum class CullMode { None, Back, Front };
 
 // One covered pixel centre: framebuffer pixel (x, y), depth z/w in [0, 1], and the
 // perspective-correct barycentric weights of the triangle's three ORIGINAL vertices (sum 1).

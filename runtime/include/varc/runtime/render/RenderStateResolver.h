@@ -5,6 +5,8 @@
 
 #include <vulkan/vulkan.h>
 
+#include <glm/glm.hpp>
+
 #include "varc/pack/PackRenderState.h"
 #include "varc/runtime/render/ShaderValues.h"
 
@@ -15,6 +17,12 @@ namespace varc::runtime {
 // The result has no property names left, so it compares and hashes as plain values.
 pack::PackRenderState resolveRenderState(const pack::PackRenderState& state,
                                          const ShaderValues& material);
+
+// |state| for an object placed by |objectToWorld|: a mirroring transform (negative determinant)
+// turns its triangles over on screen, so Cull Back becomes Cull Front and the reverse, as Unity
+// does for negatively scaled objects.
+pack::PackRenderState forObjectTransform(pack::PackRenderState state,
+                                         const glm::mat4& objectToWorld);
 
 // The Vulkan pieces of a resolved state. Culling uses VK_FRONT_FACE_CLOCKWISE: Unity's meshes
 // are clockwise from outside and varc's projection flips y (SHADER_ABI.md §2).
