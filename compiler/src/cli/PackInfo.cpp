@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // `varc info`: what a pack holds, per shader and pass, with distinct programs per stage.
 #include <array>
+#include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <set>
@@ -67,6 +69,14 @@ std::string hex64(uint64_t value) {
     return text;
 }
 
+// |value| as the double whose shortest form equals the float's (0.1f prints as 0.1, not as
+// 0.10000000149011612).
+double shortest(float value) {
+    char text[32];
+    auto [end, error] = std::to_chars(text, text + sizeof(text), value);
+    return error == std::errc() ? std::strtod(std::string(text, end).c_str(), nullptr) : value;
+}
+
 // The shader's Properties defaults: {"name", "kind", "default"}; default is a number, [x,y,z,w]
 // or the texture's name.
 Json propertiesJson(const runtime::ShaderView& shader) {
@@ -76,11 +86,12 @@ Json propertiesJson(const runtime::ShaderView& shader) {
         Json value;
         switch (property.kind) {
             case pack::PropertyKind::Float:
-                value = property.value[0];
+                value = shortest(property.value[0]);
                 break;
             case pack::PropertyKind::Vector:
             case pack::PropertyKind::Color:
-                value = property.value;
+                value = Json::array();
+                for (float component : property.value) value.push_back(shortest(component));
                 break;
             case pack::PropertyKind::Texture:
                 value = property.texture;
