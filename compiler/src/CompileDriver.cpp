@@ -76,7 +76,6 @@ struct SourceProgram {
     std::string entryPoint;
     std::string text;
     size_t firstVariant = 0;
-    uint64_t variants = 0;
 };
 
 struct StageResult {
@@ -103,6 +102,11 @@ double threadCpuSeconds() {
 
 shaderlab::ProgramLanguage languageOf(const PassJob& job) {
     return job.pass->pass->program->language;
+}
+
+// Identifies variant |variant| of pass job |job| across the build (for counting variants).
+uint64_t variantId(size_t job, size_t variant) {
+    return (static_cast<uint64_t>(job) << 32) | static_cast<uint64_t>(variant);
 }
 
 std::string joinKeywords(const std::vector<std::string>& names) {
@@ -268,7 +272,7 @@ uint32_t Builder::internSource(size_t jobIndex, size_t variant, size_t stageInde
     std::string key = std::to_string(stage) + "|" + entry + "|" + text;
     auto [it, inserted] =
         mSourceIndex.emplace(std::move(key), static_cast<uint32_t>(mSources.size()));
-    if (inserted) mSources.push_back({jobIndex, stage, entry, std::move(text), variant, 0});
+    if (inserted) mSources.push_back({jobIndex, stage, entry, std::move(text), variant});
     return it->second;
 }
 
@@ -277,10 +281,10 @@ void Builder::applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
     PassJob& job = mJobs[jobIndex];
     if (!outcome.diagnostics.empty()) {
         mGrouper.add(outcome.diagnostics, job.pass->pass->location,
-                     contextOf(job, job.stages[stageIndex].first, variant), 1);
+                     contextOf(job, job.stages[stageIndex].first, variant),
+                     {variantId(jobIndex, variant)});
     }
     if (!outcome.ok) return;
-    ++mSources[outcome.source].variants;
     job.sourceIds[variant * job.stages.size() + stageIndex] = outcome.source;
 }
 
@@ -469,12 +473,23 @@ bool Builder::compileSources() {
             if (mOptions.progress) mOptions.progress(done.fetch_add(1) + 1, mSources.size());
         },
         /*firstAlone=*/true);
+    // The variants behind each program with diagnostics, to count each affected variant once.
+    std::vector<std::vector<uint64_t>> variantsOf(mSources.size());
+    for (size_t j = 0; j < mJobs.size(); ++j) {
+        const PassJob& job = mJobs[j];
+        for (size_t item = 0; item < job.sourceIds.size(); ++item) {
+            uint32_t source = job.sourceIds[item];
+            if (source != kNoProgram && !mCompiled[source].diagnostics.empty()) {
+                variantsOf[source].push_back(variantId(j, item / job.stages.size()));
+            }
+        }
+    }
     for (size_t i = 0; i < mSources.size(); ++i) {
         const SourceProgram& source = mSources[i];
         if (mCompiled[i].diagnostics.empty()) continue;
         const PassJob& job = mJobs[source.job];
         mGrouper.add(mCompiled[i].diagnostics, job.pass->pass->location,
-                     contextOf(job, source.stage, source.firstVariant), source.variants);
+                     contextOf(job, source.stage, source.firstVariant), variantsOf[i]);
     }
     return !failed.load() && !mGrouper.hasErrors();
 }

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <map>
+#include <set>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -17,10 +18,12 @@ namespace varc::compiler {
 //   a.shader:30:3: note: in the fragment stage of pass 1 ... keywords: POINT; 5 variants affected
 class DiagnosticGrouper {
 public:
-    // Adds |diagnostics| found while compiling a program used by |variantCount| variants;
-    // |context| describes where (stage, pass, shader, keywords of the first variant).
+    // Adds |diagnostics| found while compiling a program used by the variants |variantIds| (any
+    // ids unique per variant, e.g. pass << 32 | variant); |context| describes where (stage, pass,
+    // shader, keywords of the first variant). A variant met again, say through its other stage,
+    // is counted once.
     void add(const std::vector<Diagnostic>& diagnostics, SourceLocation contextLocation,
-             const std::string& context, uint64_t variantCount);
+             const std::string& context, const std::vector<uint64_t>& variantIds);
     bool hasErrors() const { return mErrors > 0; }
     // Reports every group, in first-seen order, with its context note.
     void flush(DiagnosticSink& sink) const;
@@ -30,7 +33,7 @@ private:
         Diagnostic diagnostic;
         SourceLocation contextLocation;
         std::string context;
-        uint64_t variants = 0;
+        std::set<uint64_t> variants;
     };
     using Key = std::tuple<int, uint32_t, uint32_t, uint32_t, std::string>;
     std::vector<Group> mGroups;

@@ -204,7 +204,8 @@ TEST_F(CompileDriverTest, ErrorInSharedIncludeIsReportedOnceWithVariantCountAndM
         mentions += d.message.find("undefinedValue") != std::string::npos;
     EXPECT_EQ(mentions, 1u);
     ASSERT_FALSE(errors[0].notes.empty());
-    EXPECT_NE(errors[0].notes.back().message.find("variants affected"), std::string::npos)
+    // Both stages of all 4 variants include it: 4 variants, not 8 programs.
+    EXPECT_NE(errors[0].notes.back().message.find("; 4 variants affected"), std::string::npos)
         << errors[0].notes.back().message;
     EXPECT_NE(errors[0].notes.back().message.find("stage of pass 0"), std::string::npos);
 }
@@ -249,6 +250,9 @@ TEST_F(CompileDriverTest, APreprocessingErrorSharedByVariantsIsReportedOnce) {
             << d.notes.back().message;
         if (d.message.find("tinted is unsupported") == std::string::npos) continue;
         ++mentions;
+        // The 2 TINTED variants, each met through both stages, count once.
+        EXPECT_NE(d.notes.back().message.find("; 2 variants affected"), std::string::npos)
+            << d.notes.back().message;
         EXPECT_EQ(mSourceMap.path(d.location.file), "shaders/test.shader");
     }
     EXPECT_EQ(mentions, 1u);
