@@ -25,6 +25,17 @@ function(varc_add_gtest)
     target_compile_definitions(${ARG_NAME} PRIVATE
         VARC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
         VARC_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
-    set(_labels unit ${ARG_LABELS})
-    gtest_discover_tests(${ARG_NAME} PROPERTIES LABELS "${_labels}" DISCOVERY_TIMEOUT 60)
+    gtest_discover_tests(${ARG_NAME} PROPERTIES LABELS unit DISCOVERY_TIMEOUT 60)
+    # gtest_discover_tests flattens a label list into separate property arguments, so the extra
+    # labels are set by a script CTest runs after the discovered tests are defined (it sees the
+    # <target>_TESTS list the discovery script sets).
+    if(ARG_LABELS)
+        string(JOIN "\\;" _labels unit ${ARG_LABELS})
+        set(_label_script "${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_labels.cmake")
+        file(WRITE "${_label_script}"
+            "if(DEFINED ${ARG_NAME}_TESTS)\n"
+            "  set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${_labels}\")\n"
+            "endif()\n")
+        set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${_label_script}")
+    endif()
 endfunction()
