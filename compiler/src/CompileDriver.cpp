@@ -6,14 +6,13 @@
 //     point, and intern the text -> source ids (identical programs found before glslang runs).
 //     Defines the pass text never names are dropped first (ObservedDefines.h), so variants and
 //     stages that differ only in those share one preprocessing and one pruning;
-//  2. per distinct source: glslang -> SPIRV-Tools optimise -> validate, in parallel;
+//     (driver/PassJob.h);
+//  2. per distinct source: glslang -> SPIRV-Tools optimise -> validate, in parallel, or the
+//     program cache (driver/ProgramCompiler.h);
 //  3. intern the SPIR-V bytes -> program ids, in enumeration order, and derive the statistics.
 #include "varc/compiler/CompileDriver.h"
 
-#include <xxhash.h>
-
 #include <atomic>
-#include <ctime>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -21,46 +20,21 @@
 #include <unordered_map>
 
 #include "DiagnosticGrouper.h"
+#include "driver/PassJob.h"
+#include "driver/ProgramCompiler.h"
 #include "varc/compiler/GlslLegacyPreamble.h"
 #include "varc/compiler/GlslangFrontend.h"
-#include "varc/compiler/GlslangLogParser.h"
-#include "varc/compiler/ObservedDefines.h"
 #include "varc/compiler/ParallelFor.h"
-#include "varc/compiler/PassDefines.h"
 #include "varc/compiler/ProgramCache.h"
-#include "varc/compiler/SpirvReflection.h"
 #include "varc/compiler/StageEffects.h"
-#include "varc/compiler/StagePruner.h"
 
 namespace varc::compiler {
 
 namespace {
 
+using namespace detail;
+
 constexpr size_t kChunkSize = 256;
-
-// A pass being built: its variants and which stages it has (with their entry points).
-struct PassJob {
-    size_t shaderIndex = 0, passIndex = 0;
-    const LoadedShader* shader = nullptr;
-    const LoadedPass* pass = nullptr;
-    std::vector<variants::VariantKey> keys;
-    std::vector<std::pair<uint32_t, std::string>> stages;  // (stage bit, entry point)
-    std::string text;  // the expanded source, in the front end's #line convention
-    std::optional<ObservedNames> observed;  // the macro names |text| can see
-    ProgramCacheKey textHash;               // of |text|, when a program cache is used
-    // sourceIds[variant * stages.size() + stageIndex]
-    std::vector<uint32_t> sourceIds;
-};
-
-// 128-bit content hash of a (preprocessing, stage, entry point): what an item's outcome depends on.
-struct ItemKey {
-    uint64_t low = 0, high = 0;
-    bool operator==(const ItemKey&) const = default;
-};
-
-struct ItemKeyHash {
-    size_t operator()(const ItemKey& key) const { return static_cast<size_t>(key.low); }
-};
 
 // What a (variant, stage) item came to, remembered for every item with the same ItemKey.
 struct ItemOutcome {
@@ -77,120 +51,6 @@ struct SourceProgram {
     std::string text;
     size_t firstVariant = 0;
 };
-
-struct StageResult {
-    bool ok = false;
-    std::string text;
-    std::vector<Diagnostic> diagnostics;
-};
-
-struct CompiledSource {
-    bool ok = false;
-    bool fromCache = false;
-    double seconds = 0;  // CPU time of compileSource on its worker thread
-    std::vector<uint32_t> spirv;
-    pack::ProgramReflection reflection;
-    std::vector<Diagnostic> diagnostics;
-};
-
-// CPU time of the calling thread: unlike wall time, not inflated by other processes.
-double threadCpuSeconds() {
-    timespec now{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
-    return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
-}
-
-shaderlab::ProgramLanguage languageOf(const PassJob& job) {
-    return job.pass->pass->program->language;
-}
-
-// Identifies variant |variant| of pass job |job| across the build (for counting variants).
-uint64_t variantId(size_t job, size_t variant) {
-    return (static_cast<uint64_t>(job) << 32) | static_cast<uint64_t>(variant);
-}
-
-std::string joinKeywords(const std::vector<std::string>& names) {
-    if (names.empty()) return "<no keywords>";
-    std::string text;
-    for (const std::string& name : names) text += (text.empty() ? "" : " ") + name;
-    return text;
-}
-
-std::string contextOf(const PassJob& job, uint32_t stage, size_t variant) {
-    const auto& table = job.pass->space->table();
-    return std::string("in the ") + stageName(stage) + " stage of " +
-           describePass(job.shader->ast, *job.pass->pass, job.pass->index) +
-           ", keywords: " + joinKeywords(table.namesOf(job.keys[variant]));
-}
-
-// The stages a pass compiles, from its #pragma vertex/fragment/...; reports missing entries.
-bool collectStages(PassJob& job, DiagnosticSink& sink) {
-    const variants::PassKeywords& kw = job.pass->keywords;
-    bool glsl = languageOf(job) == shaderlab::ProgramLanguage::Glsl;
-    auto entry = [&](const std::string& name) { return glsl ? std::string("main") : name; };
-    if (!glsl && (kw.vertexEntry.empty() || kw.fragmentEntry.empty())) {
-        sink.error(job.pass->pass->program->origin,
-                   std::string("missing #pragma ") +
-                       (kw.vertexEntry.empty() ? "vertex" : "fragment") + " in " +
-                       describePass(job.shader->ast, *job.pass->pass, job.pass->index));
-        return false;
-    }
-    job.stages.push_back({variants::kStageVertex, entry(kw.vertexEntry)});
-    job.stages.push_back({variants::kStageFragment, entry(kw.fragmentEntry)});
-    if (!kw.geometryEntry.empty())
-        job.stages.push_back({variants::kStageGeometry, entry(kw.geometryEntry)});
-    if (!kw.hullEntry.empty()) job.stages.push_back({variants::kStageHull, kw.hullEntry});
-    if (!kw.domainEntry.empty()) job.stages.push_back({variants::kStageDomain, kw.domainEntry});
-    return true;
-}
-
-// The preamble of one (variant, stage) without the defines the pass text cannot observe.
-std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex) {
-    const auto& [stage, entry] = job.stages[stageIndex];
-    DefineContext context{job.pass->pass->lightMode(), job.pass->keywords.target, languageOf(job),
-                          stage, job.pass->space->table().namesOf(job.keys[variant])};
-    std::string preamble = dropUnobservedDefines(makePreamble(context), *job.observed);
-    if (languageOf(job) == shaderlab::ProgramLanguage::Glsl) {
-        preamble += legacyGlslPreamble(job.text, stage);
-    }
-    return preamble;
-}
-
-// glslang's preprocessing of |job|'s text: HLSL's does not depend on the stage beyond the
-// preamble, GLSL's version and extension handling may.
-std::string preprocessKeyOf(const PassJob& job, uint32_t stage, std::string preamble) {
-    if (languageOf(job) != shaderlab::ProgramLanguage::Glsl) return preamble;
-    return std::to_string(stage) + "\n" + preamble;
-}
-
-ItemKey itemKeyOf(const std::string& preprocessKey, uint32_t stage, const std::string& entry) {
-    std::string text = preprocessKey;
-    text += '\0';
-    text += std::to_string(stage);
-    text += '\0';
-    text += entry;
-    XXH128_hash_t hash = XXH3_128bits(text.data(), text.size());
-    return {hash.low64, hash.high64};
-}
-
-StageResult preprocessStage(const PassJob& job, uint32_t stage, const std::string& entry,
-                            const std::string& preamble, const includes::SourceMap& sourceMap) {
-    PreprocessOutput pre = preprocessProgram({job.text, preamble, languageOf(job), stage, entry});
-    StageResult result;
-    result.diagnostics = parseGlslangLog(pre.log, sourceMap);
-    result.ok = pre.ok;
-    result.text = std::move(pre.text);
-    return result;
-}
-
-std::string pruneStage(const PassJob& job, const std::string& preprocessed,
-                       const std::string& entry, const BuildOptions& options) {
-    if (!options.pruneStages) return preprocessed;
-    ShaderDialect dialect = languageOf(job) == shaderlab::ProgramLanguage::Glsl
-                                ? ShaderDialect::Glsl
-                                : ShaderDialect::Hlsl;
-    return pruneToEntryPoint(preprocessed, entry, dialect).text;
-}
 
 class Builder {
 public:
@@ -410,52 +270,10 @@ void Builder::noteCacheFailure(const Status& stored) const {
 
 CompiledSource Builder::compileSource(const SourceProgram& source) const {
     const PassJob& job = mJobs[source.job];
-    const bool vertex = source.stage == variants::kStageVertex;
-    const SourceLocation origin = job.pass->pass->program->origin;
-    CompiledSource result;
-    auto fail = [&](std::string message) {
-        result.diagnostics.push_back({Severity::Error, origin, std::move(message), {}});
-        return result;
-    };
-    // Reflection needs the debug names; what ships goes without them unless
-    // BuildOptions::debugNames. The cache keeps both forms.
-    std::optional<ProgramCacheKey> key;
-    if (mCache) {
-        key = mCache->keyOf(
-            {mOptions.optimization, languageOf(job), source.stage, source.entryPoint, source.text});
-        if (std::optional<CachedProgram> hit = mCache->load(*key)) {
-            if (auto reflection = reflectSpirv(hit->spirv, hit->semantics, vertex)) {
-                result.ok = result.fromCache = true;
-                result.diagnostics = parseGlslangLog(hit->log, mSourceMap);
-                result.spirv = std::move(mOptions.debugNames ? hit->spirv : hit->stripped);
-                result.reflection = std::move(*reflection);
-                return result;
-            }
-        }
-    }
-    CompileOutput compiled =
-        compileProgram({source.text, "", languageOf(job), source.stage, source.entryPoint});
-    result.diagnostics = parseGlslangLog(compiled.log, mSourceMap);
-    if (!compiled.ok) return result;
-    SpirvResult optimized = optimizeSpirv(compiled.spirv, mOptions.optimization);
-    if (!optimized.ok) return fail("SPIR-V optimisation failed: " + optimized.message);
-    if (auto invalid = validateSpirv(optimized.spirv)) {
-        return fail("generated SPIR-V is invalid: " + *invalid);
-    }
-    std::optional<SemanticsByLocation> semantics = hlslSemantics(compiled.spirv);
-    std::optional<pack::ProgramReflection> reflection;
-    if (semantics) reflection = reflectSpirv(optimized.spirv, *semantics, vertex);
-    if (!reflection) return fail("cannot reflect the generated SPIR-V");
-    SpirvResult stripped = stripDebugInfo(optimized.spirv);
-    if (!stripped.ok) return fail("cannot strip SPIR-V debug names: " + stripped.message);
-    if (mCache) {
-        noteCacheFailure(mCache->store(
-            *key, {optimized.spirv, stripped.spirv, std::move(*semantics), compiled.log}));
-    }
-    result.ok = true;
-    result.spirv = std::move(mOptions.debugNames ? optimized.spirv : stripped.spirv);
-    result.reflection = std::move(*reflection);
-    return result;
+    return compileStageProgram({source.text, languageOf(job), source.stage, source.entryPoint,
+                                job.pass->pass->program->origin},
+                               mOptions, mCache.get(), mSourceMap,
+                               [this](const Status& stored) { noteCacheFailure(stored); });
 }
 
 bool Builder::compileSources() {
