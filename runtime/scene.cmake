@@ -26,6 +26,7 @@ varc_target_defaults(varc_scene)
 add_library(varc_reference STATIC
     src/reference/DeferredReference.cpp
     src/reference/ImageCompare.cpp
+    src/reference/LinearTexture.cpp
     src/reference/Rasterizer.cpp
     src/reference/ReferenceRenderer.cpp
     src/reference/SceneTolerance.cpp

@@ -31,17 +31,28 @@ Status readFloatProperty(const PropertyValue& value, const std::string& name, fl
     return makeError(ErrorCode::InvalidInput, "material property " + name + ": expected a number");
 }
 
-Status readTextureProperty(const PropertyValue& value, const std::string& name, glm::vec4& out) {
+Status readTextureProperty(const PropertyValue& value, const std::string& name, glm::vec4& out,
+                           std::shared_ptr<const LinearTexture>& texture) {
     const auto* v = std::get_if<std::string>(&value);
-    if (v == nullptr) return makeError(ErrorCode::InvalidInput, "material property " + name + ": expected a texture name");
+    if (v == nullptr)
+        return makeError(ErrorCode::InvalidInput,
+                         "material property " + name + ": expected a texture name");
     if (*v == "white") {
         out = glm::vec4(1.0f);
     } else if (*v == "black") {
         out = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    } else if (scene::isTextureFile(*v)) {
+        auto loaded = LinearTexture::load(*v);
+        if (!loaded) {
+            return makeError(loaded.error().code,
+                             "material property " + name + ": " + loaded.error().detail);
+        }
+        texture = std::move(*loaded);
     } else {
-        return makeError(ErrorCode::Unsupported,
-                         "material property " + name + ": the CPU reference knows the textures "
-                         "'white' and 'black', not '" + *v + "'");
+        return makeError(ErrorCode::Unsupported, "material property " + name +
+                                                     ": the CPU reference knows the textures "
+                                                     "'white', 'black' and PNG files, not '" +
+                                                     *v + "'");
     }
     return Ok{};
 }
@@ -60,7 +71,15 @@ struct ObjectDraw {
 // The interpolated inputs of one fragment.
 struct Varyings {
     glm::vec3 p, normal, vertexTerm;
+    glm::vec2 uv;  // uv0 (object mesh), before _MainTex_ST
 };
+
+// _MainTex at the fragment: the PNG filtered at TRANSFORM_TEX(uv, _MainTex), or the constant.
+glm::vec4 mainTexAt(const MaterialParams& m, const Varyings& in) {
+    if (!m.mainTexture) return m.mainTex;
+    return m.mainTexture->sample(in.uv * glm::vec2(m.mainTexST) +
+                                 glm::vec2(m.mainTexST.z, m.mainTexST.w));
+}
 
 glm::vec3 lightDirection(const PassLight& light, const glm::vec3& p) {
     return glm::normalize(glm::vec3(light.worldSpaceLightPos) - p * light.worldSpaceLightPos.w);
@@ -78,8 +97,8 @@ glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight&
     switch (m.model) {
         case ShaderModel::ForwardPbs: {
             const glm::vec3 v = glm::normalize(cameraPos - in.p);
-            const SurfaceColors surface =
-                diffuseAndSpecularFromMetallic(glm::vec3(m.mainTex) * glm::vec3(m.color), m.metallic);
+            const SurfaceColors surface = diffuseAndSpecularFromMetallic(
+                glm::vec3(mainTexAt(m, in)) * glm::vec3(m.color), m.metallic);
             const glm::vec3 e = light.color * lightAttenuation(light, textures, in.p);
             glm::vec3 indirect(0.0f);
             if (base) {
@@ -89,22 +108,24 @@ glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight&
             return {brdfPbs(surface, m.smoothness, n, v, l, e, indirect, glm::vec3(0.0f)), 1.0f};
         }
         case ShaderModel::SimpleDiffuse: {
-            const glm::vec4 albedo = m.mainTex * m.color;
+            const glm::vec4 albedo = mainTexAt(m, in) * m.color;
             const float atten = lightAttenuation(light, textures, in.p);
-            glm::vec3 c = glm::vec3(albedo) * light.color *
-                          (std::clamp(glm::dot(n, l), 0.0f, 1.0f) * atten);
+            glm::vec3 c =
+                glm::vec3(albedo) * light.color * (std::clamp(glm::dot(n, l), 0.0f, 1.0f) * atten);
             if (base) c += glm::vec3(albedo) * in.vertexTerm;
             return {c, albedo.a};
         }
         case ShaderModel::GlslBlinnPhong: {
             const glm::vec3 v = glm::normalize(cameraPos - in.p);
-            const glm::vec3 toLight = glm::vec3(light.worldSpaceLightPos) - in.p * light.worldSpaceLightPos.w;
+            const glm::vec3 toLight =
+                glm::vec3(light.worldSpaceLightPos) - in.p * light.worldSpaceLightPos.w;
             float falloff = 1.0f;
             if (light.worldSpaceLightPos.w != 0.0f) {
                 const float invRange = light.positionRange.w;
                 const float t = glm::dot(toLight, toLight) * invRange * invRange;
-                falloff = options.falloffOverride ? options.falloffOverride(t)
-                                                  : std::clamp((1.0f - t) / 0.36f, 0.0f, 1.0f) / (1.0f + 25.0f * t);
+                falloff = options.falloffOverride
+                              ? options.falloffOverride(t)
+                              : std::clamp((1.0f - t) / 0.36f, 0.0f, 1.0f) / (1.0f + 25.0f * t);
             }
             const glm::vec3 kd(m.color);
             const float ndotl = glm::dot(n, l);
@@ -115,7 +136,8 @@ glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight&
             }
             glm::vec3 c = light.color * falloff * (kd * std::max(0.0f, ndotl) + specular);
             if (base) {
-                const glm::vec3 a = options.lightProbeSh ? maxZero(scene::shadeSH9(draw.sh, n)) : ambient;
+                const glm::vec3 a =
+                    options.lightProbeSh ? maxZero(scene::shadeSH9(draw.sh, n)) : ambient;
                 c += kd * (a + in.vertexTerm);
             }
             return {c, 1.0f};
@@ -181,7 +203,8 @@ glm::vec4 accumulate(const glm::vec4& base, const std::vector<glm::vec4>& adds, 
     for (int c = 0; c < 4; ++c) dst[c] = hdr ? toHalf(base[c]) : quantize8(base[c]);
     for (const glm::vec4& add : adds) {
         for (int c = 0; c < 4; ++c) {
-            dst[c] = hdr ? toHalf(dst[c] + toHalf(add[c])) : std::min(255.0f, dst[c] + quantize8(add[c]));
+            dst[c] = hdr ? toHalf(dst[c] + toHalf(add[c]))
+                         : std::min(255.0f, dst[c] + quantize8(add[c]));
         }
     }
     return hdr ? dst : dst / 255.0f;
@@ -210,7 +233,9 @@ Result<MaterialParams> resolveMaterial(const scene::Material& material) {
         if (name == colorName) {
             status = readColorProperty(value, name, p.color);
         } else if (name == "_MainTex") {
-            status = readTextureProperty(value, name, p.mainTex);
+            status = readTextureProperty(value, name, p.mainTex, p.mainTexture);
+        } else if (name == "_MainTex_ST") {
+            status = readColorProperty(value, name, p.mainTexST);
         } else if (name == "_Metallic") {
             status = readFloatProperty(value, name, p.metallic);
         } else if (name == "_Smoothness") {
@@ -257,12 +282,14 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
             glm::vec4 c = background;
             if (s.object >= 0) {
                 const ObjectDraw& draw = draws[static_cast<size_t>(s.object)];
-                Varyings in{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f)};
+                Varyings in{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec2(0.0f)};
                 for (int k = 0; k < 3; ++k) {
-                    const uint32_t v = draw.mesh->indices[3 * s.triangle + static_cast<uint32_t>(k)];
+                    const uint32_t v =
+                        draw.mesh->indices[3 * s.triangle + static_cast<uint32_t>(k)];
                     in.p += s.bary[k] * draw.worldPos[v];
                     in.normal += s.bary[k] * draw.worldNormal[v];
                     in.vertexTerm += s.bary[k] * draw.vertexTerm[v];
+                    in.uv += s.bary[k] * draw.mesh->uvs[v];
                 }
                 const glm::vec4 base = shadePass(draw, in, draw.base, true, scene.camera.position,
                                                  scene.ambient, textures, options);

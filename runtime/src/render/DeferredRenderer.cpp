@@ -182,6 +182,8 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
             frameData.materialTextures.emplace_back();
         ShaderValues& material = frameData.values.emplace_back(materialValues(
             withPropertyDefaults(object.material, shader->properties()), textureNames));
+        if (Status loaded = s.loadTextureFiles(textureNames); !loaded)
+            return makeError(loaded.error().code, what + ": " + loaded.error().detail);
         if (!material.find("_StencilNonBackground"))
             material.set("_StencilNonBackground", kStencilNonBackground);
         pack::PackRenderState state = forObjectTransform(
@@ -195,11 +197,11 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
         draw.pipeline = *pipeline;
         draw.mesh = &s.meshes.at(object.mesh);
         draw.layers = {nullptr, &objectLayer, &material, &camera};
-        draw.textures = [&builtin, &textureNames](
+        draw.textures = [&s, &textureNames](
                             std::string_view name,
                             pack::ResourceDim dim) -> std::optional<TextureBinding> {
             auto it = textureNames.find(std::string(name));
-            return builtin.named(it == textureNames.end() ? "white" : it->second, dim);
+            return s.materialTexture(it == textureNames.end() ? "white" : it->second, dim);
         };
         frameData.gbufferDraws.push_back(std::move(draw));
         frame.variants.push_back(variant->describe());

@@ -61,6 +61,8 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
         std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
         const ShaderValues& material = values.emplace_back(materialValues(
             withPropertyDefaults(object.material, shader->properties()), textureNames));
+        if (Status loaded = s.loadTextureFiles(textureNames); !loaded)
+            return makeError(loaded.error().code, what + ": " + loaded.error().detail);
 
         auto addDraw = [&](const char* lightMode, const scene::Light* light) -> Status {
             std::optional<PassView> pass = shader->pass(std::string_view(lightMode));
@@ -92,14 +94,14 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
             draw.layers = {&lightValues, &objectValues_, &material, &camera};
             scene::LightType type = light ? light->type : scene::LightType::Directional;
             bool cookie = light && light->cookie != "none";
-            draw.textures = [&builtin, &textureNames, type, cookie](
+            draw.textures = [&s, &builtin, &textureNames, type, cookie](
                                 std::string_view name,
                                 pack::ResourceDim dim) -> std::optional<TextureBinding> {
                 if (auto texture = builtin.lightTexture(name, dim, type, cookie, false))
                     return texture;
                 auto it = textureNames.find(std::string(name));
                 // Unset textures default to white, as Unity's Properties defaults mostly do.
-                return builtin.named(it == textureNames.end() ? "white" : it->second, dim);
+                return s.materialTexture(it == textureNames.end() ? "white" : it->second, dim);
             };
             draws.push_back(std::move(draw));
             frame.variants.push_back(variant->describe());

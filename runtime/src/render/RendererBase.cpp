@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "render/RendererBase.h"
 
+#include "varc/runtime/vulkan/Png.h"
 #include "varc/scene/Mesh.h"
 
 namespace varc::runtime {
@@ -88,6 +89,32 @@ Status RendererBase::drawFrame(const RenderTarget& target, const std::vector<Dra
     if (!image) return image.error();
     frame.image = std::move(*image);
     return Ok{};
+}
+
+Status RendererBase::loadTextureFiles(const std::map<std::string, std::string>& textureNames) {
+    for (const auto& [property, name] : textureNames) {
+        if (!scene::isTextureFile(name) || mTextureFiles.count(name)) continue;
+        auto image = readPng(name);
+        if (!image) {
+            return makeError(image.error().code,
+                             "texture " + property + " = '" + name + "': " + image.error().detail);
+        }
+        TextureOptions options;
+        options.srgb = true;  // colour textures hold sRGB-encoded values, as Unity imports them
+        options.name = name;
+        auto texture = Texture::create2D(*context, *image, options);
+        if (!texture) return texture.error();
+        mTextureFiles.emplace(name, std::move(*texture));
+    }
+    return Ok{};
+}
+
+std::optional<TextureBinding> RendererBase::materialTexture(const std::string& name,
+                                                            pack::ResourceDim dim) const {
+    if (auto builtin = textures->named(name, dim)) return builtin;
+    auto file = mTextureFiles.find(name);
+    if (file == mTextureFiles.end() || dim != pack::ResourceDim::Dim2D) return std::nullopt;
+    return TextureBinding{file->second.view(), textures->repeatSampler()};
 }
 
 }  // namespace varc::runtime

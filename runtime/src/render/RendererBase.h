@@ -20,6 +20,7 @@
 #include "varc/runtime/render/ForwardRenderer.h"
 #include "varc/runtime/render/VariantPipeline.h"
 #include "varc/runtime/vulkan/RenderTarget.h"
+#include "varc/runtime/vulkan/Texture.h"
 #include "varc/scene/Scene.h"
 #include "varc/variants/LightKeywords.h"
 
@@ -60,6 +61,15 @@ struct RendererBase {
     Status drawFrame(const RenderTarget& target, const std::vector<Draw>& draws,
                      RenderedFrame& frame);
 
+    // Loads each PNG file among |textureNames| (scene::isTextureFile) once per renderer, as an
+    // sRGB texture without mipmaps, sampled linear with repeat. Errors name the file.
+    Status loadTextureFiles(const std::map<std::string, std::string>& textureNames);
+
+    // The texture a material property names: a built-in texture (BuiltinTextures::named) or a
+    // PNG file loaded by loadTextureFiles (2D only); nullopt for anything else.
+    std::optional<TextureBinding> materialTexture(const std::string& name,
+                                                  pack::ResourceDim dim) const;
+
 private:
     struct CachedPipeline {
         const Pack* pack;
@@ -68,7 +78,8 @@ private:
         uint32_t targetKind;
         VariantPipeline pipeline;
     };
-    std::deque<CachedPipeline> mPipelines;  // a deque: returned pointers stay valid
+    std::deque<CachedPipeline> mPipelines;         // a deque: returned pointers stay valid
+    std::map<std::string, Texture> mTextureFiles;  // by path
 };
 
 }  // namespace varc::runtime

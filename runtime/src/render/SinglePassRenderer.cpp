@@ -220,6 +220,11 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
         std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
         const ShaderValues& material = values.emplace_back(materialValues(
             withPropertyDefaults(first.material, group.propertyDefaults), textureNames));
+        if (Status loaded = s.loadTextureFiles(textureNames); !loaded) {
+            return makeError(
+                loaded.error().code,
+                "object " + std::to_string(group.objects.front()) + ": " + loaded.error().detail);
+        }
         pack::PackRenderState state =
             forObjectTransform(resolveRenderState(group.pass->renderState(), material),
                                first.transform.localToWorld());
@@ -235,11 +240,11 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
                                                                     : singleObjectValues(first));
         const ShaderValues& lights = values.emplace_back(drawLightValues(group.lights));
         draw.layers = {&objects, &lights, &material, &lightBuffer, &camera};
-        draw.textures = [&builtin, &textureNames](
+        draw.textures = [&s, &textureNames](
                             std::string_view name,
                             pack::ResourceDim dim) -> std::optional<TextureBinding> {
             auto it = textureNames.find(std::string(name));
-            return builtin.named(it == textureNames.end() ? "white" : it->second, dim);
+            return s.materialTexture(it == textureNames.end() ? "white" : it->second, dim);
         };
         draws.push_back(std::move(draw));
         frame.variants.push_back(variant->describe());

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // SceneParser: the scene JSON format of issue #5 §5 → Scene, with JSON-pointer error messages.
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <utility>
-
-#include <nlohmann/json.hpp>
 
 #include "varc/scene/Scene.h"
 
@@ -21,10 +21,12 @@ public:
     explicit Reader(std::string path) : mPath(std::move(path)) {}
 
     bool fail(const std::string& pointer, const std::string& message) {
-        if (mError.empty()) mError = mPath + ": " + (pointer.empty() ? "/" : pointer) + ": " + message;
+        if (mError.empty())
+            mError = mPath + ": " + (pointer.empty() ? "/" : pointer) + ": " + message;
         return false;
     }
     const std::string& error() const { return mError; }
+    const std::string& path() const { return mPath; }
 
     // Fails when |value| (an object) has a key outside |allowed|.
     bool onlyKeys(const json& value, const std::string& pointer,
@@ -35,7 +37,8 @@ public:
             for (const char* name : allowed) known = known || key == name;
             if (!known) {
                 std::string list;
-                for (const char* name : allowed) list += (list.empty() ? "" : ", ") + std::string(name);
+                for (const char* name : allowed)
+                    list += (list.empty() ? "" : ", ") + std::string(name);
                 return fail(pointer + "/" + key, "unknown key (expected one of " + list + ")");
             }
         }
@@ -71,7 +74,8 @@ public:
     // [r, g, b] (alpha 1) or [r, g, b, a].
     bool readColor(const json& value, const std::string& pointer, glm::vec4& out) {
         if (!value.is_array() || value.size() < 3 || value.size() > 4) {
-            return fail(pointer, "expected a colour [r, g, b] or [r, g, b, a], got " + value.dump());
+            return fail(pointer,
+                        "expected a colour [r, g, b] or [r, g, b, a], got " + value.dump());
         }
         out = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
         for (size_t i = 0; i < value.size(); ++i) {
@@ -83,7 +87,8 @@ public:
     }
 
     bool readBool(const json& value, const std::string& pointer, bool& out) {
-        if (!value.is_boolean()) return fail(pointer, "expected true or false, got " + value.dump());
+        if (!value.is_boolean())
+            return fail(pointer, "expected true or false, got " + value.dump());
         out = value.get<bool>();
         return true;
     }
@@ -113,7 +118,8 @@ public:
     bool readEnum(const json& value, const std::string& pointer,
                   std::initializer_list<std::pair<const char*, E>> options, E& out) {
         std::string list;
-        for (const auto& option : options) list += (list.empty() ? "" : ", ") + std::string(option.first);
+        for (const auto& option : options)
+            list += (list.empty() ? "" : ", ") + std::string(option.first);
         if (!value.is_string()) {
             return fail(pointer, "expected one of " + list + ", got " + value.dump());
         }
@@ -135,7 +141,8 @@ private:
 };
 
 bool readTransform(Reader& r, const json& value, const std::string& pointer, Transform& out) {
-    if (value.contains("position") && !r.readVec3(value["position"], pointer + "/position", out.position)) {
+    if (value.contains("position") &&
+        !r.readVec3(value["position"], pointer + "/position", out.position)) {
         return false;
     }
     if (value.contains("rotation") &&
@@ -149,18 +156,23 @@ bool readTransform(Reader& r, const json& value, const std::string& pointer, Tra
 }
 
 bool readCamera(Reader& r, const json& value, const std::string& p, Camera& c) {
-    if (!r.onlyKeys(value, p, {"position", "target", "fov_y", "near", "far", "width", "height",
-                               "hdr", "path", "background"})) {
+    if (!r.onlyKeys(value, p,
+                    {"position", "target", "fov_y", "near", "far", "width", "height", "hdr", "path",
+                     "background"})) {
         return false;
     }
-    if (value.contains("position") && !r.readVec3(value["position"], p + "/position", c.position)) return false;
-    if (value.contains("target") && !r.readVec3(value["target"], p + "/target", c.target)) return false;
+    if (value.contains("position") && !r.readVec3(value["position"], p + "/position", c.position))
+        return false;
+    if (value.contains("target") && !r.readVec3(value["target"], p + "/target", c.target))
+        return false;
     if (value.contains("fov_y")) {
         if (!r.readPositive(value["fov_y"], p + "/fov_y", c.fovY)) return false;
         if (c.fovY >= 180.0f) return r.fail(p + "/fov_y", "expected a number < 180");
     }
-    if (value.contains("near") && !r.readPositive(value["near"], p + "/near", c.nearPlane)) return false;
-    if (value.contains("far") && !r.readPositive(value["far"], p + "/far", c.farPlane)) return false;
+    if (value.contains("near") && !r.readPositive(value["near"], p + "/near", c.nearPlane))
+        return false;
+    if (value.contains("far") && !r.readPositive(value["far"], p + "/far", c.farPlane))
+        return false;
     if (c.farPlane <= c.nearPlane) return r.fail(p + "/far", "expected far > near");
     int64_t size = 0;
     if (value.contains("width")) {
@@ -172,12 +184,11 @@ bool readCamera(Reader& r, const json& value, const std::string& p, Camera& c) {
         c.height = static_cast<uint32_t>(size);
     }
     if (value.contains("hdr") && !r.readBool(value["hdr"], p + "/hdr", c.hdr)) return false;
-    if (value.contains("path") &&
-        !r.readEnum<RenderPath>(value["path"], p + "/path",
-                                {{"forward", RenderPath::Forward},
-                                 {"deferred", RenderPath::Deferred},
-                                 {"single_pass", RenderPath::SinglePass}},
-                                c.path)) {
+    if (value.contains("path") && !r.readEnum<RenderPath>(value["path"], p + "/path",
+                                                          {{"forward", RenderPath::Forward},
+                                                           {"deferred", RenderPath::Deferred},
+                                                           {"single_pass", RenderPath::SinglePass}},
+                                                          c.path)) {
         return false;
     }
     if (value.contains("background") &&
@@ -198,25 +209,33 @@ bool readProperty(Reader& r, const json& value, const std::string& p, PropertyVa
         return true;
     }
     if (value.is_string()) {
-        out = value.get<std::string>();
+        std::string text = value.get<std::string>();
+        // A texture file is named relative to the scene file; keep it usable from anywhere.
+        if (isTextureFile(text) && std::filesystem::path(text).is_relative()) {
+            text =
+                (std::filesystem::path(r.path()).parent_path() / text).lexically_normal().string();
+        }
+        out = std::move(text);
         return true;
     }
     if (value.is_array() && !value.empty() && value.size() <= 4) {
         glm::vec4 v(0.0f);
         if (value.size() == 3) v.w = 1.0f;
         for (size_t i = 0; i < value.size(); ++i) {
-            if (!r.readFloat(value[i], p + "/" + std::to_string(i), v[static_cast<int>(i)])) return false;
+            if (!r.readFloat(value[i], p + "/" + std::to_string(i), v[static_cast<int>(i)]))
+                return false;
         }
         out = v;
         return true;
     }
-    return r.fail(p, "expected a number, an array of 1 to 4 numbers or a texture name, got " +
-                         value.dump());
+    return r.fail(
+        p, "expected a number, an array of 1 to 4 numbers or a texture name, got " + value.dump());
 }
 
 bool readMaterial(Reader& r, const json& value, const std::string& p, Material& m) {
     if (!r.onlyKeys(value, p, {"shader", "properties"})) return false;
-    if (value.contains("shader") && !r.readString(value["shader"], p + "/shader", m.shader)) return false;
+    if (value.contains("shader") && !r.readString(value["shader"], p + "/shader", m.shader))
+        return false;
     if (!value.contains("properties")) return true;
     const json& props = value["properties"];
     if (!props.is_object()) return r.fail(p + "/properties", "expected an object");
@@ -229,22 +248,25 @@ bool readMaterial(Reader& r, const json& value, const std::string& p, Material& 
 }
 
 bool readObject(Reader& r, const json& value, const std::string& p, Object& o) {
-    if (!r.onlyKeys(value, p, {"name", "mesh", "position", "rotation", "scale", "material"})) return false;
+    if (!r.onlyKeys(value, p, {"name", "mesh", "position", "rotation", "scale", "material"}))
+        return false;
     if (value.contains("name") && !r.readString(value["name"], p + "/name", o.name)) return false;
     if (!value.contains("mesh")) return r.fail(p, "missing key 'mesh'");
-    if (!r.readEnum<MeshKind>(value["mesh"], p + "/mesh",
-                              {{"sphere", MeshKind::Sphere}, {"cube", MeshKind::Cube},
-                               {"plane", MeshKind::Plane}},
-                              o.mesh)) {
+    if (!r.readEnum<MeshKind>(
+            value["mesh"], p + "/mesh",
+            {{"sphere", MeshKind::Sphere}, {"cube", MeshKind::Cube}, {"plane", MeshKind::Plane}},
+            o.mesh)) {
         return false;
     }
     if (!readTransform(r, value, p, o.transform)) return false;
-    return !value.contains("material") || readMaterial(r, value["material"], p + "/material", o.material);
+    return !value.contains("material") ||
+           readMaterial(r, value["material"], p + "/material", o.material);
 }
 
 bool readLight(Reader& r, const json& value, const std::string& p, Light& l) {
-    if (!r.onlyKeys(value, p, {"type", "color", "intensity", "position", "rotation", "range",
-                               "spot_angle", "cookie", "cookie_size", "render_mode"})) {
+    if (!r.onlyKeys(value, p,
+                    {"type", "color", "intensity", "position", "rotation", "range", "spot_angle",
+                     "cookie", "cookie_size", "render_mode"})) {
         return false;
     }
     if (!value.contains("type")) return r.fail(p, "missing key 'type'");
@@ -265,12 +287,14 @@ bool readLight(Reader& r, const json& value, const std::string& p, Light& l) {
         if (l.intensity < 0.0f) return r.fail(p + "/intensity", "expected a number >= 0");
     }
     if (!readTransform(r, value, p, l.transform)) return false;
-    if (value.contains("range") && !r.readPositive(value["range"], p + "/range", l.range)) return false;
+    if (value.contains("range") && !r.readPositive(value["range"], p + "/range", l.range))
+        return false;
     if (value.contains("spot_angle")) {
         if (!r.readPositive(value["spot_angle"], p + "/spot_angle", l.spotAngle)) return false;
         if (l.spotAngle >= 180.0f) return r.fail(p + "/spot_angle", "expected a number < 180");
     }
-    if (value.contains("cookie") && !r.readString(value["cookie"], p + "/cookie", l.cookie)) return false;
+    if (value.contains("cookie") && !r.readString(value["cookie"], p + "/cookie", l.cookie))
+        return false;
     if (value.contains("cookie_size") &&
         !r.readPositive(value["cookie_size"], p + "/cookie_size", l.cookieSize)) {
         return false;
@@ -285,7 +309,8 @@ bool readLight(Reader& r, const json& value, const std::string& p, Light& l) {
 
 bool readScene(Reader& r, const json& root, Scene& scene) {
     if (!r.onlyKeys(root, "", {"camera", "ambient", "quality", "objects", "lights"})) return false;
-    if (root.contains("camera") && !readCamera(r, root["camera"], "/camera", scene.camera)) return false;
+    if (root.contains("camera") && !readCamera(r, root["camera"], "/camera", scene.camera))
+        return false;
     if (root.contains("ambient")) {
         const json& a = root["ambient"];
         if (!r.onlyKeys(a, "/ambient", {"color"})) return false;
@@ -300,7 +325,8 @@ bool readScene(Reader& r, const json& root, Scene& scene) {
         if (!r.onlyKeys(q, "/quality", {"pixel_light_count"})) return false;
         int64_t count = 0;
         if (q.contains("pixel_light_count")) {
-            if (!r.readInt(q["pixel_light_count"], "/quality/pixel_light_count", 0, 64, count)) return false;
+            if (!r.readInt(q["pixel_light_count"], "/quality/pixel_light_count", 0, 64, count))
+                return false;
             scene.pixelLightCount = static_cast<int>(count);
         }
     }
@@ -312,7 +338,8 @@ bool readScene(Reader& r, const json& root, Scene& scene) {
     if (root.contains("objects")) {
         for (size_t i = 0; i < root["objects"].size(); ++i) {
             Object o;
-            if (!readObject(r, root["objects"][i], "/objects/" + std::to_string(i), o)) return false;
+            if (!readObject(r, root["objects"][i], "/objects/" + std::to_string(i), o))
+                return false;
             scene.objects.push_back(std::move(o));
         }
     }
@@ -348,6 +375,10 @@ Result<Scene> loadScene(const std::string& path) {
     text << in.rdbuf();
     if (in.bad()) return makeError(ErrorCode::IoError, path + ": cannot read the scene file");
     return parseScene(text.str(), path);
+}
+
+bool isTextureFile(std::string_view name) {
+    return name.size() > 4 && name.substr(name.size() - 4) == ".png";
 }
 
 }  // namespace varc::scene

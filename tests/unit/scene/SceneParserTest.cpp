@@ -27,7 +27,8 @@ TEST(SceneParser, ReadsTheIssueExample) {
         "lights": [{"type": "spot", "color": [1, 0.9, 0.8], "intensity": 2, "position": [0, 3, 0],
                     "rotation": [90, 0, 0], "range": 7, "spot_angle": 40, "cookie": "default",
                     "render_mode": "important"}]
-    })", "a.json");
+    })",
+                            "a.json");
     ASSERT_TRUE(scene.ok()) << scene.error().detail;
     EXPECT_EQ(scene->camera.position, glm::vec3(0, 1, -4));
     EXPECT_EQ(scene->camera.fovY, 50.0f);
@@ -55,6 +56,19 @@ TEST(SceneParser, ReadsTheIssueExample) {
     EXPECT_EQ(l.renderMode, LightRenderMode::Important);
 }
 
+TEST(SceneParser, TextureFilesAreNamedRelativeToTheSceneFile) {
+    auto scene = parseScene(R"({"objects":[{"mesh":"sphere","material":{"properties":{
+        "_MainTex":"textures/wood.png","_BumpMap":"bump","_DetailTex":"/abs/d.png"}}}]})",
+                            "scenes/forward/a.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().detail;
+    const auto& properties = scene->objects[0].material.properties;
+    EXPECT_EQ(std::get<std::string>(properties.at("_MainTex")), "scenes/forward/textures/wood.png");
+    EXPECT_EQ(std::get<std::string>(properties.at("_BumpMap")), "bump");
+    EXPECT_EQ(std::get<std::string>(properties.at("_DetailTex")), "/abs/d.png");
+    EXPECT_TRUE(isTextureFile("a.png"));
+    EXPECT_FALSE(isTextureFile("white"));
+}
+
 TEST(SceneParser, EmptyObjectGivesDefaults) {
     auto scene = parseScene("{}", "a.json");
     ASSERT_TRUE(scene.ok());
@@ -65,27 +79,34 @@ TEST(SceneParser, EmptyObjectGivesDefaults) {
 }
 
 TEST(SceneParser, ColourWithThreeComponentsGetsAlphaOne) {
-    auto scene = parseScene(R"({"objects":[{"mesh":"sphere","material":{"properties":{"_Color":[0.5,0.5,0.5]}}}]})", "a.json");
+    auto scene = parseScene(
+        R"({"objects":[{"mesh":"sphere","material":{"properties":{"_Color":[0.5,0.5,0.5]}}}]})",
+        "a.json");
     ASSERT_TRUE(scene.ok());
     EXPECT_EQ(std::get<glm::vec4>(scene->objects[0].material.properties.at("_Color")),
               glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
 }
 
 TEST(SceneParser, BadEnumNamesPointerAndChoices) {
-    EXPECT_EQ(errorOf(R"({"lights":[{"type":"point"},{"type":"spot"},{"type":"pointy"}]})"),
-              "scenes/a.json: /lights/2/type: expected one of directional, point, spot, got 'pointy'");
+    EXPECT_EQ(
+        errorOf(R"({"lights":[{"type":"point"},{"type":"spot"},{"type":"pointy"}]})"),
+        "scenes/a.json: /lights/2/type: expected one of directional, point, spot, got 'pointy'");
 }
 
 TEST(SceneParser, UnknownKeysAreErrors) {
-    EXPECT_EQ(errorOf(R"({"camera":{"fov":60}})").rfind("scenes/a.json: /camera/fov: unknown key", 0), 0u);
+    EXPECT_EQ(
+        errorOf(R"({"camera":{"fov":60}})").rfind("scenes/a.json: /camera/fov: unknown key", 0),
+        0u);
     EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","colour":[1,1,1]}]})")
-                  .rfind("scenes/a.json: /objects/0/colour: unknown key", 0), 0u);
+                  .rfind("scenes/a.json: /objects/0/colour: unknown key", 0),
+              0u);
     EXPECT_EQ(errorOf(R"({"sky":1})").rfind("scenes/a.json: /sky: unknown key", 0), 0u);
 }
 
 TEST(SceneParser, MissingRequiredKeys) {
     EXPECT_EQ(errorOf(R"({"objects":[{}]})"), "scenes/a.json: /objects/0: missing key 'mesh'");
-    EXPECT_EQ(errorOf(R"({"lights":[{"color":[1,1,1]}]})"), "scenes/a.json: /lights/0: missing key 'type'");
+    EXPECT_EQ(errorOf(R"({"lights":[{"color":[1,1,1]}]})"),
+              "scenes/a.json: /lights/0: missing key 'type'");
 }
 
 TEST(SceneParser, WrongTypesAndRanges) {
@@ -95,14 +116,16 @@ TEST(SceneParser, WrongTypesAndRanges) {
               "scenes/a.json: /camera/position/1: expected a number, got string");
     EXPECT_EQ(errorOf(R"({"camera":{"width":0}})"),
               "scenes/a.json: /camera/width: expected an integer in [1, 16384], got 0");
-    EXPECT_EQ(errorOf(R"({"camera":{"near":1,"far":0.5}})"), "scenes/a.json: /camera/far: expected far > near");
+    EXPECT_EQ(errorOf(R"({"camera":{"near":1,"far":0.5}})"),
+              "scenes/a.json: /camera/far: expected far > near");
     EXPECT_EQ(errorOf(R"({"lights":[{"type":"point","range":-1}]})"),
               "scenes/a.json: /lights/0/range: expected a number > 0, got -1");
     EXPECT_EQ(errorOf(R"({"quality":{"pixel_light_count":1.5}})"),
               "scenes/a.json: /quality/pixel_light_count: expected an integer, got 1.5");
     EXPECT_EQ(errorOf(R"({"objects":{}})"), "scenes/a.json: /objects: expected an array");
     EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","material":{"properties":{"_X":[]}}}]})")
-                  .rfind("scenes/a.json: /objects/0/material/properties/_X: expected a number", 0), 0u);
+                  .rfind("scenes/a.json: /objects/0/material/properties/_X: expected a number", 0),
+              0u);
 }
 
 TEST(SceneParser, SyntaxErrorNamesPath) {
@@ -117,9 +140,11 @@ TEST(SceneParser, LoadSceneReportsUnreadableFile) {
 }
 
 TEST(SceneParser, ShippedScenesParse) {
-    for (const char* name : {"directional", "point", "spot", "point-cookie", "directional-cookie",
-                             "vertex-lights", "many-lights", "simple-diffuse", "glsl-vertex-lights"}) {
-        const std::string path = std::string(VARC_SOURCE_DIR) + "/tests/scenes/forward/" + name + ".json";
+    for (const char* name :
+         {"directional", "point", "spot", "point-cookie", "directional-cookie", "vertex-lights",
+          "many-lights", "simple-diffuse", "glsl-vertex-lights"}) {
+        const std::string path =
+            std::string(VARC_SOURCE_DIR) + "/tests/scenes/forward/" + name + ".json";
         auto scene = loadScene(path);
         EXPECT_TRUE(scene.ok()) << scene.error().detail;
     }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "varc/core/Result.h"
+#include "varc/reference/LinearTexture.h"
 #include "varc/reference/Rasterizer.h"
 #include "varc/runtime/vulkan/Image.h"
 #include "varc/scene/ForwardLights.h"
@@ -23,15 +24,18 @@ enum class ShaderModel {
 };
 struct MaterialParams {
     ShaderModel model = ShaderModel::ForwardPbs;
-    glm::vec4 color{1.0f};      // _Tint or _Color
-    glm::vec4 mainTex{1.0f};    // the constant value of _MainTex ("white" or "black")
+    glm::vec4 color{1.0f};    // _Tint or _Color
+    glm::vec4 mainTex{1.0f};  // the constant value of _MainTex ("white" or "black")
+    std::shared_ptr<const LinearTexture> mainTexture;  // _MainTex as a PNG file, else null
+    glm::vec4 mainTexST{1.0f, 1.0f, 0.0f, 0.0f};       // _MainTex_ST (tiling xy, offset zw)
     float metallic = 0.0f;      // _Metallic, as given (no [Gamma] conversion)
     float smoothness = 0.5f;    // _Smoothness
     glm::vec3 specColor{1.0f};  // _SpecColor (GLSL)
     float shininess = 32.0f;    // _Shininess (GLSL)
 };
-// The parameters of |material| with each shader's Properties defaults. Unsupported for other
-// shaders or texture names; InvalidInput for a property of the wrong kind.
+// The parameters of |material| with each shader's Properties defaults. _MainTex may be "white",
+// "black" or a PNG file (loaded here). Unsupported for other shaders or texture names;
+// InvalidInput for a property of the wrong kind; IoError/InvalidInput for an unreadable PNG.
 Result<MaterialParams> resolveMaterial(const scene::Material& material);
 
 struct ReferenceOptions {
@@ -57,6 +61,7 @@ struct ReferenceImage {
 // [0, 1] and rounded to 8 bits, blended One One with saturation. HDR models
 // R16G16B16A16_SFLOAT: each pass output and each sum is rounded to half precision.
 // Errors: Unsupported for another path, shader, or a cookie that is not "none"/"default".
-Result<ReferenceImage> renderReference(const scene::Scene& scene, const ReferenceOptions& options = {});
+Result<ReferenceImage> renderReference(const scene::Scene& scene,
+                                       const ReferenceOptions& options = {});
 
 }  // namespace varc::reference

@@ -45,7 +45,8 @@ struct Camera {
     glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};  // linear clear colour
 };
 
-// A material property: a float, a vector/colour, or a texture name ("white", "black", ...).
+// A material property: a float, a vector/colour, or a texture: a built-in name ("white",
+// "black", "gray", "bump", "red") or a PNG file ("textures/wood.png", sRGB colour).
 using PropertyValue = std::variant<float, glm::vec4, std::string>;
 
 struct Material {
@@ -89,7 +90,8 @@ struct Scene {
 // structs above) except each object's "mesh" and each light's "type"; unknown keys are errors.
 // Besides the keys: camera "background" [r,g,b(,a)], light "cookie_size", object
 // "name". Colours are [r,g,b] or [r,g,b,a]; material properties are numbers, arrays of 1-4
-// numbers (padded with 0, alpha 1 for 3) or texture-name strings. Every error message starts
+// numbers (padded with 0, alpha 1 for 3) or texture strings (a relative PNG path is resolved
+// against the scene file's folder). Every error message starts
 // with "<path>: " and names the JSON pointer, e.g.
 //   "scenes/a.json: /lights/2/type: expected one of directional, point, spot, got 'pointy'".
 // Never throws; errors are ErrorCode::InvalidInput.
@@ -98,6 +100,10 @@ Result<Scene> parseScene(std::string_view json, const std::string& path);
 
 // Reads |path| and parses it with parseScene. ErrorCode::IoError when unreadable.
 Result<Scene> loadScene(const std::string& path);
+
+// Whether a texture property names a PNG file ("textures/wood.png") rather than a built-in
+// texture ("white"). The parser makes such paths relative to the scene file's folder.
+bool isTextureFile(std::string_view name);
 
 const char* toString(MeshKind kind);
 const char* toString(LightType type);

@@ -19,10 +19,11 @@ public:
     // "white", "black", "bump", "gray" ("grey"), "red" (2D; Unity's default texture names) and
     // "white" (cube), linear-repeat sampled.
     std::optional<TextureBinding> named(std::string_view name, pack::ResourceDim dim) const;
-    TextureBinding falloff() const;            // 1024 x 1, linear, clamp
-    TextureBinding spotCookie() const;         // linear, clamp
-    TextureBinding directionalCookie() const;  // linear, repeat
-    TextureBinding pointCookie() const;        // cube, linear, clamp
+    VkSampler repeatSampler() const { return mRepeat.get(); }  // linear, repeat
+    TextureBinding falloff() const;                            // 1024 x 1, linear, clamp
+    TextureBinding spotCookie() const;                         // linear, clamp
+    TextureBinding directionalCookie() const;                  // linear, repeat
+    TextureBinding pointCookie() const;                        // cube, linear, clamp
 
     // `_LightTexture0` / `_LightTextureB0` for a light (SHADER_ABI.md §6); nullopt for any other
     // name. Forward POINT reads its falloff from _LightTexture0; the deferred light pass reads
