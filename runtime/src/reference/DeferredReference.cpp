@@ -37,7 +37,7 @@ Status readProperty(const scene::PropertyValue& value, const std::string& name, 
 struct ObjectSurface {
     GBufferMaterial material;
     std::vector<glm::vec3> worldPos, worldNormal;
-    const scene::Mesh* mesh = nullptr;
+    const scene::Mesh* mesh = nullptr;  // its uvs are the G-buffer pass's uv0
     std::array<glm::vec4, 7> sh{};
 };
 
@@ -59,11 +59,15 @@ Result<ObjectSurface> prepareObject(const scene::Scene& scene, const scene::Obje
 
 // LIGHTING.md §8.3, G-buffer pass, with the attachments' quantisation.
 GBufferTexel gbufferTexel(const ObjectSurface& surface, const glm::vec3& interpolatedNormal,
-                          bool hdr) {
+                          const glm::vec2& uv, bool hdr) {
     const GBufferMaterial& m = surface.material;
     const glm::vec3 n = glm::normalize(interpolatedNormal);
+    const glm::vec4 mainTex = m.mainTexture
+                                  ? m.mainTexture->sample(uv * glm::vec2(m.mainTexST) +
+                                                          glm::vec2(m.mainTexST.z, m.mainTexST.w))
+                                  : m.mainTex;
     const SurfaceColors colors =
-        diffuseAndSpecularFromMetallic(glm::vec3(m.mainTex) * glm::vec3(m.color), m.metallic);
+        diffuseAndSpecularFromMetallic(glm::vec3(mainTex) * glm::vec3(m.color), m.metallic);
     GBufferTexel texel;
     for (int c = 0; c < 3; ++c) {
         texel.diffuse[c] = srgb8RoundTrip(colors.diffuse[c]);
@@ -173,13 +177,9 @@ Result<GBufferMaterial> resolveGBufferMaterial(const scene::Material& material) 
             status = readProperty(value, name, e);
             m.emission = glm::vec3(e);
         } else if (name == "_MainTex") {
-            const auto* texture = std::get_if<std::string>(&value);
-            if (!texture || (*texture != "white" && *texture != "black")) {
-                return makeError(ErrorCode::Unsupported,
-                                 "material property _MainTex: the CPU reference knows "
-                                 "the textures 'white' and 'black'");
-            }
-            m.mainTex = *texture == "white" ? glm::vec4(1.0f) : glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+            status = readColorTexture(value, name, m.mainTex, m.mainTexture);
+        } else if (name == "_MainTex_ST") {
+            status = readProperty(value, name, m.mainTexST);
         }
         if (!status) return status.error();
     }
@@ -219,12 +219,15 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
             if (s.object >= 0) {
                 const ObjectSurface& surface = surfaces[static_cast<size_t>(s.object)];
                 glm::vec3 p(0.0f), normal(0.0f);
+                glm::vec2 uv(0.0f);
                 for (uint32_t k = 0; k < 3; ++k) {
                     const uint32_t v = surface.mesh->indices[3 * s.triangle + k];
-                    p += s.bary[static_cast<glm::length_t>(k)] * surface.worldPos[v];
-                    normal += s.bary[static_cast<glm::length_t>(k)] * surface.worldNormal[v];
+                    const float weight = s.bary[static_cast<glm::length_t>(k)];
+                    p += weight * surface.worldPos[v];
+                    normal += weight * surface.worldNormal[v];
+                    uv += weight * surface.mesh->uvs[v];
                 }
-                const GBufferTexel texel = gbufferTexel(surface, normal, hdr);
+                const GBufferTexel texel = gbufferTexel(surface, normal, uv, hdr);
                 c = glm::vec4(shadePixel(scene, textures, texel, p), hdr ? 1.0f : background.a);
             }
             out.color.setPixelFloat(x, y, {c.r, c.g, c.b, c.a});

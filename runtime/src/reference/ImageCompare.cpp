@@ -11,9 +11,12 @@ namespace {
 
 const char* className(PixelClass c) {
     switch (c) {
-        case PixelClass::Background: return "background";
-        case PixelClass::Edge: return "edge";
-        case PixelClass::Interior: return "interior";
+        case PixelClass::Background:
+            return "background";
+        case PixelClass::Edge:
+            return "edge";
+        case PixelClass::Interior:
+            return "interior";
     }
     return "?";
 }
@@ -42,7 +45,9 @@ std::string describe(const PixelFailure& f) {
     return s.str();
 }
 
-uint8_t diffLevel(float lsb) { return static_cast<uint8_t>(std::min(255.0f, std::abs(lsb) * 32.0f)); }
+uint8_t diffLevel(float lsb) {
+    return static_cast<uint8_t>(std::min(255.0f, std::abs(lsb) * 32.0f));
+}
 
 }  // namespace
 
@@ -50,7 +55,8 @@ CompareResult compareImages(const runtime::Image& rendered, const runtime::Image
                             const Classification& classes, const Tolerance& tolerance) {
     CompareResult r;
     const uint32_t w = reference.width(), h = reference.height();
-    if (rendered.width() != w || rendered.height() != h || classes.width != w || classes.height != h) {
+    if (rendered.width() != w || rendered.height() != h || classes.width != w ||
+        classes.height != h) {
         r.message = "FAIL: image sizes differ (rendered " + std::to_string(rendered.width()) + "x" +
                     std::to_string(rendered.height()) + ", reference " + std::to_string(w) + "x" +
                     std::to_string(h) + ")";
@@ -74,9 +80,10 @@ CompareResult compareImages(const runtime::Image& rendered, const runtime::Image
                     for (int dx = -1; dx <= 1; ++dx) {
                         const int64_t nx = int64_t{x} + dx, ny = int64_t{y} + dy;
                         if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-                        const auto e = channelError(
-                            got, reference.pixelFloat(static_cast<uint32_t>(nx), static_cast<uint32_t>(ny)),
-                            channels);
+                        const auto e = channelError(got,
+                                                    reference.pixelFloat(static_cast<uint32_t>(nx),
+                                                                         static_cast<uint32_t>(ny)),
+                                                    channels);
                         if (e.first < error) std::tie(error, signedError) = e;
                     }
                 }
@@ -94,13 +101,14 @@ CompareResult compareImages(const runtime::Image& rendered, const runtime::Image
             r.maxErrorLsb = std::max(r.maxErrorLsb, error);
             // 1e-3 LSB of slack: k/255 values in float do not subtract to exact multiples of 1/255.
             const bool fails = !(error <= limit + 1e-3f);
-            const uint8_t grey = static_cast<uint8_t>(
-                std::clamp((want[0] * 0.2126f + want[1] * 0.7152f + want[2] * 0.0722f) * 64.0f, 0.0f, 64.0f));
+            const uint8_t grey = static_cast<uint8_t>(std::clamp(
+                (want[0] * 0.2126f + want[1] * 0.7152f + want[2] * 0.0722f) * 64.0f, 0.0f, 64.0f));
             std::array<uint8_t, 4> d = {grey, grey, grey, 255};
             if (signedError > 0.0f) d[0] = std::max(grey, diffLevel(signedError));
             if (signedError < 0.0f) d[2] = std::max(grey, diffLevel(signedError));
             if (fails) {
-                d = {uint8_t(signedError >= 0.0f ? 255 : 0), 255, uint8_t(signedError < 0.0f ? 255 : 0), 255};
+                d = {uint8_t(signedError >= 0.0f ? 255 : 0), 255,
+                     uint8_t(signedError < 0.0f ? 255 : 0), 255};
                 ++r.failingPixels;
                 if (r.firstFailures.size() < tolerance.maxReported) {
                     r.firstFailures.push_back({x, y, cls, got, want, error});

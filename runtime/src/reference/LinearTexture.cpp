@@ -49,4 +49,28 @@ glm::vec4 LinearTexture::sample(glm::vec2 uv) const {
     return top * (1.0f - fy) + bottom * fy;
 }
 
+Status readColorTexture(const scene::PropertyValue& value, const std::string& name,
+                        glm::vec4& constant, std::shared_ptr<const LinearTexture>& texture) {
+    const auto* text = std::get_if<std::string>(&value);
+    const std::string prefix = "material property " + name + ": ";
+    if (text == nullptr)
+        return makeError(ErrorCode::InvalidInput, prefix + "expected a texture name");
+    if (*text == "white") {
+        constant = glm::vec4(1.0f);
+    } else if (*text == "black") {
+        constant = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    } else if (scene::isTextureFile(*text)) {
+        auto loaded = LinearTexture::load(*text);
+        if (!loaded) return makeError(loaded.error().code, prefix + loaded.error().detail);
+        texture = std::move(*loaded);
+    } else {
+        return makeError(ErrorCode::Unsupported,
+                         prefix +
+                             "the CPU reference knows the textures 'white', 'black' and PNG "
+                             "files, not '" +
+                             *text + "'");
+    }
+    return Ok{};
+}
+
 }  // namespace varc::reference

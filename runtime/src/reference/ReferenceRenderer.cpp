@@ -31,32 +31,6 @@ Status readFloatProperty(const PropertyValue& value, const std::string& name, fl
     return makeError(ErrorCode::InvalidInput, "material property " + name + ": expected a number");
 }
 
-Status readTextureProperty(const PropertyValue& value, const std::string& name, glm::vec4& out,
-                           std::shared_ptr<const LinearTexture>& texture) {
-    const auto* v = std::get_if<std::string>(&value);
-    if (v == nullptr)
-        return makeError(ErrorCode::InvalidInput,
-                         "material property " + name + ": expected a texture name");
-    if (*v == "white") {
-        out = glm::vec4(1.0f);
-    } else if (*v == "black") {
-        out = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-    } else if (scene::isTextureFile(*v)) {
-        auto loaded = LinearTexture::load(*v);
-        if (!loaded) {
-            return makeError(loaded.error().code,
-                             "material property " + name + ": " + loaded.error().detail);
-        }
-        texture = std::move(*loaded);
-    } else {
-        return makeError(ErrorCode::Unsupported, "material property " + name +
-                                                     ": the CPU reference knows the textures "
-                                                     "'white', 'black' and PNG files, not '" +
-                                                     *v + "'");
-    }
-    return Ok{};
-}
-
 // The per-vertex and per-pass data of one object's draws.
 struct ObjectDraw {
     MaterialParams material;
@@ -233,7 +207,7 @@ Result<MaterialParams> resolveMaterial(const scene::Material& material) {
         if (name == colorName) {
             status = readColorProperty(value, name, p.color);
         } else if (name == "_MainTex") {
-            status = readTextureProperty(value, name, p.mainTex, p.mainTexture);
+            status = readColorTexture(value, name, p.mainTex, p.mainTexture);
         } else if (name == "_MainTex_ST") {
             status = readColorProperty(value, name, p.mainTexST);
         } else if (name == "_Metallic") {

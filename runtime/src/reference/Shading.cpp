@@ -28,8 +28,9 @@ float sampleAlpha(const scene::CookieImage& image, uint32_t layer, glm::vec2 st,
             tx = std::clamp(tx, 0, w - 1);
             ty = std::clamp(ty, 0, h - 1);
         }
-        const size_t index = (size_t{layer} * image.height + static_cast<size_t>(ty)) * image.width +
-                             static_cast<size_t>(tx);
+        const size_t index =
+            (size_t{layer} * image.height + static_cast<size_t>(ty)) * image.width +
+            static_cast<size_t>(tx);
         return static_cast<float>(image.rgba[4 * index + 3]) / 255.0f;
     };
     const int x0 = static_cast<int>(fx0), y0 = static_cast<int>(fy0);
@@ -79,7 +80,8 @@ glm::vec3 brdfPbs(const SurfaceColors& surface, float smoothness, const glm::vec
 
     const float surfaceReduction = 1.0f / (roughness * roughness + 1.0f);
     const float grazing = saturate(smoothness + (1.0f - surface.oneMinusReflectivity));
-    const glm::vec3 fresnel = surface.specular + (glm::vec3(1.0f) - surface.specular) * pow5(1.0f - lh);
+    const glm::vec3 fresnel =
+        surface.specular + (glm::vec3(1.0f) - surface.specular) * pow5(1.0f - lh);
     const glm::vec3 fresnelLerp =
         surface.specular + (glm::vec3(grazing) - surface.specular) * pow5(1.0f - nv);
     return surface.diffuse * (indirectDiffuse + lightColor * diffuseTerm) +
@@ -100,7 +102,8 @@ VertexLights vertexLightsFor(const scene::Scene& scene, const std::vector<int>& 
     return out;
 }
 
-glm::vec3 shade4PointLights(const VertexLights& lights, const glm::vec3& pos, const glm::vec3& normal) {
+glm::vec3 shade4PointLights(const VertexLights& lights, const glm::vec3& pos,
+                            const glm::vec3& normal) {
     glm::vec3 result(0.0f);
     for (int j = 0; j < 4; ++j) {
         const glm::vec3 toLight = glm::vec3(lights.posX[j], lights.posY[j], lights.posZ[j]) - pos;
@@ -137,8 +140,9 @@ float LightTextureSet::pointCookie(const glm::vec3& direction) const {
 
 Result<PassLight> passLightFor(const scene::Light& light) {
     if (light.cookie != "none" && light.cookie != "default") {
-        return makeError(ErrorCode::Unsupported,
-                         "the CPU reference only knows the default cookies, not '" + light.cookie + "'");
+        return makeError(
+            ErrorCode::Unsupported,
+            "the CPU reference only knows the default cookies, not '" + light.cookie + "'");
     }
     PassLight p;
     const bool cookie = light.cookie != "none";
@@ -164,13 +168,17 @@ Result<PassLight> passLightFor(const scene::Light& light) {
 
 PassLight noPassLight() { return PassLight{}; }
 
-float lightAttenuation(const PassLight& light, const LightTextureSet& textures, const glm::vec3& p) {
+float lightAttenuation(const PassLight& light, const LightTextureSet& textures,
+                       const glm::vec3& p) {
     const glm::vec4 lc = light.worldToLight * glm::vec4(p, 1.0f);
     const glm::vec3 q(lc);
     switch (light.keyword) {
-        case LightKeyword::Directional: return 1.0f;
-        case LightKeyword::DirectionalCookie: return textures.directionalCookie(glm::vec2(lc));
-        case LightKeyword::Point: return textures.falloff(glm::dot(q, q));
+        case LightKeyword::Directional:
+            return 1.0f;
+        case LightKeyword::DirectionalCookie:
+            return textures.directionalCookie(glm::vec2(lc));
+        case LightKeyword::Point:
+            return textures.falloff(glm::dot(q, q));
         case LightKeyword::PointCookie:
             return textures.falloff(glm::dot(q, q)) * textures.pointCookie(q);
         case LightKeyword::Spot:

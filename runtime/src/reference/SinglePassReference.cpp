@@ -28,18 +28,22 @@ struct ObjectShading {
 
 Result<glm::vec3> albedoOf(const scene::Material& material) {
     if (material.shader != kShader) {
-        return makeError(ErrorCode::Unsupported, "the single-pass reference has no model of shader '" +
-                                                     material.shader + "' (only " + kShader + ")");
+        return makeError(ErrorCode::Unsupported,
+                         "the single-pass reference has no model of shader '" + material.shader +
+                             "' (only " + kShader + ")");
     }
     auto it = material.properties.find("_Color");
     if (it == material.properties.end()) return glm::vec3(1.0f);
     const auto* color = std::get_if<glm::vec4>(&it->second);
-    if (!color) return makeError(ErrorCode::InvalidInput, "material property _Color: expected a colour");
+    if (!color)
+        return makeError(ErrorCode::InvalidInput, "material property _Color: expected a colour");
     return glm::vec3(*color);
 }
 
-Result<ObjectShading> prepareObject(const scene::Scene& scene, const scene::VisibleLightSet& visible,
-                                    const scene::Object& object, const SinglePassReferenceOptions& options) {
+Result<ObjectShading> prepareObject(const scene::Scene& scene,
+                                    const scene::VisibleLightSet& visible,
+                                    const scene::Object& object,
+                                    const SinglePassReferenceOptions& options) {
     ObjectShading out;
     auto albedo = albedoOf(object.material);
     if (!albedo) return albedo.error();
@@ -55,7 +59,8 @@ Result<ObjectShading> prepareObject(const scene::Scene& scene, const scene::Visi
     const size_t count = static_cast<size_t>(std::max(list.count, 0));
     std::vector<const scene::Light*> vertexLights;
     for (size_t k = 0; k < std::min<size_t>(count, scene::kMaxLightsPerObject); ++k) {
-        (k < scene::kMaxPixelLightsPerObject ? out.pixelLights : vertexLights).push_back(lightAt(k));
+        (k < scene::kMaxPixelLightsPerObject ? out.pixelLights : vertexLights)
+            .push_back(lightAt(k));
     }
 
     out.mesh = &scene::builtinMesh(object.mesh);
@@ -131,14 +136,16 @@ glm::vec3 singlePassIrradiance(const scene::Light& light, const glm::vec3& p, co
 Result<ReferenceImage> renderSinglePassReference(const scene::Scene& scene,
                                                  const SinglePassReferenceOptions& options) {
     if (scene.camera.path != scene::RenderPath::SinglePass) {
-        return makeError(ErrorCode::Unsupported, "the single-pass reference renders \"path\": \"single_pass\" scenes only");
+        return makeError(ErrorCode::Unsupported,
+                         "the single-pass reference renders \"path\": \"single_pass\" scenes only");
     }
     const scene::VisibleLightSet visible = scene::selectVisibleLights(scene);
     std::vector<ObjectShading> objects;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         auto object = prepareObject(scene, visible, scene.objects[i], options);
         if (!object) {
-            return makeError(object.error().code, "/objects/" + std::to_string(i) + ": " + object.error().detail);
+            return makeError(object.error().code,
+                             "/objects/" + std::to_string(i) + ": " + object.error().detail);
         }
         objects.push_back(std::move(*object));
     }
@@ -155,7 +162,10 @@ Result<ReferenceImage> renderSinglePassReference(const scene::Scene& scene,
             const SurfaceSample& s = out.visibility.at(x, y);
             glm::vec4 c = background;
             if (s.object >= 0) {
-                c = quantize(glm::vec4(shadeFragment(objects[static_cast<size_t>(s.object)], s, options), 1.0f), hdr);
+                c = quantize(
+                    glm::vec4(shadeFragment(objects[static_cast<size_t>(s.object)], s, options),
+                              1.0f),
+                    hdr);
             }
             out.color.setPixelFloat(x, y, {c.r, c.g, c.b, c.a});
         }

@@ -202,7 +202,6 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
 
     const ShaderValues camera = cameraValues(scene, scene::cameraMatrices(scene.camera));
     const ShaderValues lightBuffer = lightBufferValues(scene, visible);
-    const BuiltinTextures& builtin = *s.textures;
     std::deque<ShaderValues> values;  // stable storage for the layers the draws point at
     std::deque<std::map<std::string, std::string>> materialTextures;
     std::vector<Draw> draws;

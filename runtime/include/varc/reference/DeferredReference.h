@@ -6,6 +6,7 @@
 #pragma once
 
 #include "varc/core/Result.h"
+#include "varc/reference/LinearTexture.h"
 #include "varc/reference/ReferenceRenderer.h"
 #include "varc/scene/Scene.h"
 
@@ -13,11 +14,13 @@ namespace varc::reference {
 
 // The material of varc/DeferredGBuffer with its Properties defaults.
 struct GBufferMaterial {
-    glm::vec4 color{1.0f};     // _Color
-    glm::vec4 mainTex{1.0f};   // constant value of _MainTex ("white" or "black")
-    float metallic = 0.0f;     // _Metallic
-    float smoothness = 0.5f;   // _Smoothness
-    glm::vec3 emission{0.0f};  // _EmissionColor.rgb
+    glm::vec4 color{1.0f};    // _Color
+    glm::vec4 mainTex{1.0f};  // constant value of _MainTex ("white" or "black")
+    std::shared_ptr<const LinearTexture> mainTexture;  // _MainTex as a PNG file, else null
+    glm::vec4 mainTexST{1.0f, 1.0f, 0.0f, 0.0f};       // _MainTex_ST
+    float metallic = 0.0f;                             // _Metallic
+    float smoothness = 0.5f;                           // _Smoothness
+    glm::vec3 emission{0.0f};                          // _EmissionColor.rgb
 };
 // Unsupported for another shader or texture name; InvalidInput for a property of the wrong kind.
 Result<GBufferMaterial> resolveGBufferMaterial(const scene::Material& material);

@@ -15,26 +15,26 @@ namespace varc::reference {
 
 // Errors are in LSB of 8-bit colour (1 LSB = 1/255), per channel.
 struct Tolerance {
-    float interiorLsb = 1.0f;  // interior and background pixels; 2-3 for variants with
-                               // transcendental functions or filtered textures
-    float edgeLsb = 1.0f;      // edge pixels, against the reference at the pixel or a neighbour
-    float meanLsb = 0.25f;     // |mean signed error| over interior pixels and channels
-    bool compareAlpha = false; // alpha is not displayed; blend setups may differ in it
-    uint32_t maxReported = 10; // failing pixels listed in CompareResult::firstFailures
+    float interiorLsb = 1.0f;   // interior and background pixels; 2-3 for variants with
+                                // transcendental functions or filtered textures
+    float edgeLsb = 1.0f;       // edge pixels, against the reference at the pixel or a neighbour
+    float meanLsb = 0.25f;      // |mean signed error| over interior pixels and channels
+    bool compareAlpha = false;  // alpha is not displayed; blend setups may differ in it
+    uint32_t maxReported = 10;  // failing pixels listed in CompareResult::firstFailures
 };
 
 struct PixelFailure {
     uint32_t x = 0, y = 0;
     PixelClass pixelClass = PixelClass::Interior;
     std::array<float, 4> rendered{}, reference{};  // 0..1
-    float errorLsb = 0.0f;                         // largest channel error (best neighbour for edges)
+    float errorLsb = 0.0f;  // largest channel error (best neighbour for edges)
 };
 
 struct CompareResult {
     bool passed = false;
-    float maxErrorLsb = 0.0f;          // over all pixels (edges: best match in the neighbourhood)
-    float meanSignedErrorLsb = 0.0f;   // interior pixels, all compared channels
-    float meanAbsErrorLsb = 0.0f;      // interior pixels, all compared channels
+    float maxErrorLsb = 0.0f;         // over all pixels (edges: best match in the neighbourhood)
+    float meanSignedErrorLsb = 0.0f;  // interior pixels, all compared channels
+    float meanAbsErrorLsb = 0.0f;     // interior pixels, all compared channels
     uint64_t failingPixels = 0;
     uint64_t interiorPixels = 0, edgePixels = 0, backgroundPixels = 0;
     std::vector<PixelFailure> firstFailures;  // row-major order

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "varc/core/Result.h"
+#include "varc/scene/Scene.h"
 
 namespace varc::reference {
 
@@ -29,5 +30,12 @@ private:
     uint32_t mWidth = 0, mHeight = 0;
     std::vector<glm::vec4> mTexels;  // linear, row 0 first (v = 0 at the top row, as Vulkan)
 };
+
+// A colour texture property as the references read it: "white" or "black" set |constant| (and
+// leave |texture| null), a PNG file (scene::isTextureFile) loads |texture|. InvalidInput for a
+// non-texture value, Unsupported for another name, the load's error for an unreadable file; the
+// messages start with "material property <name>: ".
+Status readColorTexture(const scene::PropertyValue& value, const std::string& name,
+                        glm::vec4& constant, std::shared_ptr<const LinearTexture>& texture);
 
 }  // namespace varc::reference

@@ -6,11 +6,10 @@
 
 #include <array>
 #include <functional>
+#include <glm/glm.hpp>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "varc/core/Result.h"
 #include "varc/scene/LightTextures.h"
@@ -35,19 +34,20 @@ glm::vec3 brdfPbs(const SurfaceColors& surface, float smoothness, const glm::vec
 // The four vertex-light slots of SHADER_ABI.md §4.5 (unused slots zero).
 struct VertexLights {
     glm::vec4 posX{0.0f}, posY{0.0f}, posZ{0.0f};  // unity_4LightPosX0/Y0/Z0
-    glm::vec4 attenSq{0.0f};                      // unity_4LightAtten0 = 25 / range²
-    std::array<glm::vec3, 4> colors{};            // unity_LightColor[0..3].rgb
+    glm::vec4 attenSq{0.0f};                       // unity_4LightAtten0 = 25 / range²
+    std::array<glm::vec3, 4> colors{};             // unity_LightColor[0..3].rgb
 };
 VertexLights vertexLightsFor(const scene::Scene& scene, const std::vector<int>& lights);
 // LIGHTING.md §5 / unity-keywords.md §5.1.
-glm::vec3 shade4PointLights(const VertexLights& lights, const glm::vec3& pos, const glm::vec3& normal);
+glm::vec3 shade4PointLights(const VertexLights& lights, const glm::vec3& pos,
+                            const glm::vec3& normal);
 
 // The GPU-side light textures, sampled with linear filtering as SHADER_ABI.md §6 binds them.
 class LightTextureSet {
 public:
     LightTextureSet();
-    float falloff(float t) const;                    // _LightTexture0 (POINT) / _LightTextureB0
-    float spotCookie(const glm::vec2& uv) const;     // clamp to edge, .a
+    float falloff(float t) const;                        // _LightTexture0 (POINT) / _LightTextureB0
+    float spotCookie(const glm::vec2& uv) const;         // clamp to edge, .a
     float directionalCookie(const glm::vec2& uv) const;  // repeat, .a
     // Face selected as Vulkan does, bilinear inside the face with clamp to edge (Vulkan filters
     // across faces; the default cookie is smooth across edges, so the difference is ≪ 1/255).
@@ -66,9 +66,9 @@ enum class LightKeyword { Directional, DirectionalCookie, Point, PointCookie, Sp
 struct PassLight {
     LightKeyword keyword = LightKeyword::Directional;
     glm::vec4 worldSpaceLightPos{0.0f, 1.0f, 0.0f, 0.0f};  // _WorldSpaceLightPos0
-    glm::vec3 color{0.0f};                                  // _LightColor0.rgb
-    glm::vec4 positionRange{0.0f};                          // _LightPositionRange
-    glm::mat4 worldToLight{1.0f};                           // unity_WorldToLight (forward)
+    glm::vec3 color{0.0f};                                 // _LightColor0.rgb
+    glm::vec4 positionRange{0.0f};                         // _LightPositionRange
+    glm::mat4 worldToLight{1.0f};                          // unity_WorldToLight (forward)
 };
 // The pass light for |light| (ForwardAdd or the ForwardBase main light). Unsupported for cookie
 // names other than "none" and "default".
