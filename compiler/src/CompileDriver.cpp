@@ -118,7 +118,7 @@ bool Builder::plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sin
                            ? toGlslLineConvention(job.pass->source.text)
                            : job.pass->source.text;
             job.sourceIds.assign(job.keys.size() * job.stages.size(), kNoProgram);
-            job.observed.emplace(job.text);
+            if (mOptions.shareUnobservedDefines) job.observed.emplace(job.text);
             if (mCache) job.textHash = ProgramCache::hashText(job.text);
             mJobs.push_back(std::move(job));
         }

@@ -66,7 +66,9 @@ std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex) {
     const auto& [stage, entry] = job.stages[stageIndex];
     DefineContext context{job.pass->pass->lightMode(), job.pass->keywords.target, languageOf(job),
                           stage, job.pass->space->table().namesOf(job.keys[variant])};
-    std::string preamble = dropUnobservedDefines(makePreamble(context), *job.observed);
+    std::string preamble = job.observed
+                               ? dropUnobservedDefines(makePreamble(context), *job.observed)
+                               : makePreamble(context);
     if (languageOf(job) == shaderlab::ProgramLanguage::Glsl) {
         preamble += legacyGlslPreamble(job.text, stage);
     }

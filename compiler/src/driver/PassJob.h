@@ -33,7 +33,7 @@ struct PassJob {
     std::vector<variants::VariantKey> keys;
     std::vector<std::pair<uint32_t, std::string>> stages;  // (stage bit, entry point)
     std::string text;  // the expanded source, in the front end's #line convention
-    std::optional<ObservedNames> observed;  // the macro names |text| can see
+    std::optional<ObservedNames> observed;  // the macro names |text| can see; none: keep all
     ProgramCacheKey textHash;               // of |text|, when a program cache is used
     // sourceIds[variant * stages.size() + stageIndex]
     std::vector<uint32_t> sourceIds;

@@ -32,6 +32,10 @@ struct BuildOptions {
     bool keepGoing = false;    // compile everything even after errors, to report them all
     bool pruneStages = true;   // prune each stage to what its entry point reaches before dedup
     bool debugNames = false;   // keep OpName/OpMemberName/OpSource in the shipped SPIR-V
+    // Drop the defines a pass's text cannot observe before preprocessing (ObservedDefines.h), so
+    // variants differing only in them share one preprocessing. Off only to check that it
+    // changes no program.
+    bool shareUnobservedDefines = true;
     // A ProgramCache folder: programs found there are not compiled again, programs compiled are
     // stored there. "" = no cache.
     std::string cacheDirectory;
@@ -53,6 +57,7 @@ struct CompiledVariant {
     variants::VariantKey key;
     std::array<uint32_t, kStageCount> programs{kNoProgram, kNoProgram, kNoProgram, kNoProgram,
                                                kNoProgram};
+    friend bool operator==(const CompiledVariant&, const CompiledVariant&) = default;
 };
 
 // Per pass: the staged counts of `varc build`'s summary.
