@@ -92,7 +92,8 @@ glm::vec3 lightPass(const scene::Light& light, const LightTextureSet& textures,
     float atten = 0.0f;
     if (light.type == scene::LightType::Directional) {
         l = -light.forward();
-        atten = light.cookie != "none" ? textures.directionalCookie(glm::vec2(lc)) : 1.0f;
+        atten =
+            light.cookie != "none" ? textures.directionalCookie(glm::vec2(lc), light.cookie) : 1.0f;
     } else {
         const glm::vec3 toLight = light.transform.position - p;
         l = glm::normalize(toLight);
@@ -100,7 +101,8 @@ glm::vec3 lightPass(const scene::Light& light, const LightTextureSet& textures,
         const float t = glm::dot(toLight, toLight) * invRangeSq;
         atten = t <= 1.0f ? textures.falloff(t) : 0.0f;
         if (light.type == scene::LightType::Spot) {
-            atten *= textures.spotCookie(glm::vec2(lc) / lc.w) * (lc.w < 0.0f ? 1.0f : 0.0f);
+            atten *= textures.spotCookie(glm::vec2(lc) / lc.w, light.cookie) *
+                     (lc.w < 0.0f ? 1.0f : 0.0f);
         } else if (light.cookie != "none") {
             atten *= textures.pointCookie(glm::vec3(lc));
         }
@@ -138,10 +140,11 @@ glm::vec3 shadePixel(const scene::Scene& scene, const LightTextureSet& textures,
 Status checkCookies(const scene::Scene& scene) {
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const std::string& cookie = scene.lights[i].cookie;
-        if (cookie != "none" && cookie != "default") {
+        if (cookie != "none" && cookie != "default" && !scene::isTextureFile(cookie)) {
             return makeError(ErrorCode::Unsupported,
                              "/lights/" + std::to_string(i) +
-                                 ": the CPU reference knows the default cookies only, not '" +
+                                 ": the CPU reference knows the default cookies and PNG files, "
+                                 "not '" +
                                  cookie + "'");
         }
     }
@@ -201,7 +204,8 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
         }
         surfaces.push_back(std::move(*surface));
     }
-    const LightTextureSet textures;
+    LightTextureSet textures;
+    if (Status cookies = textures.loadCookieFiles(scene.lights); !cookies) return cookies.error();
     const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);
     ReferenceImage out;
     out.visibility = rasterizeScene(scene, camera);

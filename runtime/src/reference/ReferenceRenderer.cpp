@@ -240,6 +240,7 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
         draws.push_back(std::move(*draw));
     }
     LightTextureSet textures;
+    if (Status cookies = textures.loadCookieFiles(scene.lights); !cookies) return cookies.error();
     if (options.falloffOverride) textures.setFalloffOverride(options.falloffOverride);
 
     const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "varc/runtime/vulkan/Png.h"
+
 namespace varc::reference {
 namespace {
 
@@ -125,12 +127,39 @@ float LightTextureSet::falloff(float t) const {
     return mFalloffOverride ? mFalloffOverride(t) : scene::sampleFalloffTable(mFalloff, t);
 }
 
-float LightTextureSet::spotCookie(const glm::vec2& uv) const {
-    return sampleAlpha(mSpot, 0, uv, false);
+float LightTextureSet::spotCookie(const glm::vec2& uv, const std::string& cookie) const {
+    auto file = mFiles.find(cookie);
+    return sampleAlpha(file != mFiles.end() ? file->second : mSpot, 0, uv, false);
 }
 
-float LightTextureSet::directionalCookie(const glm::vec2& uv) const {
-    return sampleAlpha(mDirectional, 0, uv, true);
+float LightTextureSet::directionalCookie(const glm::vec2& uv, const std::string& cookie) const {
+    auto file = mFiles.find(cookie);
+    return sampleAlpha(file != mFiles.end() ? file->second : mDirectional, 0, uv, true);
+}
+
+Status LightTextureSet::loadCookieFiles(const std::vector<scene::Light>& lights) {
+    for (const scene::Light& light : lights) {
+        if (!scene::isTextureFile(light.cookie) || mFiles.count(light.cookie)) continue;
+        if (light.type == scene::LightType::Point) {
+            return makeError(ErrorCode::Unsupported,
+                             "cookie '" + light.cookie +
+                                 "': a point light's cookie is a cube map; PNG cookies are for "
+                                 "spot and directional lights");
+        }
+        auto image = runtime::readPng(light.cookie);
+        if (!image) return makeError(image.error().code, "cookie: " + image.error().detail);
+        scene::CookieImage cookie;
+        cookie.width = image->width();
+        cookie.height = image->height();
+        for (uint32_t y = 0; y < cookie.height; ++y) {
+            for (uint32_t x = 0; x < cookie.width; ++x) {
+                const auto p = image->pixel8(x, y);
+                cookie.rgba.insert(cookie.rgba.end(), p.begin(), p.end());
+            }
+        }
+        mFiles.emplace(light.cookie, std::move(cookie));
+    }
+    return Ok{};
 }
 
 float LightTextureSet::pointCookie(const glm::vec3& direction) const {
@@ -139,12 +168,14 @@ float LightTextureSet::pointCookie(const glm::vec3& direction) const {
 }
 
 Result<PassLight> passLightFor(const scene::Light& light) {
-    if (light.cookie != "none" && light.cookie != "default") {
-        return makeError(
-            ErrorCode::Unsupported,
-            "the CPU reference only knows the default cookies, not '" + light.cookie + "'");
+    if (light.cookie != "none" && light.cookie != "default" &&
+        !scene::isTextureFile(light.cookie)) {
+        return makeError(ErrorCode::Unsupported,
+                         "the CPU reference knows the default cookies and PNG files, not '" +
+                             light.cookie + "'");
     }
     PassLight p;
+    p.cookie = light.cookie;
     const bool cookie = light.cookie != "none";
     switch (light.type) {
         case scene::LightType::Directional:
@@ -176,14 +207,14 @@ float lightAttenuation(const PassLight& light, const LightTextureSet& textures,
         case LightKeyword::Directional:
             return 1.0f;
         case LightKeyword::DirectionalCookie:
-            return textures.directionalCookie(glm::vec2(lc));
+            return textures.directionalCookie(glm::vec2(lc), light.cookie);
         case LightKeyword::Point:
             return textures.falloff(glm::dot(q, q));
         case LightKeyword::PointCookie:
             return textures.falloff(glm::dot(q, q)) * textures.pointCookie(q);
         case LightKeyword::Spot:
             return (lc.z > 0.0f ? 1.0f : 0.0f) *
-                   textures.spotCookie(glm::vec2(lc) / lc.w + glm::vec2(0.5f)) *
+                   textures.spotCookie(glm::vec2(lc) / lc.w + glm::vec2(0.5f), light.cookie) *
                    textures.falloff(glm::dot(q, q));
     }
     return 1.0f;

@@ -224,6 +224,7 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     TextureBinding gbuffer0{g.colorView(kGBufferDiffuse), s.nearest.get()};
     TextureBinding gbuffer1{g.colorView(kGBufferSpecular), s.nearest.get()};
     TextureBinding gbuffer2{g.colorView(kGBufferNormal), s.nearest.get()};
+    if (Status cookies = s.loadCookieFiles(scene.lights); !cookies) return cookies.error();
     for (size_t l = 0; l < scene.lights.size(); ++l) {
         const scene::Light& light = scene.lights[l];
         std::string what = "light " + std::to_string(l) + " (shader \"" + s.lightShader + "\")";
@@ -257,9 +258,12 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
         }
         scene::LightType type = light.type;
         bool cookie = light.cookie != "none";
-        draw.textures = [&builtin, type, cookie, depth, gbuffer0, gbuffer1, gbuffer2](
+        draw.textures = [&s, &builtin, &light, type, cookie, depth, gbuffer0, gbuffer1, gbuffer2](
                             std::string_view name,
                             pack::ResourceDim dim) -> std::optional<TextureBinding> {
+            if (name == "_LightTexture0") {
+                if (auto file = s.cookieFile(light)) return file;
+            }
             if (name == "_CameraDepthTexture") return depth;
             if (name == "_CameraGBufferTexture0") return gbuffer0;
             if (name == "_CameraGBufferTexture1") return gbuffer1;

@@ -43,6 +43,7 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
     scene::CameraMatrices matrices = scene::cameraMatrices(scene.camera);
     ShaderValues camera = cameraValues(scene, matrices);
     const BuiltinTextures& builtin = *s.textures;
+    if (Status cookies = s.loadCookieFiles(scene.lights); !cookies) return cookies.error();
 
     // Stable storage for the values the draws point at.
     std::deque<ShaderValues> values;
@@ -94,9 +95,12 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
             draw.layers = {&lightValues, &objectValues_, &material, &camera};
             scene::LightType type = light ? light->type : scene::LightType::Directional;
             bool cookie = light && light->cookie != "none";
-            draw.textures = [&s, &builtin, &textureNames, type, cookie](
+            draw.textures = [&s, &builtin, &textureNames, light, type, cookie](
                                 std::string_view name,
                                 pack::ResourceDim dim) -> std::optional<TextureBinding> {
+                if (light && name == "_LightTexture0") {
+                    if (auto file = s.cookieFile(*light)) return file;
+                }
                 if (auto texture = builtin.lightTexture(name, dim, type, cookie, false))
                     return texture;
                 auto it = textureNames.find(std::string(name));

@@ -117,4 +117,33 @@ std::optional<TextureBinding> RendererBase::materialTexture(const std::string& n
     return TextureBinding{file->second.view(), textures->repeatSampler()};
 }
 
+Status RendererBase::loadCookieFiles(const std::vector<scene::Light>& lights) {
+    for (const scene::Light& light : lights) {
+        if (!scene::isTextureFile(light.cookie) || mCookieFiles.count(light.cookie)) continue;
+        if (light.type == scene::LightType::Point) {
+            return makeError(ErrorCode::Unsupported,
+                             "cookie '" + light.cookie +
+                                 "': a point light's cookie is a cube map; PNG cookies are for "
+                                 "spot and directional lights");
+        }
+        auto image = readPng(light.cookie);
+        if (!image) return makeError(image.error().code, "cookie: " + image.error().detail);
+        TextureOptions options;  // UNORM: a cookie's alpha is an attenuation, not a colour
+        options.name = light.cookie;
+        auto texture = Texture::create2D(*context, *image, options);
+        if (!texture) return texture.error();
+        mCookieFiles.emplace(light.cookie, std::move(*texture));
+    }
+    return Ok{};
+}
+
+std::optional<TextureBinding> RendererBase::cookieFile(const scene::Light& light) const {
+    if (!scene::isTextureFile(light.cookie)) return std::nullopt;
+    auto file = mCookieFiles.find(light.cookie);
+    if (file == mCookieFiles.end()) return std::nullopt;
+    VkSampler sampler =
+        light.type == scene::LightType::Spot ? textures->clampSampler() : textures->repeatSampler();
+    return TextureBinding{file->second.view(), sampler};
+}
+
 }  // namespace varc::runtime

@@ -70,6 +70,15 @@ struct RendererBase {
     std::optional<TextureBinding> materialTexture(const std::string& name,
                                                   pack::ResourceDim dim) const;
 
+    // Loads the PNG cookie of each light that names one (scene::isTextureFile; its alpha is the
+    // cookie, stored linear). Errors: a point light's (its cookie is a cube map), an unreadable
+    // file.
+    Status loadCookieFiles(const std::vector<scene::Light>& lights);
+
+    // _LightTexture0 for |light| when it has a PNG cookie: clamped for spot lights, repeating for
+    // directional ones; nullopt otherwise (the default cookies come from BuiltinTextures).
+    std::optional<TextureBinding> cookieFile(const scene::Light& light) const;
+
 private:
     struct CachedPipeline {
         const Pack* pack;
@@ -79,7 +88,8 @@ private:
         VariantPipeline pipeline;
     };
     std::deque<CachedPipeline> mPipelines;         // a deque: returned pointers stay valid
-    std::map<std::string, Texture> mTextureFiles;  // by path
+    std::map<std::string, Texture> mTextureFiles;  // material PNGs (sRGB), by path
+    std::map<std::string, Texture> mCookieFiles;   // cookie PNGs (UNORM), by path
 };
 
 }  // namespace varc::runtime

@@ -295,6 +295,10 @@ bool readLight(Reader& r, const json& value, const std::string& p, Light& l) {
     }
     if (value.contains("cookie") && !r.readString(value["cookie"], p + "/cookie", l.cookie))
         return false;
+    if (isTextureFile(l.cookie) && std::filesystem::path(l.cookie).is_relative()) {
+        l.cookie =
+            (std::filesystem::path(r.path()).parent_path() / l.cookie).lexically_normal().string();
+    }
     if (value.contains("cookie_size") &&
         !r.readPositive(value["cookie_size"], p + "/cookie_size", l.cookieSize)) {
         return false;

@@ -7,6 +7,7 @@
 #include <array>
 #include <functional>
 #include <glm/glm.hpp>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,9 +47,14 @@ glm::vec3 shade4PointLights(const VertexLights& lights, const glm::vec3& pos,
 class LightTextureSet {
 public:
     LightTextureSet();
-    float falloff(float t) const;                        // _LightTexture0 (POINT) / _LightTextureB0
-    float spotCookie(const glm::vec2& uv) const;         // clamp to edge, .a
-    float directionalCookie(const glm::vec2& uv) const;  // repeat, .a
+    float falloff(float t) const;  // _LightTexture0 (POINT) / _LightTextureB0
+    // The cookie a light names ("none"/"default": the default image, else a PNG file loaded by
+    // loadCookieFiles), bilinear on its alpha: spot clamps to edge, directional repeats.
+    float spotCookie(const glm::vec2& uv, const std::string& cookie = "default") const;
+    float directionalCookie(const glm::vec2& uv, const std::string& cookie = "default") const;
+    // Loads the PNG cookie of every light that names one (its alpha channel). Unsupported for a
+    // point light (its cookie is a cube map); the file's error when unreadable.
+    Status loadCookieFiles(const std::vector<scene::Light>& lights);
     // Face selected as Vulkan does, bilinear inside the face with clamp to edge (Vulkan filters
     // across faces; the default cookie is smooth across edges, so the difference is ≪ 1/255).
     float pointCookie(const glm::vec3& direction) const;
@@ -59,6 +65,7 @@ private:
     std::function<float(float)> mFalloffOverride;
     std::vector<uint16_t> mFalloff;
     scene::CookieImage mSpot, mDirectional, mPoint;
+    std::map<std::string, scene::CookieImage> mFiles;  // by path
 };
 
 // The per-pass light uniforms of SHADER_ABI.md §4.6 plus the variant's light keyword.
@@ -69,9 +76,10 @@ struct PassLight {
     glm::vec3 color{0.0f};                                 // _LightColor0.rgb
     glm::vec4 positionRange{0.0f};                         // _LightPositionRange
     glm::mat4 worldToLight{1.0f};                          // unity_WorldToLight (forward)
+    std::string cookie = "none";                           // scene::Light::cookie
 };
-// The pass light for |light| (ForwardAdd or the ForwardBase main light). Unsupported for cookie
-// names other than "none" and "default".
+// The pass light for |light| (ForwardAdd or the ForwardBase main light). Its PNG cookie, if any,
+// is sampled through LightTextureSet::loadCookieFiles.
 Result<PassLight> passLightFor(const scene::Light& light);
 // ForwardBase without a directional light: _LightColor0 = 0 and a unit direction (0, 1, 0).
 PassLight noPassLight();

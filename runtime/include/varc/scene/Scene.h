@@ -68,7 +68,7 @@ struct Light {
     Transform transform;          // position and rotation used; light travels along local +z
     float range = 10.0f;          // point, spot
     float spotAngle = 30.0f;      // degrees, full cone angle
-    std::string cookie = "none";  // "none" | "default" | a texture name
+    std::string cookie = "none";  // "none" | "default" | a PNG file (spot, directional; alpha)
     float cookieSize = 10.0f;     // directional cookies: metres covered by one cookie tile
     LightRenderMode renderMode = LightRenderMode::Auto;
     glm::vec3 finalColor() const { return color * intensity; }  // linear

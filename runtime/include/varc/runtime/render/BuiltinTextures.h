@@ -20,6 +20,7 @@ public:
     // "white" (cube), linear-repeat sampled.
     std::optional<TextureBinding> named(std::string_view name, pack::ResourceDim dim) const;
     VkSampler repeatSampler() const { return mRepeat.get(); }  // linear, repeat
+    VkSampler clampSampler() const { return mClamp.get(); }    // linear, clamp to edge
     TextureBinding falloff() const;                            // 1024 x 1, linear, clamp
     TextureBinding spotCookie() const;                         // linear, clamp
     TextureBinding directionalCookie() const;                  // linear, repeat
