@@ -140,12 +140,6 @@ float LightTextureSet::directionalCookie(const glm::vec2& uv, const std::string&
 Status LightTextureSet::loadCookieFiles(const std::vector<scene::Light>& lights) {
     for (const scene::Light& light : lights) {
         if (!scene::isTextureFile(light.cookie) || mFiles.count(light.cookie)) continue;
-        if (light.type == scene::LightType::Point) {
-            return makeError(ErrorCode::Unsupported,
-                             "cookie '" + light.cookie +
-                                 "': a point light's cookie is a cube map; PNG cookies are for "
-                                 "spot and directional lights");
-        }
         auto image = runtime::readPng(light.cookie);
         if (!image) return makeError(image.error().code, "cookie: " + image.error().detail);
         scene::CookieImage cookie;

@@ -120,12 +120,6 @@ std::optional<TextureBinding> RendererBase::materialTexture(const std::string& n
 Status RendererBase::loadCookieFiles(const std::vector<scene::Light>& lights) {
     for (const scene::Light& light : lights) {
         if (!scene::isTextureFile(light.cookie) || mCookieFiles.count(light.cookie)) continue;
-        if (light.type == scene::LightType::Point) {
-            return makeError(ErrorCode::Unsupported,
-                             "cookie '" + light.cookie +
-                                 "': a point light's cookie is a cube map; PNG cookies are for "
-                                 "spot and directional lights");
-        }
         auto image = readPng(light.cookie);
         if (!image) return makeError(image.error().code, "cookie: " + image.error().detail);
         TextureOptions options;  // UNORM: a cookie's alpha is an attenuation, not a colour

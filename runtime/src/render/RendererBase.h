@@ -71,8 +71,8 @@ struct RendererBase {
                                                   pack::ResourceDim dim) const;
 
     // Loads the PNG cookie of each light that names one (scene::isTextureFile; its alpha is the
-    // cookie, stored linear). Errors: a point light's (its cookie is a cube map), an unreadable
-    // file.
+    // cookie, stored linear; the scene parser allows them on spot and directional lights only).
+    // Errors: an unreadable file.
     Status loadCookieFiles(const std::vector<scene::Light>& lights);
 
     // _LightTexture0 for |light| when it has a PNG cookie: clamped for spot lights, repeating for

@@ -295,6 +295,11 @@ bool readLight(Reader& r, const json& value, const std::string& p, Light& l) {
     }
     if (value.contains("cookie") && !r.readString(value["cookie"], p + "/cookie", l.cookie))
         return false;
+    if (isTextureFile(l.cookie) && l.type == LightType::Point) {
+        return r.fail(p + "/cookie",
+                      "a point light's cookie is a cube map; PNG cookies are for spot and "
+                      "directional lights");
+    }
     if (isTextureFile(l.cookie) && std::filesystem::path(l.cookie).is_relative()) {
         l.cookie =
             (std::filesystem::path(r.path()).parent_path() / l.cookie).lexically_normal().string();

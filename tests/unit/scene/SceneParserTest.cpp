@@ -69,6 +69,17 @@ TEST(SceneParser, TextureFilesAreNamedRelativeToTheSceneFile) {
     EXPECT_FALSE(isTextureFile("white"));
 }
 
+TEST(SceneParser, PngCookiesAreForSpotAndDirectionalLights) {
+    auto spot = parseScene(R"({"lights":[{"type":"spot","cookie":"c.png"}]})", "s/a.json");
+    ASSERT_TRUE(spot.ok()) << spot.error().detail;
+    EXPECT_EQ(spot->lights[0].cookie, "s/c.png");
+    auto point = parseScene(R"({"lights":[{"type":"point","cookie":"c.png"}]})", "s/a.json");
+    ASSERT_FALSE(point.ok());
+    EXPECT_EQ(point.error().detail,
+              "s/a.json: /lights/0/cookie: a point light's cookie is a cube map; PNG cookies are "
+              "for spot and directional lights");
+}
+
 TEST(SceneParser, EmptyObjectGivesDefaults) {
     auto scene = parseScene("{}", "a.json");
     ASSERT_TRUE(scene.ok());

@@ -52,8 +52,8 @@ public:
     // loadCookieFiles), bilinear on its alpha: spot clamps to edge, directional repeats.
     float spotCookie(const glm::vec2& uv, const std::string& cookie = "default") const;
     float directionalCookie(const glm::vec2& uv, const std::string& cookie = "default") const;
-    // Loads the PNG cookie of every light that names one (its alpha channel). Unsupported for a
-    // point light (its cookie is a cube map); the file's error when unreadable.
+    // Loads the PNG cookie of every light that names one (its alpha channel; the scene parser
+    // allows them on spot and directional lights only). The file's error when unreadable.
     Status loadCookieFiles(const std::vector<scene::Light>& lights);
     // Face selected as Vulkan does, bilinear inside the face with clamp to edge (Vulkan filters
     // across faces; the default cookie is smooth across edges, so the difference is ≪ 1/255).
