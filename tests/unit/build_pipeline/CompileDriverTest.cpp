@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <set>
+#include <string_view>
 
 #include "varc/compiler/CompileDriver.h"
 #include "varc/compiler/ShaderLoader.h"
@@ -59,6 +60,14 @@ bool hasInstruction(const std::vector<uint32_t>& spirv, uint32_t opcode) {
         if ((spirv[i] & 0xffff) == opcode) return true;
     }
     return false;
+}
+
+// |text| with its first |from| replaced by |to| (|from| must occur).
+std::string replaced(std::string text, std::string_view from, std::string_view to) {
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "'" << from << "' not in the shader";
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
 }
 
 class CompileDriverTest : public ::testing::Test {
@@ -181,8 +190,8 @@ TEST_F(CompileDriverTest, ReflectsOneDescriptorSetPerStageWithRealBindings) {
 
 TEST_F(CompileDriverTest, ErrorInSharedIncludeIsReportedOnceWithVariantCountAndMappedLine) {
     mFileSystem.add("shaders/Common.cginc", "float scale() { return undefinedValue; }\n");
-    std::string shader = kTwoKeywordShader;
-    shader.replace(shader.find("#include \"Common.cginc\""), 22, "#include \"Broken.cginc\"");
+    std::string shader =
+        replaced(kTwoKeywordShader, "#include \"Common.cginc\"", "#include \"Broken.cginc\"");
     mFileSystem.add("shaders/Broken.cginc", "float scale() { return undefinedValue; }\n");
     mFileSystem.add("shaders/test.shader", shader);
     auto loaded = loadShader("shaders/test.shader", mFileSystem, mSourceMap, {}, mDiagnostics);
@@ -211,9 +220,9 @@ TEST_F(CompileDriverTest, ErrorInSharedIncludeIsReportedOnceWithVariantCountAndM
 }
 
 TEST_F(CompileDriverTest, VariantsDifferingOnlyInUnobservedDefinesSharePreprocessing) {
-    std::string shader = kTwoKeywordShader;
-    shader.replace(shader.find("#pragma multi_compile _ TINTED"), 30,
-                   "#pragma multi_compile _ TINTED\n#pragma multi_compile _ NEVER_TESTED");
+    std::string shader =
+        replaced(kTwoKeywordShader, "#pragma multi_compile _ TINTED",
+                 "#pragma multi_compile _ TINTED\n#pragma multi_compile _ NEVER_TESTED");
     auto output = build(shader);
     ASSERT_TRUE(output);
     const CompiledPass& pass = output->passes[0];
@@ -227,18 +236,18 @@ TEST_F(CompileDriverTest, VariantsDifferingOnlyInUnobservedDefinesSharePreproces
 }
 
 TEST_F(CompileDriverTest, AStageMacroTheTextTestsIsPreprocessedPerStage) {
-    std::string shader = kTwoKeywordShader;
-    shader.replace(shader.find("float4 _Tint;"), 13,
-                   "#ifdef SHADER_STAGE_VERTEX\nfloat4 _VertexOnly;\n#endif\nfloat4 _Tint;");
+    std::string shader =
+        replaced(kTwoKeywordShader, "float4 _Tint;",
+                 "#ifdef SHADER_STAGE_VERTEX\nfloat4 _VertexOnly;\n#endif\nfloat4 _Tint;");
     auto output = build(shader);
     ASSERT_TRUE(output);
     EXPECT_EQ(output->preprocessedPrograms, 8u);  // 4 variants x 2 stages
 }
 
 TEST_F(CompileDriverTest, APreprocessingErrorSharedByVariantsIsReportedOnce) {
-    std::string shader = kTwoKeywordShader;
-    shader.replace(shader.find("float4 _Tint;"), 13,
-                   "#ifdef TINTED\n#error tinted is unsupported\n#endif\nfloat4 _Tint;");
+    std::string shader =
+        replaced(kTwoKeywordShader, "float4 _Tint;",
+                 "#ifdef TINTED\n#error tinted is unsupported\n#endif\nfloat4 _Tint;");
     BuildOptions options;
     options.keepGoing = true;
     EXPECT_FALSE(build(shader, options));
@@ -312,8 +321,7 @@ TEST_F(CompileDriverTest, ShippedSpirvHasNoNamesUnlessAskedButReflectionKeepsThe
 }
 
 TEST_F(CompileDriverTest, MissingEntryPragmaIsAnError) {
-    std::string shader = kTwoKeywordShader;
-    shader.erase(shader.find("#pragma fragment frag"), 21);
+    std::string shader = replaced(kTwoKeywordShader, "#pragma fragment frag", "");
     EXPECT_FALSE(build(shader));
     ASSERT_TRUE(mDiagnostics.hasErrors());
     EXPECT_NE(mDiagnostics.diagnostics()[0].message.find("missing #pragma fragment"),
