@@ -17,11 +17,11 @@
 #include <thread>
 #include <vector>
 
-#include "varc/compiler/CompileDriver.h"
-#include "varc/compiler/GlslLegacyPreamble.h"
-#include "varc/compiler/PassDefines.h"
-#include "varc/compiler/ShaderLoader.h"
+#include "varc/build/CompileDriver.h"
+#include "varc/build/GlslLegacyPreamble.h"
+#include "varc/build/PassDefines.h"
 #include "varc/core/Diagnostic.h"
+#include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
 
 namespace varc {

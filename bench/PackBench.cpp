@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "varc/compiler/PackWriter.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/PassView.h"
+#include "varc/packwriter/PackWriter.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PassView.h"
 
 namespace varc {
 namespace {

@@ -12,17 +12,17 @@
 #include <filesystem>
 #include <optional>
 
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/PassView.h"
-#include "varc/runtime/ProgramView.h"
-#include "varc/runtime/ShaderView.h"
-#include "varc/runtime/render/DrawResources.h"
-#include "varc/runtime/render/ForwardRenderer.h"
-#include "varc/runtime/render/RenderStateResolver.h"
-#include "varc/runtime/render/VariantPipeline.h"
-#include "varc/runtime/vulkan/RenderTarget.h"
-#include "varc/runtime/vulkan/VulkanContext.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PassView.h"
+#include "varc/reader/ProgramView.h"
+#include "varc/reader/ShaderView.h"
+#include "varc/render/DrawResources.h"
+#include "varc/render/ForwardRenderer.h"
+#include "varc/render/RenderStateResolver.h"
+#include "varc/render/VariantPipeline.h"
 #include "varc/scene/Scene.h"
+#include "varc/vulkan/RenderTarget.h"
+#include "varc/vulkan/VulkanContext.h"
 
 namespace varc::runtime {
 namespace {

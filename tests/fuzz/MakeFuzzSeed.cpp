@@ -4,7 +4,7 @@
 #include <string>
 
 #include "PackTestData.h"
-#include "varc/compiler/PackWriter.h"
+#include "varc/packwriter/PackWriter.h"
 
 int main(int argc, char** argv) {
     if (argc != 2) {

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/PackDecoder.h"
-#include "varc/runtime/PassView.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PackDecoder.h"
+#include "varc/reader/PassView.h"
 
 namespace {
 

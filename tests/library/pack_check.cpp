@@ -13,9 +13,9 @@
 
 #include <spirv-tools/libspirv.hpp>
 
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/PassView.h"
-#include "varc/runtime/VariantView.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PassView.h"
+#include "varc/reader/VariantView.h"
 
 namespace {
 

@@ -10,19 +10,19 @@
 #include <glm/gtc/constants.hpp>
 
 #include "VulkanTestSupport.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PassView.h"
+#include "varc/reader/ShaderView.h"
 #include "varc/reference/Shading.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/PassView.h"
-#include "varc/runtime/ShaderView.h"
-#include "varc/runtime/render/BuiltinTextures.h"
-#include "varc/runtime/render/DrawResources.h"
-#include "varc/runtime/render/RenderStateResolver.h"
-#include "varc/runtime/render/SceneValues.h"
-#include "varc/runtime/render/VariantPipeline.h"
-#include "varc/runtime/render/VertexLayout.h"
-#include "varc/runtime/vulkan/Buffer.h"
-#include "varc/runtime/vulkan/RenderTarget.h"
+#include "varc/render/BuiltinTextures.h"
+#include "varc/render/DrawResources.h"
+#include "varc/render/RenderStateResolver.h"
+#include "varc/render/SceneValues.h"
+#include "varc/render/VariantPipeline.h"
+#include "varc/render/VertexLayout.h"
 #include "varc/scene/ForwardLights.h"
+#include "varc/vulkan/Buffer.h"
+#include "varc/vulkan/RenderTarget.h"
 
 namespace varc::runtime {
 namespace {

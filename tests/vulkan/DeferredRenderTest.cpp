@@ -8,13 +8,13 @@
 #include <cmath>
 
 #include "VulkanTestSupport.h"
+#include "varc/reader/Pack.h"
 #include "varc/reference/DeferredReference.h"
 #include "varc/reference/ImageCompare.h"
 #include "varc/reference/ReferenceRenderer.h"
 #include "varc/reference/SceneTolerance.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/render/DeferredRenderer.h"
-#include "varc/runtime/render/ForwardRenderer.h"
+#include "varc/render/DeferredRenderer.h"
+#include "varc/render/ForwardRenderer.h"
 #include "varc/scene/Scene.h"
 
 namespace varc::runtime {

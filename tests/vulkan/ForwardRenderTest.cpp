@@ -7,11 +7,11 @@
 #include <cmath>
 
 #include "VulkanTestSupport.h"
+#include "varc/reader/Pack.h"
 #include "varc/reference/ImageCompare.h"
 #include "varc/reference/ReferenceRenderer.h"
 #include "varc/reference/SceneTolerance.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/render/ForwardRenderer.h"
+#include "varc/render/ForwardRenderer.h"
 #include "varc/scene/Scene.h"
 
 namespace varc::runtime {

@@ -3,7 +3,7 @@
 // ErrorCode::NotFound. Run by VulkanContextTest with the loader pointed at no driver.
 #include <cstdio>
 
-#include "varc/runtime/vulkan/VulkanContext.h"
+#include "varc/vulkan/VulkanContext.h"
 
 int main() {
     varc::runtime::ContextOptions options;

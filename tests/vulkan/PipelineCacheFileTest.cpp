@@ -9,13 +9,13 @@
 #include <iterator>
 
 #include "VulkanTestSupport.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/PassView.h"
-#include "varc/runtime/ShaderView.h"
-#include "varc/runtime/render/PipelineCacheFile.h"
-#include "varc/runtime/render/RenderStateResolver.h"
-#include "varc/runtime/render/VariantPipeline.h"
-#include "varc/runtime/vulkan/RenderTarget.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PassView.h"
+#include "varc/reader/ShaderView.h"
+#include "varc/render/PipelineCacheFile.h"
+#include "varc/render/RenderStateResolver.h"
+#include "varc/render/VariantPipeline.h"
+#include "varc/vulkan/RenderTarget.h"
 
 namespace varc::runtime {
 namespace {

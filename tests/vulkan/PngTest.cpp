@@ -11,7 +11,7 @@
 #include <random>
 #include <string>
 
-#include "varc/runtime/vulkan/Png.h"
+#include "varc/image/Png.h"
 
 namespace varc::runtime {
 namespace {

@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "VulkanTestSupport.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/render/DeferredRenderer.h"
-#include "varc/runtime/render/ForwardRenderer.h"
+#include "varc/reader/Pack.h"
+#include "varc/render/DeferredRenderer.h"
+#include "varc/render/ForwardRenderer.h"
 #include "varc/scene/Scene.h"
 
 namespace varc::runtime {

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "VulkanTestSupport.h"
-#include "varc/runtime/vulkan/Buffer.h"
-#include "varc/runtime/vulkan/Png.h"
-#include "varc/runtime/vulkan/RenderTarget.h"
-#include "varc/runtime/vulkan/ShaderModule.h"
+#include "varc/image/Png.h"
+#include "varc/vulkan/Buffer.h"
+#include "varc/vulkan/RenderTarget.h"
+#include "varc/vulkan/ShaderModule.h"
 
 namespace varc::runtime {
 

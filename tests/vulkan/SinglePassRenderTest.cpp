@@ -9,11 +9,11 @@
 #include <filesystem>
 
 #include "VulkanTestSupport.h"
+#include "varc/reader/Pack.h"
 #include "varc/reference/ImageCompare.h"
 #include "varc/reference/SceneTolerance.h"
 #include "varc/reference/SinglePassReference.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/render/SinglePassRenderer.h"
+#include "varc/render/SinglePassRenderer.h"
 #include "varc/scene/Scene.h"
 #include "varc/scene/VisibleLights.h"
 

@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "VulkanTestSupport.h"
-#include "varc/runtime/vulkan/RenderTarget.h"
-#include "varc/runtime/vulkan/Sampler.h"
-#include "varc/runtime/vulkan/ShaderModule.h"
-#include "varc/runtime/vulkan/Texture.h"
+#include "varc/vulkan/RenderTarget.h"
+#include "varc/vulkan/Sampler.h"
+#include "varc/vulkan/ShaderModule.h"
+#include "varc/vulkan/Texture.h"
 
 namespace varc::runtime {
 namespace {

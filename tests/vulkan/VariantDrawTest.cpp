@@ -11,19 +11,19 @@
 #include <vector>
 
 #include "VulkanTestSupport.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/PassView.h"
-#include "varc/runtime/ProgramView.h"
-#include "varc/runtime/ShaderView.h"
-#include "varc/runtime/render/DrawResources.h"
-#include "varc/runtime/render/RenderStateResolver.h"
-#include "varc/runtime/render/VariantPipeline.h"
-#include "varc/runtime/render/VertexLayout.h"
-#include "varc/runtime/vulkan/Buffer.h"
-#include "varc/runtime/vulkan/CheckVk.h"
-#include "varc/runtime/vulkan/RenderTarget.h"
-#include "varc/runtime/vulkan/Sampler.h"
-#include "varc/runtime/vulkan/Texture.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PassView.h"
+#include "varc/reader/ProgramView.h"
+#include "varc/reader/ShaderView.h"
+#include "varc/render/DrawResources.h"
+#include "varc/render/RenderStateResolver.h"
+#include "varc/render/VariantPipeline.h"
+#include "varc/render/VertexLayout.h"
+#include "varc/vulkan/Buffer.h"
+#include "varc/vulkan/CheckVk.h"
+#include "varc/vulkan/RenderTarget.h"
+#include "varc/vulkan/Sampler.h"
+#include "varc/vulkan/Texture.h"
 
 namespace varc::runtime {
 namespace {

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "VulkanTestSupport.h"
-#include "varc/runtime/vulkan/Buffer.h"
-#include "varc/runtime/vulkan/CheckVk.h"
-#include "varc/runtime/vulkan/UniqueHandle.h"
-#include "varc/runtime/vulkan/VulkanContext.h"
+#include "varc/vulkan/Buffer.h"
+#include "varc/vulkan/CheckVk.h"
+#include "varc/vulkan/UniqueHandle.h"
+#include "varc/vulkan/VulkanContext.h"
 
 extern char** environ;
 

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <utility>
 
-#include "varc/runtime/vulkan/CheckVk.h"
+#include "varc/vulkan/CheckVk.h"
 
 namespace varc::runtime::testing {
 

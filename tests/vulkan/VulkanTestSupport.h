@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "varc/core/Result.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/render/ForwardRenderer.h"
-#include "varc/runtime/vulkan/Image.h"
-#include "varc/runtime/vulkan/UniqueHandle.h"
-#include "varc/runtime/vulkan/VulkanContext.h"
+#include "varc/image/Image.h"
+#include "varc/reader/Pack.h"
+#include "varc/render/ForwardRenderer.h"
+#include "varc/vulkan/UniqueHandle.h"
+#include "varc/vulkan/VulkanContext.h"
 
 namespace varc::runtime::testing {
 

@@ -9,8 +9,8 @@
 #include <set>
 #include <string_view>
 
-#include "varc/compiler/CompileDriver.h"
-#include "varc/compiler/ShaderLoader.h"
+#include "varc/build/CompileDriver.h"
+#include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
 #include "varc/variants/PassKeywords.h"
 

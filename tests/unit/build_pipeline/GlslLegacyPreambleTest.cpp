@@ -2,7 +2,7 @@
 // Legacy GLSL built-ins are mapped per stage, and #line directives follow GLSL's convention.
 #include <gtest/gtest.h>
 
-#include "varc/compiler/GlslLegacyPreamble.h"
+#include "varc/build/GlslLegacyPreamble.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::compiler {

@@ -3,10 +3,10 @@
 // #line convention varc emits maps errors back to the right original line.
 #include <gtest/gtest.h>
 
-#include "varc/compiler/GlslLegacyPreamble.h"
-#include "varc/compiler/GlslangFrontend.h"
-#include "varc/compiler/GlslangLogParser.h"
-#include "varc/compiler/SpirvOptimizer.h"
+#include "varc/build/GlslLegacyPreamble.h"
+#include "varc/build/GlslangFrontend.h"
+#include "varc/build/GlslangLogParser.h"
+#include "varc/build/SpirvOptimizer.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::compiler {

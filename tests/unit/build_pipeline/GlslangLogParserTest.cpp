@@ -2,7 +2,7 @@
 // parseGlslangLog maps glslang's "ERROR: file:line:" lines back to files, lines and columns.
 #include <gtest/gtest.h>
 
-#include "varc/compiler/GlslangLogParser.h"
+#include "varc/build/GlslangLogParser.h"
 
 namespace varc::compiler {
 namespace {

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "varc/compiler/CompileDriver.h"
-#include "varc/compiler/ShaderLoader.h"
+#include "varc/build/CompileDriver.h"
+#include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
 
 namespace varc::compiler {

@@ -3,7 +3,7 @@
 // text can name it, token pasting included.
 #include <gtest/gtest.h>
 
-#include "varc/compiler/ObservedDefines.h"
+#include "varc/build/ObservedDefines.h"
 
 namespace varc::compiler {
 namespace {

@@ -5,7 +5,7 @@
 #include <atomic>
 #include <vector>
 
-#include "varc/compiler/ParallelFor.h"
+#include "varc/build/ParallelFor.h"
 
 namespace varc::compiler {
 namespace {

@@ -2,7 +2,7 @@
 // The predefined macros: target numbers, pass macros from LightMode, stage and keyword defines.
 #include <gtest/gtest.h>
 
-#include "varc/compiler/PassDefines.h"
+#include "varc/build/PassDefines.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::compiler {

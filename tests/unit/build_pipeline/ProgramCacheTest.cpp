@@ -9,7 +9,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "varc/compiler/ProgramCache.h"
+#include "varc/build/ProgramCache.h"
 
 namespace varc::compiler {
 namespace {

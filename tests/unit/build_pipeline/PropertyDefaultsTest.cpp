@@ -2,7 +2,7 @@
 // toPackProperty: ShaderLab default texts to the pack's property defaults.
 #include <gtest/gtest.h>
 
-#include "varc/compiler/PropertyDefaults.h"
+#include "varc/build/PropertyDefaults.h"
 
 namespace varc::compiler {
 namespace {

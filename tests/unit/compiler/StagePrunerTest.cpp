@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Tests for StagePruner: reachability, $Global grouping, #line mapping, determinism, fallbacks.
-#include "varc/compiler/StagePruner.h"
+#include "varc/frontend/StagePruner.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -5,11 +5,11 @@
 #include <string>
 
 #include "PackTestData.h"
-#include "varc/compiler/PackWriter.h"
 #include "varc/pack/PackFormat.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/PackDecoder.h"
-#include "varc/runtime/PassView.h"
+#include "varc/packwriter/PackWriter.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PackDecoder.h"
+#include "varc/reader/PassView.h"
 
 namespace varc {
 namespace {

@@ -5,9 +5,9 @@
 #include <thread>
 
 #include "PackTestData.h"
-#include "varc/compiler/PackWriter.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/PassView.h"
+#include "varc/packwriter/PackWriter.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PassView.h"
 
 namespace varc {
 namespace {

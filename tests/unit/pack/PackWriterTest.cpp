@@ -7,9 +7,9 @@
 #include <numeric>
 
 #include "PackTestData.h"
-#include "varc/compiler/PackWriter.h"
-#include "varc/runtime/Pack.h"
-#include "varc/runtime/PackDecoder.h"
+#include "varc/packwriter/PackWriter.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PackDecoder.h"
 
 namespace varc {
 namespace {

@@ -2,7 +2,7 @@
 // fromShaderLab: ShaderLab render state literals and property references to pack render state.
 #include <gtest/gtest.h>
 
-#include "varc/compiler/RenderStateConversion.h"
+#include "varc/packwriter/RenderStateConversion.h"
 
 namespace varc {
 namespace {

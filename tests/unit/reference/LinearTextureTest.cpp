@@ -6,8 +6,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "varc/image/Png.h"
 #include "varc/reference/LinearTexture.h"
-#include "varc/runtime/vulkan/Png.h"
 
 namespace varc::reference {
 namespace {

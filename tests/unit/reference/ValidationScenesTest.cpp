@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "varc/image/Png.h"
 #include "varc/reference/ReferenceRenderer.h"
-#include "varc/runtime/vulkan/Png.h"
 #include "varc/scene/Scene.h"
 
 namespace varc::reference {

@@ -9,7 +9,7 @@
 #include <random>
 #include <set>
 
-#include "varc/runtime/render/LightVolume.h"
+#include "varc/render/LightVolume.h"
 #include "varc/scene/Scene.h"
 
 namespace varc::runtime {

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "varc/runtime/render/RenderStateResolver.h"
+#include "varc/render/RenderStateResolver.h"
 
 namespace varc::runtime {
 namespace {

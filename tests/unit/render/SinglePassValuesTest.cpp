@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "varc/runtime/render/SinglePassValues.h"
+#include "varc/render/SinglePassValues.h"
 
 namespace varc::runtime {
 namespace {

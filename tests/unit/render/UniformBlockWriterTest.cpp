@@ -3,7 +3,7 @@
 
 #include <cstring>
 
-#include "varc/runtime/render/UniformBlockWriter.h"
+#include "varc/render/UniformBlockWriter.h"
 
 namespace varc::runtime {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <cstddef>
 
-#include "varc/runtime/render/VertexLayout.h"
+#include "varc/render/VertexLayout.h"
 
 namespace varc::runtime {
 namespace {

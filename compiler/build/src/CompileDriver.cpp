@@ -1,0 +1,428 @@
+// SPDX-License-Identifier: Apache-2.0
+// Compiles every variant of every loaded pass: each distinct stage program once, in parallel.
+//
+// Three phases, each deterministic whatever the thread count:
+//  1. per (pass, variant, stage): preprocess with the variant's defines, prune to the entry
+//     point, and intern the text -> source ids (identical programs found before glslang runs).
+//     Defines the pass text never names are dropped first (ObservedDefines.h), so variants and
+//     stages that differ only in those share one preprocessing and one pruning;
+//     (driver/PassJob.h);
+//  2. per distinct source: glslang -> SPIRV-Tools optimise -> validate, in parallel, or the
+//     program cache (driver/ProgramCompiler.h);
+//  3. intern the SPIR-V bytes -> program ids, in enumeration order, and derive the statistics.
+#include "varc/build/CompileDriver.h"
+
+#include <atomic>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <set>
+#include <unordered_map>
+
+#include "DiagnosticGrouper.h"
+#include "driver/PassJob.h"
+#include "driver/ProgramCompiler.h"
+#include "varc/build/GlslLegacyPreamble.h"
+#include "varc/build/GlslangFrontend.h"
+#include "varc/build/ParallelFor.h"
+#include "varc/build/ProgramCache.h"
+#include "varc/build/StageEffects.h"
+
+namespace varc::compiler {
+
+namespace {
+
+using namespace detail;
+
+constexpr size_t kChunkSize = 256;
+
+// What a (variant, stage) item came to, remembered for every item with the same ItemKey.
+struct ItemOutcome {
+    bool ok = false;
+    uint32_t source = kNoProgram;
+    std::vector<Diagnostic> diagnostics;
+};
+
+// One distinct preprocessed, pruned program.
+struct SourceProgram {
+    size_t job = 0;
+    uint32_t stage = 0;
+    std::string entryPoint;
+    std::string text;
+    size_t firstVariant = 0;
+};
+
+class Builder {
+public:
+    Builder(const includes::SourceMap& sourceMap, const BuildOptions& options)
+        : mSourceMap(sourceMap),
+          mOptions(options),
+          mThreads(options.jobs ? options.jobs : defaultThreadCount()) {
+        if (!options.cacheDirectory.empty()) {
+            mCache = std::make_unique<ProgramCache>(options.cacheDirectory);
+        }
+    }
+
+    bool plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sink);
+    bool internSources();
+    bool compileSources();
+    BuildOutput assemble();
+    void flushDiagnostics(DiagnosticSink& sink) const { mGrouper.flush(sink); }
+
+    size_t preprocessedPrograms() const { return mPreprocessed; }
+    const std::string& cacheError() const { return mCacheError; }
+    size_t cachedStageSources() const { return mCachedStageSources; }
+
+private:
+    bool internChunk(size_t jobIndex, size_t firstItem, size_t count);
+    uint32_t internSource(size_t jobIndex, size_t variant, size_t stageIndex, std::string text);
+    void applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
+                      const ItemOutcome& outcome);
+    CompiledSource compileSource(const SourceProgram& source) const;
+    // Remembers the first failure to write the cache (thread-safe); the build goes on.
+    void noteCacheFailure(const Status& stored) const;
+    void fillStats(const PassJob& job, CompiledPass& pass,
+                   const std::vector<uint32_t>& finalIds) const;
+
+    const includes::SourceMap& mSourceMap;
+    BuildOptions mOptions;
+    unsigned mThreads;
+    std::vector<PassJob> mJobs;
+    std::vector<SourceProgram> mSources;
+    std::unordered_map<std::string, uint32_t> mSourceIndex;           // key: stage|entry|text
+    std::unordered_map<ItemKey, ItemOutcome, ItemKeyHash> mOutcomes;  // of the current job
+    size_t mPreprocessed = 0;                                         // glslang preprocessing runs
+    size_t mCachedStageSources = 0;  // pruned sources read from the cache
+    std::vector<CompiledSource> mCompiled;
+    DiagnosticGrouper mGrouper;
+    std::unique_ptr<ProgramCache> mCache;  // null without BuildOptions::cacheDirectory
+    mutable std::mutex mCacheErrorMutex;
+    mutable std::string mCacheError;  // the first failure to store an entry
+};
+
+bool Builder::plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sink) {
+    bool ok = true;
+    for (size_t s = 0; s < shaders.size(); ++s) {
+        for (size_t p = 0; p < shaders[s].passes.size(); ++p) {
+            PassJob job;
+            job.shaderIndex = s;
+            job.passIndex = p;
+            job.shader = &shaders[s];
+            job.pass = &shaders[s].passes[p];
+            if (!collectStages(job, sink)) {
+                ok = false;
+                continue;
+            }
+            job.keys = job.pass->space->enumerate();
+            job.text = languageOf(job) == shaderlab::ProgramLanguage::Glsl
+                           ? toGlslLineConvention(job.pass->source.text)
+                           : job.pass->source.text;
+            job.sourceIds.assign(job.keys.size() * job.stages.size(), kNoProgram);
+            if (mOptions.shareUnobservedDefines) job.observed.emplace(job.text);
+            if (mCache) job.textHash = ProgramCache::hashText(job.text);
+            mJobs.push_back(std::move(job));
+        }
+    }
+    return ok;
+}
+
+uint32_t Builder::internSource(size_t jobIndex, size_t variant, size_t stageIndex,
+                               std::string text) {
+    const auto& [stage, entry] = mJobs[jobIndex].stages[stageIndex];
+    std::string key = std::to_string(stage) + "|" + entry + "|" + text;
+    auto [it, inserted] =
+        mSourceIndex.emplace(std::move(key), static_cast<uint32_t>(mSources.size()));
+    if (inserted) mSources.push_back({jobIndex, stage, entry, std::move(text), variant});
+    return it->second;
+}
+
+void Builder::applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
+                           const ItemOutcome& outcome) {
+    PassJob& job = mJobs[jobIndex];
+    if (!outcome.diagnostics.empty()) {
+        mGrouper.add(outcome.diagnostics, job.pass->pass->location,
+                     contextOf(job, job.stages[stageIndex].first, variant),
+                     {variantId(jobIndex, variant)});
+    }
+    if (!outcome.ok) return;
+    job.sourceIds[variant * job.stages.size() + stageIndex] = outcome.source;
+}
+
+// Items [firstItem, firstItem + count) of job |jobIndex| (item = variant * stages + stage):
+// preprocesses each distinct preamble once and prunes each distinct (preprocessing, stage) once,
+// in parallel, then interns in item order so source ids never depend on thread timing.
+bool Builder::internChunk(size_t jobIndex, size_t firstItem, size_t count) {
+    const PassJob& job = mJobs[jobIndex];
+    const size_t stages = job.stages.size();
+    struct Pending {
+        size_t preprocess;  // into preambles
+        size_t stageIndex;
+        StageResult result;
+    };
+    std::vector<ItemKey> itemKeys(count);
+    std::vector<size_t> pendingOf(count, SIZE_MAX);
+    std::vector<std::string> preambles;        // distinct preprocessings this chunk needs
+    std::vector<size_t> preprocessStageIndex;  // a stage that needs each preprocessing
+    std::vector<Pending> pending;
+    std::unordered_map<std::string, size_t> preprocessIndex;
+    std::unordered_map<ItemKey, size_t, ItemKeyHash> pendingIndex;
+    for (size_t i = 0; i < count; ++i) {
+        size_t item = firstItem + i;
+        size_t variant = item / stages, stageIndex = item % stages;
+        const auto& [stage, entry] = job.stages[stageIndex];
+        std::string preamble = preambleOf(job, variant, stageIndex);
+        std::string preprocessKey = preprocessKeyOf(job, stage, preamble);
+        itemKeys[i] = itemKeyOf(preprocessKey, stage, entry);
+        if (mOutcomes.count(itemKeys[i])) continue;
+        auto [known, inserted] = pendingIndex.emplace(itemKeys[i], pending.size());
+        if (inserted) {
+            auto [pre, fresh] = preprocessIndex.emplace(std::move(preprocessKey), preambles.size());
+            if (fresh) {
+                preambles.push_back(std::move(preamble));
+                preprocessStageIndex.push_back(stageIndex);
+            }
+            pending.push_back({pre->second, stageIndex, {}});
+        }
+        pendingOf[i] = known->second;
+    }
+    // The program cache may hold a pending item's pruned source already.
+    std::vector<char> resolved(pending.size(), 0);
+    std::vector<ProgramCacheKey> sourceKeys(mCache ? pending.size() : 0);
+    if (mCache) {
+        parallelFor(pending.size(), mThreads, [&](size_t p) {
+            const auto& [stage, entry] = job.stages[pending[p].stageIndex];
+            sourceKeys[p] =
+                mCache->sourceKeyOf({job.textHash, languageOf(job), stage, entry,
+                                     preambles[pending[p].preprocess], mOptions.pruneStages});
+            if (std::optional<std::string> text = mCache->loadSource(sourceKeys[p])) {
+                pending[p].result.ok = true;
+                pending[p].result.text = std::move(*text);
+                resolved[p] = 1;
+            }
+        });
+    }
+    std::vector<size_t> needed;  // the preprocessings some unresolved item needs
+    std::vector<char> isNeeded(preambles.size(), 0);
+    for (size_t p = 0; p < pending.size(); ++p) {
+        if (!resolved[p]) isNeeded[pending[p].preprocess] = 1;
+        mCachedStageSources += resolved[p];
+    }
+    for (size_t k = 0; k < preambles.size(); ++k) {
+        if (isNeeded[k]) needed.push_back(k);
+    }
+    std::vector<StageResult> preprocessed(preambles.size());
+    parallelFor(
+        needed.size(), mThreads,
+        [&](size_t n) {
+            const size_t k = needed[n];
+            const auto& [stage, entry] = job.stages[preprocessStageIndex[k]];
+            preprocessed[k] = preprocessStage(job, stage, entry, preambles[k], mSourceMap);
+        },
+        /*firstAlone=*/mSources.empty() && mPreprocessed == 0);
+    mPreprocessed += needed.size();
+    parallelFor(pending.size(), mThreads, [&](size_t p) {
+        if (resolved[p]) return;
+        const StageResult& pre = preprocessed[pending[p].preprocess];
+        StageResult& result = pending[p].result;
+        result.ok = pre.ok;
+        result.diagnostics = pre.diagnostics;
+        if (!pre.ok) return;
+        result.text = pruneStage(job, pre.text, job.stages[pending[p].stageIndex].second, mOptions);
+        // Only silent preprocessings are cached: a hit must not lose a warning.
+        if (mCache && result.diagnostics.empty()) {
+            noteCacheFailure(mCache->storeSource(sourceKeys[p], result.text));
+        }
+    });
+    for (size_t i = 0; i < count; ++i) {
+        size_t item = firstItem + i;
+        size_t variant = item / stages, stageIndex = item % stages;
+        auto known = mOutcomes.find(itemKeys[i]);
+        if (known == mOutcomes.end()) {
+            StageResult& result = pending[pendingOf[i]].result;
+            ItemOutcome outcome{result.ok, kNoProgram, std::move(result.diagnostics)};
+            if (result.ok)
+                outcome.source =
+                    internSource(jobIndex, variant, stageIndex, std::move(result.text));
+            known = mOutcomes.emplace(itemKeys[i], std::move(outcome)).first;
+        }
+        applyOutcome(jobIndex, variant, stageIndex, known->second);
+    }
+    return !(mGrouper.hasErrors() && !mOptions.keepGoing);
+}
+
+bool Builder::internSources() {
+    for (size_t j = 0; j < mJobs.size(); ++j) {
+        mOutcomes.clear();
+        const PassJob& job = mJobs[j];
+        size_t items = job.keys.size() * job.stages.size();
+        for (size_t chunk = 0; chunk < items; chunk += kChunkSize) {
+            if (!internChunk(j, chunk, std::min(kChunkSize, items - chunk))) return false;
+        }
+    }
+    return !mGrouper.hasErrors();
+}
+
+void Builder::noteCacheFailure(const Status& stored) const {
+    if (stored) return;
+    std::lock_guard<std::mutex> lock(mCacheErrorMutex);
+    if (mCacheError.empty()) mCacheError = stored.error().detail;
+}
+
+CompiledSource Builder::compileSource(const SourceProgram& source) const {
+    const PassJob& job = mJobs[source.job];
+    return compileStageProgram({source.text, languageOf(job), source.stage, source.entryPoint,
+                                job.pass->pass->program->origin},
+                               mOptions, mCache.get(), mSourceMap,
+                               [this](const Status& stored) { noteCacheFailure(stored); });
+}
+
+bool Builder::compileSources() {
+    mCompiled.assign(mSources.size(), {});
+    std::atomic<bool> failed{false};
+    std::atomic<size_t> done{0};
+    parallelFor(
+        mSources.size(), mThreads,
+        [&](size_t i) {
+            if (failed.load() && !mOptions.keepGoing) return;
+            double start = threadCpuSeconds();
+            mCompiled[i] = compileSource(mSources[i]);
+            mCompiled[i].seconds = threadCpuSeconds() - start;
+            if (!mCompiled[i].ok) failed.store(true);
+            if (mOptions.progress) mOptions.progress(done.fetch_add(1) + 1, mSources.size());
+        },
+        /*firstAlone=*/true);
+    // The variants behind each program with diagnostics, to count each affected variant once.
+    std::vector<std::vector<uint64_t>> variantsOf(mSources.size());
+    for (size_t j = 0; j < mJobs.size(); ++j) {
+        const PassJob& job = mJobs[j];
+        for (size_t item = 0; item < job.sourceIds.size(); ++item) {
+            uint32_t source = job.sourceIds[item];
+            if (source != kNoProgram && !mCompiled[source].diagnostics.empty()) {
+                variantsOf[source].push_back(variantId(j, item / job.stages.size()));
+            }
+        }
+    }
+    for (size_t i = 0; i < mSources.size(); ++i) {
+        const SourceProgram& source = mSources[i];
+        if (mCompiled[i].diagnostics.empty()) continue;
+        const PassJob& job = mJobs[source.job];
+        mGrouper.add(mCompiled[i].diagnostics, job.pass->pass->location,
+                     contextOf(job, source.stage, source.firstVariant), variantsOf[i]);
+    }
+    return !failed.load() && !mGrouper.hasErrors();
+}
+
+void Builder::fillStats(const PassJob& job, CompiledPass& pass,
+                        const std::vector<uint32_t>& finalIds) const {
+    pass.stats.declaredVariants = job.pass->space->fullCount();
+    pass.stats.variants = job.keys.size();
+    for (size_t stageIndex = 0; stageIndex < job.stages.size(); ++stageIndex) {
+        size_t slot = stageSlot(job.stages[stageIndex].first);
+        std::set<uint32_t> sources, modules;
+        for (size_t v = 0; v < job.keys.size(); ++v) {
+            uint32_t source = job.sourceIds[v * job.stages.size() + stageIndex];
+            sources.insert(source);
+            modules.insert(finalIds[source]);
+        }
+        pass.stats.distinctSources[slot] = sources.size();
+        pass.stats.distinctModules[slot] = modules.size();
+    }
+}
+
+// Interns SPIR-V bytes in enumeration order, so program ids never depend on thread timing.
+BuildOutput Builder::assemble() {
+    BuildOutput output;
+    output.compiledSources = mSources.size();
+    for (const CompiledSource& compiled : mCompiled) output.cachedSources += compiled.fromCache;
+    for (const CompiledSource& compiled : mCompiled) output.compileSeconds += compiled.seconds;
+    std::map<std::vector<uint32_t>, uint32_t> byBytes;
+    std::vector<uint32_t> finalIds(mSources.size(), kNoProgram);
+    for (const PassJob& job : mJobs) {
+        for (uint32_t source : job.sourceIds) {
+            if (finalIds[source] != kNoProgram) continue;
+            const SourceProgram& program = mSources[source];
+            auto [it, inserted] = byBytes.emplace(mCompiled[source].spirv,
+                                                  static_cast<uint32_t>(output.programs.size()));
+            if (inserted) {
+                output.programs.push_back({program.stage, program.entryPoint,
+                                           mCompiled[source].spirv, mCompiled[source].reflection,
+                                           job.shaderIndex, job.passIndex});
+            }
+            finalIds[source] = it->second;
+        }
+    }
+    for (const PassJob& job : mJobs) {
+        CompiledPass pass;
+        pass.shaderIndex = job.shaderIndex;
+        pass.passIndex = job.passIndex;
+        for (size_t v = 0; v < job.keys.size(); ++v) {
+            CompiledVariant variant{job.keys[v], {}};
+            variant.programs.fill(kNoProgram);
+            for (size_t s = 0; s < job.stages.size(); ++s) {
+                variant.programs[stageSlot(job.stages[s].first)] =
+                    finalIds[job.sourceIds[v * job.stages.size() + s]];
+            }
+            pass.variants.push_back(variant);
+        }
+        fillStats(job, pass, finalIds);
+        pass.setStageEffects = computeSetStageEffects(*job.pass->space, pass.variants);
+        output.passes.push_back(std::move(pass));
+    }
+    return output;
+}
+
+}  // namespace
+
+size_t stageSlot(uint32_t stageBit) {
+    switch (stageBit) {
+        case variants::kStageVertex:
+            return 0;
+        case variants::kStageFragment:
+            return 1;
+        case variants::kStageGeometry:
+            return 2;
+        case variants::kStageHull:
+            return 3;
+        case variants::kStageDomain:
+            return 4;
+        default:
+            return kStageCount;
+    }
+}
+
+uint32_t stageBitOfSlot(size_t slot) {
+    static constexpr uint32_t kBits[kStageCount] = {
+        variants::kStageVertex, variants::kStageFragment, variants::kStageGeometry,
+        variants::kStageHull, variants::kStageDomain};
+    return slot < kStageCount ? kBits[slot] : 0;
+}
+
+const char* stageName(uint32_t stageBit) {
+    static const char* const kNames[kStageCount] = {"vertex", "fragment", "geometry", "hull",
+                                                    "domain"};
+    size_t slot = stageSlot(stageBit);
+    return slot < kStageCount ? kNames[slot] : "unknown";
+}
+
+std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shaders,
+                                         const includes::SourceMap& sourceMap,
+                                         const BuildOptions& options, DiagnosticSink& sink) {
+    initializeGlslang();
+    Builder builder(sourceMap, options);
+    // Without --keep-going the first failing phase ends the build; with it, every phase runs so
+    // that all errors are reported at once.
+    bool ok = builder.plan(shaders, sink);
+    if (ok || options.keepGoing) ok = builder.internSources() && ok;
+    if (ok || options.keepGoing) ok = builder.compileSources() && ok;
+    builder.flushDiagnostics(sink);
+    if (!builder.cacheError().empty()) {
+        sink.warning({}, "the program cache is not updated: " + builder.cacheError());
+    }
+    if (!ok) return std::nullopt;
+    BuildOutput output = builder.assemble();
+    output.preprocessedPrograms = builder.preprocessedPrograms();
+    output.cachedStageSources = builder.cachedStageSources();
+    return output;
+}
+
+}  // namespace varc::compiler

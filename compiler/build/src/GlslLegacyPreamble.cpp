@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: Apache-2.0
+// Maps legacy GLSL built-ins onto declarations that Vulkan SPIR-V accepts.
+#include "varc/build/GlslLegacyPreamble.h"
+
+#include "varc/variants/PassKeywords.h"
+
+#include <cctype>
+#include <cstdlib>
+
+namespace varc::compiler {
+
+namespace {
+
+struct LegacyBuiltin {
+    const char* name;         // the gl_ name the source uses
+    const char* declaration;  // what replaces it, declared as varc_<suffix>
+    uint32_t stages;          // where it may be used
+};
+
+// Vertex attributes become inputs; fixed-function state becomes uniforms of the default block.
+constexpr LegacyBuiltin kBuiltins[] = {
+    {"gl_Vertex", "in vec4 varc_Vertex;", variants::kStageVertex},
+    {"gl_Normal", "in vec3 varc_Normal;", variants::kStageVertex},
+    {"gl_Color", "in vec4 varc_Color;", variants::kStageVertex},
+    {"gl_MultiTexCoord0", "in vec4 varc_MultiTexCoord0;", variants::kStageVertex},
+    {"gl_MultiTexCoord1", "in vec4 varc_MultiTexCoord1;", variants::kStageVertex},
+    {"gl_MultiTexCoord2", "in vec4 varc_MultiTexCoord2;", variants::kStageVertex},
+    {"gl_MultiTexCoord3", "in vec4 varc_MultiTexCoord3;", variants::kStageVertex},
+    {"gl_ModelViewProjectionMatrix", "uniform mat4 varc_ModelViewProjectionMatrix;", variants::kStageAll},
+    {"gl_ModelViewMatrix", "uniform mat4 varc_ModelViewMatrix;", variants::kStageAll},
+    {"gl_ProjectionMatrix", "uniform mat4 varc_ProjectionMatrix;", variants::kStageAll},
+    {"gl_NormalMatrix", "uniform mat3 varc_NormalMatrix;", variants::kStageAll},
+    {"gl_ModelViewMatrixInverseTranspose", "uniform mat4 varc_ModelViewMatrixInverseTranspose;",
+     variants::kStageAll},
+    {"gl_LightModel",
+     "struct varc_LightModelParameters { vec4 ambient; };\n"
+     "uniform varc_LightModelParameters varc_LightModel;",
+     variants::kStageAll},
+    {"gl_FragColor", "out vec4 varc_FragColor;", variants::kStageFragment},
+};
+
+bool mentions(std::string_view source, std::string_view name) {
+    for (size_t at = source.find(name); at != std::string_view::npos; at = source.find(name, at + 1)) {
+        size_t end = at + name.size();
+        char next = end < source.size() ? source[end] : ' ';
+        bool identifierContinues = std::isalnum(static_cast<unsigned char>(next)) || next == '_';
+        if (!identifierContinues) return true;
+    }
+    return false;
+}
+
+// The number after `#version`, or kLegacyGlslVersion; sets |es| for "#version 300 es".
+int declaredVersion(std::string_view source, bool& es) {
+    es = false;
+    size_t at = source.find("#version");
+    if (at == std::string_view::npos) return kLegacyGlslVersion;
+    size_t end = source.find('\n', at);
+    std::string line(source.substr(at + 8, end == std::string_view::npos ? end : end - at - 8));
+    es = line.find("es") != std::string::npos;
+    return std::atoi(line.c_str());
+}
+
+bool directiveSetsNextLine(std::string_view source) {
+    bool es = false;
+    int version = declaredVersion(source, es);
+    return es ? version >= 300 : version >= 330;
+}
+
+// Rewrites one "#line N rest" line to "#line N-1 rest"; other lines are returned unchanged.
+std::string shiftLineDirective(std::string_view line) {
+    size_t hash = line.find_first_not_of(" \t");
+    if (hash == std::string_view::npos || line[hash] != '#') return std::string(line);
+    size_t word = line.find_first_not_of(" \t", hash + 1);
+    if (word == std::string_view::npos || line.substr(word, 4) != "line") return std::string(line);
+    size_t number = line.find_first_not_of(" \t", word + 4);
+    size_t numberEnd = line.find_first_not_of("0123456789", number);
+    if (number == std::string_view::npos || numberEnd == number) return std::string(line);
+    long value = std::atol(std::string(line.substr(number, numberEnd - number)).c_str());
+    return std::string(line.substr(0, number)) + std::to_string(value - 1) +
+           std::string(line.substr(numberEnd == std::string_view::npos ? line.size() : numberEnd));
+}
+
+}  // namespace
+
+std::string toGlslLineConvention(std::string_view source) {
+    if (directiveSetsNextLine(source)) return std::string(source);
+    std::string result;
+    result.reserve(source.size());
+    while (!source.empty()) {
+        size_t end = source.find('\n');
+        std::string_view line = source.substr(0, end);
+        result += shiftLineDirective(line);
+        if (end == std::string_view::npos) break;
+        result += '\n';
+        source.remove_prefix(end + 1);
+    }
+    return result;
+}
+
+std::string legacyGlslPreamble(std::string_view source, uint32_t stage) {
+    std::string text;
+    for (const LegacyBuiltin& builtin : kBuiltins) {
+        if (!(builtin.stages & stage) || !mentions(source, builtin.name)) continue;
+        std::string name = builtin.name;
+        text += std::string(builtin.declaration) + "\n";
+        text += "#define " + name + " varc_" + name.substr(3) + "\n";
+    }
+    if (stage == variants::kStageVertex) text += "#define varying out\n";
+    if (stage == variants::kStageFragment) text += "#define varying in\n";
+    return text;
+}
+
+}  // namespace varc::compiler

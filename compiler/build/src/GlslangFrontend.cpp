@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: Apache-2.0
+// glslang in-process: preprocess and compile one program stage to SPIR-V.
+#include "varc/build/GlslangFrontend.h"
+
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+#include <glslang/SPIRV/GlslangToSpv.h>
+#include <glslang/build_info.h>
+
+#include <memory>
+#include <mutex>
+
+#include "varc/build/GlslLegacyPreamble.h"
+#include "varc/variants/PassKeywords.h"
+
+namespace varc::compiler {
+
+namespace {
+
+EShLanguage toGlslangStage(uint32_t stage) {
+    switch (stage) {
+        case variants::kStageVertex: return EShLangVertex;
+        case variants::kStageFragment: return EShLangFragment;
+        case variants::kStageGeometry: return EShLangGeometry;
+        case variants::kStageHull: return EShLangTessControl;
+        case variants::kStageDomain: return EShLangTessEvaluation;
+        default: return EShLangVertex;
+    }
+}
+
+bool isHlsl(const FrontendInput& input) {
+    return input.language != shaderlab::ProgramLanguage::Glsl;
+}
+
+EShMessages messagesFor(const FrontendInput& input) {
+    int messages = EShMsgSpvRules | EShMsgVulkanRules;
+    if (isHlsl(input)) messages |= EShMsgReadHlsl | EShMsgHlslDX9Compatible | EShMsgHlslLegalization;
+    return static_cast<EShMessages>(messages);
+}
+
+uint32_t descriptorSetOfStage(uint32_t stage) {
+    switch (stage) {
+        case variants::kStageVertex: return 0;
+        case variants::kStageFragment: return 1;
+        case variants::kStageGeometry: return 2;
+        case variants::kStageHull: return 3;
+        case variants::kStageDomain: return 4;
+    }
+    return 0;
+}
+
+// Default version for sources without `#version`: HLSL ignores it; see GlslLegacyPreamble.h.
+int defaultVersion(const FrontendInput& input) { return isHlsl(input) ? 100 : kLegacyGlslVersion; }
+
+// A TShader configured for |input|; |text| and |preamble| must outlive it.
+std::unique_ptr<glslang::TShader> makeShader(const FrontendInput& input, const char* const* text,
+                                             const int* length, const std::string& preamble) {
+    EShLanguage stage = toGlslangStage(input.stage);
+    auto shader = std::make_unique<glslang::TShader>(stage);
+    static const char* const kNames[] = {"program"};
+    shader->setStringsWithLengthsAndNames(text, length, kNames, 1);
+    shader->setPreamble(preamble.c_str());
+    shader->setEntryPoint(std::string(input.entryPoint).c_str());
+    shader->setSourceEntryPoint(std::string(input.entryPoint).c_str());
+    glslang::EShSource source = isHlsl(input) ? glslang::EShSourceHlsl : glslang::EShSourceGlsl;
+    shader->setEnvInput(source, stage, glslang::EShClientVulkan, 100);
+    if (!isHlsl(input)) shader->setEnvInputVulkanRulesRelaxed();
+    shader->setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
+    shader->setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+    if (isHlsl(input)) shader->setEnvTargetHlslFunctionality1();
+    shader->setAutoMapBindings(true);
+    shader->setAutoMapLocations(true);
+    // One descriptor set per stage (docs/SHADER_ABI.md §1): bindings are numbered per program, so
+    // two stages sharing set 0 would give one binding two meanings in a pipeline layout.
+    shader->setResourceSetBinding({std::to_string(descriptorSetOfStage(input.stage))});
+    return shader;
+}
+
+}  // namespace
+
+void initializeGlslang() {
+    static std::once_flag once;
+    std::call_once(once, [] { glslang::InitializeProcess(); });
+}
+
+PreprocessOutput preprocessProgram(const FrontendInput& input) {
+    initializeGlslang();
+    const char* text = input.text.data();
+    int length = static_cast<int>(input.text.size());
+    std::string preamble(input.preamble);
+    auto shader = makeShader(input, &text, &length, preamble);
+    PreprocessOutput output;
+    glslang::TShader::ForbidIncluder noIncludes;  // includes were spliced by varc already
+    output.ok = shader->preprocess(GetDefaultResources(), defaultVersion(input), ENoProfile, false,
+                                   false, messagesFor(input), &output.text, noIncludes);
+    output.log = shader->getInfoLog();
+    return output;
+}
+
+CompileOutput compileProgram(const FrontendInput& input) {
+    initializeGlslang();
+    const char* text = input.text.data();
+    int length = static_cast<int>(input.text.size());
+    std::string preamble(input.preamble);
+    auto shader = makeShader(input, &text, &length, preamble);
+    CompileOutput output;
+    EShMessages messages = messagesFor(input);
+    if (!shader->parse(GetDefaultResources(), defaultVersion(input), false, messages)) {
+        output.log = shader->getInfoLog();
+        return output;
+    }
+    glslang::TProgram program;
+    program.addShader(shader.get());
+    if (!program.link(messages) || !program.mapIO()) {
+        output.log = std::string(shader->getInfoLog()) + program.getInfoLog();
+        return output;
+    }
+    glslang::SpvOptions options;
+    options.disableOptimizer = true;  // SPIRV-Tools runs afterwards with varc's -O level
+    spv::SpvBuildLogger logger;
+    glslang::GlslangToSpv(*program.getIntermediate(toGlslangStage(input.stage)), output.spirv,
+                          &logger, &options);
+    output.log = logger.getAllMessages();
+    output.ok = !output.spirv.empty();
+    return output;
+}
+
+std::string glslangVersionString() {
+    return std::to_string(GLSLANG_VERSION_MAJOR) + "." +
+           std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH);
+}
+
+}  // namespace varc::compiler

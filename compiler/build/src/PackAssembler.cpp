@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: Apache-2.0
+// Turns loaded shaders plus compiled programs into the pack model.
+#include "varc/build/PackAssembler.h"
+
+#include <xxhash.h>
+
+#include <set>
+
+#include "varc/build/GlslangFrontend.h"
+#include "varc/build/PropertyDefaults.h"
+#include "varc/build/SpirvOptimizer.h"
+#include "varc/packwriter/RenderStateConversion.h"
+
+namespace varc::compiler {
+
+namespace {
+
+pack::Stage packStage(uint32_t stageBit) { return static_cast<pack::Stage>(stageSlot(stageBit)); }
+
+std::vector<pack::DeclaredSet> declaredSets(const variants::PassKeywords& keywords) {
+    std::vector<pack::DeclaredSet> sets;
+    for (const variants::KeywordSetDecl& set : keywords.sets)
+        sets.push_back({set.directive, set.keywords});
+    return sets;
+}
+
+std::optional<pack::PackPass> assemblePass(const LoadedShader& shader, const CompiledPass& compiled,
+                                           DiagnosticSink& sink) {
+    const LoadedPass& loaded = shader.passes[compiled.passIndex];
+    ConvertedRenderState state = fromShaderLab(loaded.pass->state);
+    for (const std::string& error : state.errors) {
+        sink.error(loaded.pass->location,
+                   error + " in " + describePass(shader.ast, *loaded.pass, loaded.index));
+    }
+    if (!state.ok()) return std::nullopt;
+    pack::PackPass pass;
+    pass.index = static_cast<uint32_t>(loaded.index);
+    pass.name = loaded.pass->name;
+    pass.lightMode = loaded.pass->lightMode();
+    pass.tags = loaded.pass->tags;
+    pass.state = state.state;
+    pass.keywordTable = loaded.space->table().names();
+    pass.sets = declaredSets(loaded.keywords);
+    for (const CompiledVariant& variant : compiled.variants) {
+        pass.variants.push_back({variant.key, variant.programs});
+    }
+    return pass;
+}
+
+pack::SourceInfo sourceInfo(const LoadedShader& shader, size_t passIndex,
+                            const includes::SourceMap& sourceMap) {
+    const LoadedPass& pass = shader.passes[passIndex];
+    SourceLocation origin = pass.pass->program->origin;
+    return {sourceMap.path(origin.file), origin.line, pass.source.dependencies};
+}
+
+// Hash of everything that decides the pack's bytes: every file read, options and versions.
+uint64_t inputsHash(const includes::SourceMap& sourceMap, const std::string& fingerprint) {
+    XXH64_state_t* state = XXH64_createState();
+    XXH64_reset(state, 0);
+    for (FileId id = 0; id < sourceMap.size(); ++id) {
+        const std::string& path = sourceMap.path(id);
+        const std::string& contents = sourceMap.contents(id);
+        XXH64_update(state, path.data(), path.size() + 1);
+        XXH64_update(state, contents.data(), contents.size());
+    }
+    XXH64_update(state, fingerprint.data(), fingerprint.size());
+    uint64_t hash = XXH64_digest(state);
+    XXH64_freeState(state);
+    return hash;
+}
+
+std::string keywordList(const std::vector<std::string>& names) {
+    if (names.empty()) return "<none>";
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : " ") + name;
+    return text;
+}
+
+// The shader's Properties defaults; one that cannot be read is left out with a warning (the
+// runtime then has no default for it, as before packs stored them).
+std::vector<pack::ShaderProperty> propertiesOf(const LoadedShader& shader, DiagnosticSink& sink) {
+    std::vector<pack::ShaderProperty> properties;
+    for (const shaderlab::Property& property : shader.ast.properties) {
+        Result<pack::ShaderProperty> converted = toPackProperty(property);
+        if (converted) {
+            properties.push_back(std::move(*converted));
+        } else {
+            sink.warning(property.location, converted.error().detail);
+        }
+    }
+    return properties;
+}
+
+}  // namespace
+
+std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& shaders,
+                                               const BuildOutput& build,
+                                               const includes::SourceMap& sourceMap,
+                                               const std::string& optionsFingerprint,
+                                               DiagnosticSink& sink) {
+    pack::PackContents contents;
+    contents.toolchain = {{"varc", VARC_VERSION},
+                          {"glslang", glslangVersionString()},
+                          {"SPIRV-Tools", spirvToolsVersionString()}};
+    std::string fingerprint = optionsFingerprint;
+    for (const pack::ToolVersion& tool : contents.toolchain)
+        fingerprint += "|" + tool.name + " " + tool.version;
+    contents.inputsHash = inputsHash(sourceMap, fingerprint);
+    bool ok = true;
+    std::vector<size_t> shaderSlot(shaders.size(), SIZE_MAX);
+    for (const CompiledPass& compiled : build.passes) {
+        const LoadedShader& shader = shaders[compiled.shaderIndex];
+        if (shaderSlot[compiled.shaderIndex] == SIZE_MAX) {
+            shaderSlot[compiled.shaderIndex] = contents.shaders.size();
+            contents.shaders.push_back({shader.ast.name, {}, propertiesOf(shader, sink)});
+        }
+        auto pass = assemblePass(shader, compiled, sink);
+        if (!pass) {
+            ok = false;
+            continue;
+        }
+        contents.shaders[shaderSlot[compiled.shaderIndex]].passes.push_back(std::move(*pass));
+    }
+    for (const CompiledProgram& program : build.programs) {
+        contents.programs.push_back(
+            {packStage(program.stage), program.entryPoint, program.spirv, program.reflection,
+             sourceInfo(shaders[program.shaderIndex], program.passIndex, sourceMap)});
+    }
+    if (!ok) return std::nullopt;
+    return contents;
+}
+
+bool checkStageInterfaces(const std::vector<LoadedShader>& shaders, const BuildOutput& build,
+                          DiagnosticSink& sink) {
+    bool ok = true;
+    std::set<std::pair<uint32_t, uint32_t>> checked;
+    for (const CompiledPass& pass : build.passes) {
+        for (const CompiledVariant& variant : pass.variants) {
+            uint32_t vertex = variant.programs[stageSlot(variants::kStageVertex)];
+            uint32_t fragment = variant.programs[stageSlot(variants::kStageFragment)];
+            if (vertex == kNoProgram || fragment == kNoProgram ||
+                !checked.insert({vertex, fragment}).second)
+                continue;
+            const auto& outputs = build.programs[vertex].reflection.outputs;
+            for (const pack::StageVariable& input : build.programs[fragment].reflection.inputs) {
+                bool matched = false;
+                for (const pack::StageVariable& output : outputs) {
+                    matched =
+                        matched || (output.location == input.location && output.type == input.type);
+                }
+                if (matched) continue;
+                const LoadedShader& shader = shaders[pass.shaderIndex];
+                const LoadedPass& loaded = shader.passes[pass.passIndex];
+                sink.error(
+                    loaded.pass->program->origin,
+                    "fragment input '" + input.name + "' (location " +
+                        std::to_string(input.location) + ", " + input.type +
+                        ") is not written by the vertex program in " +
+                        describePass(shader.ast, *loaded.pass, loaded.index) +
+                        ", keywords: " + keywordList(loaded.space->table().namesOf(variant.key)));
+                ok = false;
+            }
+        }
+    }
+    return ok;
+}
+
+}  // namespace varc::compiler

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: Apache-2.0
+// The macros varc defines before a program, as Unity does: API, target, pass, stage, keywords.
+#include "varc/build/PassDefines.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "varc/variants/PassKeywords.h"
+
+namespace varc::compiler {
+
+namespace {
+
+std::string upper(std::string_view text) {
+    std::string result(text);
+    std::transform(result.begin(), result.end(), result.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return result;
+}
+
+const char* stageMacro(uint32_t stage) {
+    switch (stage) {
+        case variants::kStageVertex: return "SHADER_STAGE_VERTEX";
+        case variants::kStageFragment: return "SHADER_STAGE_FRAGMENT";
+        case variants::kStageGeometry: return "SHADER_STAGE_GEOMETRY";
+        case variants::kStageHull: return "SHADER_STAGE_HULL";
+        case variants::kStageDomain: return "SHADER_STAGE_DOMAIN";
+        default: return nullptr;
+    }
+}
+
+// GLSLPROGRAM blocks hold every stage in one text, selected by VERTEX / FRAGMENT.
+const char* glslStageMacro(uint32_t stage) {
+    switch (stage) {
+        case variants::kStageVertex: return "VERTEX";
+        case variants::kStageFragment: return "FRAGMENT";
+        case variants::kStageGeometry: return "GEOMETRY";
+        default: return nullptr;
+    }
+}
+
+}  // namespace
+
+int shaderTargetNumber(std::string_view target) {
+    if (target.empty()) return 25;
+    size_t dot = target.find('.');
+    if (dot == std::string_view::npos || dot == 0 || dot + 2 != target.size()) return -1;
+    for (size_t i = 0; i < target.size(); ++i) {
+        if (i != dot && !std::isdigit(static_cast<unsigned char>(target[i]))) return -1;
+    }
+    return std::stoi(std::string(target.substr(0, dot))) * 10 + (target[dot + 1] - '0');
+}
+
+std::string passMacro(std::string_view lightMode) {
+    static const char* const kKnown[] = {"FORWARDBASE", "FORWARDADD",   "DEFERRED",
+                                         "SHADOWCASTER", "PREPASSBASE", "PREPASSFINAL",
+                                         "META",         "MOTIONVECTORS"};
+    std::string name = upper(lightMode);
+    for (const char* known : kKnown) {
+        if (name == known) return "UNITY_PASS_" + name;
+    }
+    return "";
+}
+
+std::string makePreamble(const DefineContext& context) {
+    std::string text;
+    auto define = [&text](const std::string& name, const std::string& value) {
+        text += "#define " + name + " " + value + "\n";
+    };
+    define("SHADER_API_VULKAN", "1");
+    define("SHADER_API_DESKTOP", "1");
+    int target = shaderTargetNumber(context.target);
+    define("SHADER_TARGET", std::to_string(target < 0 ? 25 : target));
+    define("UNITY_VERSION", std::to_string(kUnityVersion));
+    if (std::string pass = passMacro(context.lightMode); !pass.empty()) define(pass, "1");
+    if (const char* stage = stageMacro(context.stage)) define(stage, "1");
+    if (context.language == shaderlab::ProgramLanguage::Glsl) {
+        if (const char* stage = glslStageMacro(context.stage)) define(stage, "1");
+    }
+    for (const std::string& keyword : context.keywords) define(keyword, "1");
+    return text;
+}
+
+}  // namespace varc::compiler

@@ -1,0 +1,114 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "driver/PassJob.h"
+
+#include <xxhash.h>
+
+#include "varc/build/CompileDriver.h"
+#include "varc/build/GlslLegacyPreamble.h"
+#include "varc/build/GlslangFrontend.h"
+#include "varc/build/GlslangLogParser.h"
+#include "varc/build/PassDefines.h"
+#include "varc/frontend/StagePruner.h"
+#include "varc/variants/PassKeywords.h"
+
+namespace varc::compiler::detail {
+
+namespace {
+
+std::string joinKeywords(const std::vector<std::string>& names) {
+    if (names.empty()) return "<no keywords>";
+    std::string text;
+    for (const std::string& name : names) text += (text.empty() ? "" : " ") + name;
+    return text;
+}
+
+}  // namespace
+
+shaderlab::ProgramLanguage languageOf(const PassJob& job) {
+    return job.pass->pass->program->language;
+}
+
+// Identifies variant |variant| of pass job |job| across the build (for counting variants).
+uint64_t variantId(size_t job, size_t variant) {
+    return (static_cast<uint64_t>(job) << 32) | static_cast<uint64_t>(variant);
+}
+
+std::string contextOf(const PassJob& job, uint32_t stage, size_t variant) {
+    const auto& table = job.pass->space->table();
+    return std::string("in the ") + stageName(stage) + " stage of " +
+           describePass(job.shader->ast, *job.pass->pass, job.pass->index) +
+           ", keywords: " + joinKeywords(table.namesOf(job.keys[variant]));
+}
+
+// The stages a pass compiles, from its #pragma vertex/fragment/...; reports missing entries.
+bool collectStages(PassJob& job, DiagnosticSink& sink) {
+    const variants::PassKeywords& kw = job.pass->keywords;
+    bool glsl = languageOf(job) == shaderlab::ProgramLanguage::Glsl;
+    auto entry = [&](const std::string& name) { return glsl ? std::string("main") : name; };
+    if (!glsl && (kw.vertexEntry.empty() || kw.fragmentEntry.empty())) {
+        sink.error(job.pass->pass->program->origin,
+                   std::string("missing #pragma ") +
+                       (kw.vertexEntry.empty() ? "vertex" : "fragment") + " in " +
+                       describePass(job.shader->ast, *job.pass->pass, job.pass->index));
+        return false;
+    }
+    job.stages.push_back({variants::kStageVertex, entry(kw.vertexEntry)});
+    job.stages.push_back({variants::kStageFragment, entry(kw.fragmentEntry)});
+    if (!kw.geometryEntry.empty())
+        job.stages.push_back({variants::kStageGeometry, entry(kw.geometryEntry)});
+    if (!kw.hullEntry.empty()) job.stages.push_back({variants::kStageHull, kw.hullEntry});
+    if (!kw.domainEntry.empty()) job.stages.push_back({variants::kStageDomain, kw.domainEntry});
+    return true;
+}
+
+// The preamble of one (variant, stage) without the defines the pass text cannot observe.
+std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex) {
+    const auto& [stage, entry] = job.stages[stageIndex];
+    DefineContext context{job.pass->pass->lightMode(), job.pass->keywords.target, languageOf(job),
+                          stage, job.pass->space->table().namesOf(job.keys[variant])};
+    std::string preamble = job.observed
+                               ? dropUnobservedDefines(makePreamble(context), *job.observed)
+                               : makePreamble(context);
+    if (languageOf(job) == shaderlab::ProgramLanguage::Glsl) {
+        preamble += legacyGlslPreamble(job.text, stage);
+    }
+    return preamble;
+}
+
+// glslang's preprocessing of |job|'s text: HLSL's does not depend on the stage beyond the
+// preamble, GLSL's version and extension handling may.
+std::string preprocessKeyOf(const PassJob& job, uint32_t stage, std::string preamble) {
+    if (languageOf(job) != shaderlab::ProgramLanguage::Glsl) return preamble;
+    return std::to_string(stage) + "\n" + preamble;
+}
+
+ItemKey itemKeyOf(const std::string& preprocessKey, uint32_t stage, const std::string& entry) {
+    std::string text = preprocessKey;
+    text += '\0';
+    text += std::to_string(stage);
+    text += '\0';
+    text += entry;
+    XXH128_hash_t hash = XXH3_128bits(text.data(), text.size());
+    return {hash.low64, hash.high64};
+}
+
+StageResult preprocessStage(const PassJob& job, uint32_t stage, const std::string& entry,
+                            const std::string& preamble, const includes::SourceMap& sourceMap) {
+    PreprocessOutput pre = preprocessProgram({job.text, preamble, languageOf(job), stage, entry});
+    StageResult result;
+    result.diagnostics = parseGlslangLog(pre.log, sourceMap);
+    result.ok = pre.ok;
+    result.text = std::move(pre.text);
+    return result;
+}
+
+std::string pruneStage(const PassJob& job, const std::string& preprocessed,
+                       const std::string& entry, const BuildOptions& options) {
+    if (!options.pruneStages) return preprocessed;
+    ShaderDialect dialect = languageOf(job) == shaderlab::ProgramLanguage::Glsl
+                                ? ShaderDialect::Glsl
+                                : ShaderDialect::Hlsl;
+    return pruneToEntryPoint(preprocessed, entry, dialect).text;
+}
+
+}  // namespace varc::compiler::detail

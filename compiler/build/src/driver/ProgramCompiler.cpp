@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "driver/ProgramCompiler.h"
+
+#include <ctime>
+#include <optional>
+#include <string>
+
+#include "varc/build/GlslangFrontend.h"
+#include "varc/build/GlslangLogParser.h"
+#include "varc/build/SpirvOptimizer.h"
+#include "varc/build/SpirvReflection.h"
+#include "varc/variants/PassKeywords.h"
+
+namespace varc::compiler::detail {
+
+CompiledSource compileStageProgram(const StageProgram& program, const BuildOptions& options,
+                                   const ProgramCache* cache, const includes::SourceMap& sourceMap,
+                                   const std::function<void(const Status&)>& onCacheFailure) {
+    const bool vertex = program.stage == variants::kStageVertex;
+    CompiledSource result;
+    auto fail = [&](std::string message) {
+        result.diagnostics.push_back({Severity::Error, program.origin, std::move(message), {}});
+        return result;
+    };
+    // Reflection needs the debug names; what ships goes without them unless
+    // BuildOptions::debugNames. The cache keeps both forms.
+    std::optional<ProgramCacheKey> key;
+    if (cache) {
+        key = cache->keyOf({options.optimization, program.language, program.stage,
+                            program.entryPoint, program.text});
+        if (std::optional<CachedProgram> hit = cache->load(*key)) {
+            if (auto reflection = reflectSpirv(hit->spirv, hit->semantics, vertex)) {
+                result.ok = result.fromCache = true;
+                result.diagnostics = parseGlslangLog(hit->log, sourceMap);
+                result.spirv = std::move(options.debugNames ? hit->spirv : hit->stripped);
+                result.reflection = std::move(*reflection);
+                return result;
+            }
+        }
+    }
+    CompileOutput compiled =
+        compileProgram({program.text, "", program.language, program.stage, program.entryPoint});
+    result.diagnostics = parseGlslangLog(compiled.log, sourceMap);
+    if (!compiled.ok) return result;
+    SpirvResult optimized = optimizeSpirv(compiled.spirv, options.optimization);
+    if (!optimized.ok) return fail("SPIR-V optimisation failed: " + optimized.message);
+    if (auto invalid = validateSpirv(optimized.spirv)) {
+        return fail("generated SPIR-V is invalid: " + *invalid);
+    }
+    std::optional<SemanticsByLocation> semantics = hlslSemantics(compiled.spirv);
+    std::optional<pack::ProgramReflection> reflection;
+    if (semantics) reflection = reflectSpirv(optimized.spirv, *semantics, vertex);
+    if (!reflection) return fail("cannot reflect the generated SPIR-V");
+    SpirvResult stripped = stripDebugInfo(optimized.spirv);
+    if (!stripped.ok) return fail("cannot strip SPIR-V debug names: " + stripped.message);
+    if (cache) {
+        onCacheFailure(cache->store(
+            *key, {optimized.spirv, stripped.spirv, std::move(*semantics), compiled.log}));
+    }
+    result.ok = true;
+    result.spirv = std::move(options.debugNames ? optimized.spirv : stripped.spirv);
+    result.reflection = std::move(*reflection);
+    return result;
+}
+
+double threadCpuSeconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
+}
+
+}  // namespace varc::compiler::detail

@@ -1,0 +1,142 @@
+// SPDX-License-Identifier: Apache-2.0
+// The staged summary `varc build` prints.
+#include "varc/cli/BuildReport.h"
+
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "varc/variants/PassKeywords.h"
+
+namespace varc::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// "vertex 2, fragment 1" for the stages a pass compiles.
+std::string stageCounts(const std::array<size_t, compiler::kStageCount>& counts) {
+    std::string text;
+    for (size_t slot = 0; slot < compiler::kStageCount; ++slot) {
+        if (counts[slot] == 0) continue;
+        if (!text.empty()) text += ", ";
+        text += std::string(compiler::stageName(compiler::stageBitOfSlot(slot))) + " " +
+                std::to_string(counts[slot]);
+    }
+    return text;
+}
+
+uint32_t compiledStages(const compiler::CompiledPass& pass) {
+    uint32_t stages = 0;
+    for (size_t slot = 0; slot < compiler::kStageCount; ++slot) {
+        if (pass.stats.distinctModules[slot] > 0) stages |= compiler::stageBitOfSlot(slot);
+    }
+    return stages;
+}
+
+// For each declared set with keywords: the stages it turned out not to change.
+std::vector<std::pair<std::string, std::vector<std::string>>> unaffectedStages(
+    const compiler::LoadedPass& loaded, const compiler::CompiledPass& pass) {
+    std::vector<std::pair<std::string, std::vector<std::string>>> result;
+    uint32_t stages = compiledStages(pass);
+    for (size_t i = 0; i < pass.setStageEffects.size(); ++i) {
+        std::vector<std::string> unaffected;
+        for (size_t slot = 0; slot < compiler::kStageCount; ++slot) {
+            uint32_t bit = compiler::stageBitOfSlot(slot);
+            if ((stages & bit) && !(pass.setStageEffects[i] & bit)) {
+                unaffected.push_back(compiler::stageName(bit));
+            }
+        }
+        std::string keywords;
+        for (const std::string& keyword : loaded.keywords.sets[i].keywords) {
+            if (!keyword.empty()) keywords += (keywords.empty() ? "" : " ") + keyword;
+        }
+        if (!unaffected.empty() && !keywords.empty()) result.push_back({keywords, unaffected});
+    }
+    return result;
+}
+
+std::string joined(const std::vector<std::string>& words, const char* separator) {
+    std::string text;
+    for (const std::string& word : words) text += (text.empty() ? "" : separator) + word;
+    return text;
+}
+
+std::string kibibytes(uint64_t bytes) {
+    std::ostringstream out;
+    out << std::fixed << std::setprecision(1) << static_cast<double>(bytes) / 1024.0 << " KiB";
+    return out.str();
+}
+
+}  // namespace
+
+void printBuildReport(const std::vector<compiler::LoadedShader>& shaders,
+                      const compiler::BuildOutput& build, const PackSizes& sizes, double seconds,
+                      std::ostream& out) {
+    uint64_t variants = 0;
+    for (const compiler::CompiledPass& pass : build.passes) {
+        const compiler::LoadedShader& shader = shaders[pass.shaderIndex];
+        const compiler::LoadedPass& loaded = shader.passes[pass.passIndex];
+        variants += pass.stats.variants;
+        out << "Compiling " << compiler::describePass(shader.ast, *loaded.pass, loaded.index)
+            << "\n"
+            << "    Full variant space:          " << pass.stats.declaredVariants << "\n"
+            << "    After skips and rules:       " << pass.stats.variants << "\n"
+            << "    Distinct programs:           " << stageCounts(pass.stats.distinctSources)
+            << "\n"
+            << "    Compiled SPIR-V modules:     " << stageCounts(pass.stats.distinctModules)
+            << "\n";
+        for (const auto& [keywords, stages] : unaffectedStages(loaded, pass)) {
+            out << "    Does not affect " << joined(stages, ", ") << ": " << keywords << "\n";
+        }
+    }
+    out << "Built " << variants << " variants from " << build.compiledSources
+        << " distinct programs (" << build.preprocessedPrograms << " preprocessed";
+    if (build.cachedSources + build.cachedStageSources > 0) {
+        out << "; cache: " << build.cachedStageSources << " sources, " << build.cachedSources
+            << " programs";
+    }
+    out << ") into " << build.programs.size() << " SPIR-V modules in " << std::fixed
+        << std::setprecision(2) << seconds << " s; raw SPIR-V " << kibibytes(sizes.rawSpirvBytes)
+        << ", unique " << kibibytes(sizes.uniqueSpirvBytes) << ", pack "
+        << kibibytes(sizes.packBytes) << "\n";
+}
+
+Json buildReportJson(const std::vector<compiler::LoadedShader>& shaders,
+                     const compiler::BuildOutput& build, const PackSizes& sizes, double seconds) {
+    Json passes = Json::array();
+    for (const compiler::CompiledPass& pass : build.passes) {
+        const compiler::LoadedShader& shader = shaders[pass.shaderIndex];
+        const compiler::LoadedPass& loaded = shader.passes[pass.passIndex];
+        Json sources = Json::object(), programs = Json::object(), unaffected = Json::object();
+        for (size_t slot = 0; slot < compiler::kStageCount; ++slot) {
+            if (pass.stats.distinctModules[slot] == 0) continue;
+            const char* name = compiler::stageName(compiler::stageBitOfSlot(slot));
+            sources[name] = pass.stats.distinctSources[slot];
+            programs[name] = pass.stats.distinctModules[slot];
+        }
+        for (const auto& [keywords, stages] : unaffectedStages(loaded, pass))
+            unaffected[keywords] = stages;
+        passes.push_back({{"shader", shader.ast.name},
+                          {"pass", loaded.index},
+                          {"lightmode", loaded.pass->lightMode()},
+                          {"declared", pass.stats.declaredVariants},
+                          {"variants", pass.stats.variants},
+                          {"sources", sources},
+                          {"programs", programs},
+                          {"unaffected", unaffected}});
+    }
+    return {{"passes", passes},
+            {"programs", build.programs.size()},
+            {"compiled_sources", build.compiledSources},
+            {"preprocessed", build.preprocessedPrograms},
+            {"cached_sources", build.cachedSources},
+            {"cached_stage_sources", build.cachedStageSources},
+            {"bytes",
+             {{"raw", sizes.rawSpirvBytes},
+              {"unique", sizes.uniqueSpirvBytes},
+              {"pack", sizes.packBytes}}},
+            {"seconds", seconds}};
+}
+
+}  // namespace varc::cli

@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: Apache-2.0
+// The `varc` command-line tool as a library: option parsing, then one command.
+#include "varc/cli/Cli.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <ostream>
+
+#include "varc/build/CompileDriver.h"
+#include "varc/build/Depfile.h"
+#include "varc/build/PackAssembler.h"
+#include "varc/cli/BuildReport.h"
+#include "varc/cli/DiagnosticPrinter.h"
+#include "varc/cli/LockCheck.h"
+#include "varc/cli/LockFile.h"
+#include "varc/cli/Options.h"
+#include "varc/cli/PackCommands.h"
+#include "varc/cli/RenderCommands.h"
+#include "varc/cli/ShaderInputs.h"
+#include "varc/cli/VariantReport.h"
+#include "varc/core/AtomicFile.h"
+#include "varc/frontend/ShaderLoader.h"
+#include "varc/packwriter/PackWriter.h"
+
+namespace varc::cli {
+
+namespace {
+
+// State shared by the commands: the files read and the diagnostics reported so far.
+struct Session {
+    includes::DiskFileSystem fileSystem;
+    includes::SourceMap sourceMap;
+    DiagnosticList diagnostics;
+};
+
+includes::IncludeOptions includeOptions(const Options& options) {
+    includes::IncludeOptions result;
+    result.includeDirs = options.includeDirs;
+    result.builtinDir = options.builtinIncludeDir;
+#ifdef VARC_DEFAULT_BUILTIN_INCLUDE_DIR
+    if (result.builtinDir.empty()) result.builtinDir = VARC_DEFAULT_BUILTIN_INCLUDE_DIR;
+#endif
+    return result;
+}
+
+// Loads every input shader; false when any failed (diagnostics are in |session|).
+bool loadAll(const Options& options, Session& session,
+             std::vector<compiler::LoadedShader>& shaders) {
+    std::vector<std::string> files = findShaderFiles(options.inputs, session.diagnostics);
+    includes::IncludeOptions include = includeOptions(options);
+    for (const std::string& file : files) {
+        auto shader = compiler::loadShader(file, session.fileSystem, session.sourceMap, include,
+                                           session.diagnostics);
+        if (shader) shaders.push_back(std::move(*shader));
+    }
+    return !session.diagnostics.hasErrors();
+}
+
+int runVariants(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
+    std::vector<compiler::LoadedShader> shaders;
+    bool ok = loadAll(options, session, shaders);
+    printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+    if (!ok) return kExitFailure;
+    if (options.json) {
+        out << variantsJson(shaders, options.list).dump() << "\n";
+    } else {
+        printVariantsText(shaders, session.sourceMap, options.list, out);
+    }
+    return kExitOk;
+}
+
+int runLock(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
+    std::vector<compiler::LoadedShader> shaders;
+    bool ok = loadAll(options, session, shaders);
+    printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+    if (!ok) return kExitFailure;
+    std::string lockDir = std::filesystem::path(options.lockPath).parent_path().string();
+    LockFile lock = makeLock(shaders, lockDir);
+    Status written = writeFileAtomically(options.lockPath, serializeLock(lock));
+    if (!written) {
+        err << "varc: error: " << written.error().detail << "\n";
+        return kExitFailure;
+    }
+    out << "wrote " << options.lockPath << ": " << lock.shaders.size() << " shaders\n";
+    return kExitOk;
+}
+
+std::optional<LockFile> readLock(const std::string& path, Session& session, std::ostream& err) {
+    auto text = session.fileSystem.read(path);
+    if (!text) {
+        err << "varc: error: cannot read lock file '" << path << "'\n";
+        return std::nullopt;
+    }
+    Result<LockFile> lock = parseLock(*text, path);
+    if (!lock) {
+        err << "varc: error: " << lock.error().detail << "\n";
+        return std::nullopt;
+    }
+    return std::move(lock).value();
+}
+
+int runCheck(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
+    std::optional<LockFile> lock = readLock(options.lockPath, session, err);
+    if (!lock) return kExitUsage;
+    std::vector<compiler::LoadedShader> shaders;
+    if (!loadAll(options, session, shaders)) {
+        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+        return kExitUsage;
+    }
+    DiagnosticList findings;
+    bool passed = checkAgainstLock(*lock, shaders, {options.maxGrowth, options.budget}, findings);
+    printDiagnostics(findings.diagnostics(), session.sourceMap, err);
+    if (!passed) {
+        err << "varc check: variant counts differ from " << options.lockPath
+            << "; if the change is intended, run `varc lock -o " << options.lockPath << "`\n";
+        return kExitFailure;
+    }
+    out << "varc check: " << shaders.size() << " shaders match " << options.lockPath << "\n";
+    return kExitOk;
+}
+
+// Raw bytes count every variant's stages as if stored separately; unique counts each module once.
+PackSizes measureSpirv(const compiler::BuildOutput& build) {
+    PackSizes sizes;
+    for (const compiler::CompiledProgram& program : build.programs) {
+        sizes.uniqueSpirvBytes += program.spirv.size() * sizeof(uint32_t);
+    }
+    for (const compiler::CompiledPass& pass : build.passes) {
+        for (const compiler::CompiledVariant& variant : pass.variants) {
+            for (uint32_t program : variant.programs) {
+                if (program == compiler::kNoProgram) continue;
+                sizes.rawSpirvBytes += build.programs[program].spirv.size() * sizeof(uint32_t);
+            }
+        }
+    }
+    return sizes;
+}
+
+std::vector<std::string> buildDependencies(const std::vector<compiler::LoadedShader>& shaders) {
+    std::vector<std::string> dependencies;
+    for (const compiler::LoadedShader& shader : shaders) {
+        dependencies.push_back(shader.path);
+        for (const compiler::LoadedPass& pass : shader.passes) {
+            dependencies.insert(dependencies.end(), pass.source.dependencies.begin(),
+                                pass.source.dependencies.end());
+        }
+    }
+    return dependencies;
+}
+
+// Prints "[done/total] compiling" on a terminal, at most ~20 times a second.
+std::function<void(size_t, size_t)> progressPrinter(std::ostream& err) {
+    if (!::isatty(STDERR_FILENO)) return {};
+    auto state = std::make_shared<std::pair<std::mutex, std::chrono::steady_clock::time_point>>();
+    return [state, &err](size_t done, size_t total) {
+        std::lock_guard<std::mutex> lock(state->first);
+        auto now = std::chrono::steady_clock::now();
+        if (done != total && now - state->second < std::chrono::milliseconds(50)) return;
+        state->second = now;
+        err << "\r[" << done << "/" << total << "] compiling" << (done == total ? "\n" : "")
+            << std::flush;
+    };
+}
+
+int runBuild(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
+    auto start = std::chrono::steady_clock::now();
+    std::vector<compiler::LoadedShader> shaders;
+    if (!loadAll(options, session, shaders)) {
+        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+        return kExitFailure;
+    }
+    compiler::BuildOptions buildOptions;
+    buildOptions.optimization = *compiler::parseOptimizationLevel(options.optimization);
+    buildOptions.jobs = options.jobs;
+    buildOptions.keepGoing = options.keepGoing;
+    buildOptions.cacheDirectory = options.cacheDirectory;
+    buildOptions.debugNames = options.debugNames;
+    buildOptions.progress = progressPrinter(err);
+    auto build = compiler::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);
+    printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+    if (!build) {
+        err << "varc build: failed; " << options.outputPath << " was not written\n";
+        return kExitFailure;
+    }
+    PackSizes sizes = measureSpirv(*build);
+    std::optional<pack::PackContents> contents;
+    if (compiler::checkStageInterfaces(shaders, *build, session.diagnostics)) {
+        contents = compiler::assemblePack(shaders, *build, session.sourceMap,
+                                          "optimization=" + options.optimization, session.diagnostics);
+    }
+    if (!contents) {
+        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+        err << "varc build: failed; " << options.outputPath << " was not written\n";
+        return kExitFailure;
+    }
+    compiler::PackWriteStats stats;
+    compiler::PackWriteOptions writeOptions;
+    writeOptions.compressionLevel = options.compressionLevel;
+    Status written = compiler::writePack(options.outputPath, *contents, writeOptions, &stats);
+    if (!written) {
+        err << "varc: error: " << written.error().detail << "\n";
+        return kExitFailure;
+    }
+    sizes.packBytes = stats.packBytes;
+    if (!options.depfilePath.empty()) {
+        Status depfile = writeFileAtomically(
+            options.depfilePath, compiler::makeDepfile(options.outputPath, buildDependencies(shaders)));
+        if (!depfile) {
+            err << "varc: error: " << depfile.error().detail << "\n";
+            return kExitFailure;
+        }
+    }
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (options.json) {
+        out << buildReportJson(shaders, *build, sizes, seconds).dump() << "\n";
+    } else {
+        printBuildReport(shaders, *build, sizes, seconds, out);
+        out << "wrote " << options.outputPath << "\n";
+    }
+    return kExitOk;
+}
+
+}  // namespace
+
+int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    Options options;
+    if (auto exitCode = parseOptions(argc, argv, options, out, err)) return *exitCode;
+    Session session;
+    switch (options.command) {
+        case Command::Variants: return runVariants(options, session, out, err);
+        case Command::Lock: return runLock(options, session, out, err);
+        case Command::Check: return runCheck(options, session, out, err);
+        case Command::Build: return runBuild(options, session, out, err);
+        case Command::Info: return runInfo(options, out, err);
+        case Command::Extract: return runExtract(options, out, err);
+        case Command::Lookup: return runLookup(options, out, err);
+        case Command::Render: return runRender(options, out, err);
+        case Command::Validate: return runValidate(options, out, err);
+        case Command::None: break;
+    }
+    err << "varc: error: no command given\n";
+    return kExitUsage;
+}
+
+}  // namespace varc::cli

@@ -1,0 +1,210 @@
+// SPDX-License-Identifier: Apache-2.0
+// Command-line parsing for `varc`, through CLI11, into an Options struct.
+#include "varc/cli/Options.h"
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdlib>
+#include <ostream>
+
+namespace varc::cli {
+
+namespace {
+
+// "12" -> 12 variants; "10%" -> 10 percent.
+std::optional<GrowthLimit> parseGrowth(const std::string& text) {
+    GrowthLimit limit;
+    std::string number = text;
+    if (!number.empty() && number.back() == '%') {
+        limit.percent = true;
+        number.pop_back();
+    }
+    char* end = nullptr;
+    limit.amount = std::strtod(number.c_str(), &end);
+    if (number.empty() || end != number.c_str() + number.size() || limit.amount < 0) {
+        return std::nullopt;
+    }
+    return limit;
+}
+
+void addInputOptions(CLI::App& command, Options& options) {
+    command.add_option("-I,--include-dir", options.includeDirs, "Add an include directory")
+        ->type_name("DIR");
+    command
+        .add_option("--builtin-include-dir", options.builtinIncludeDir,
+                    "Override the built-in include directory")
+        ->type_name("DIR");
+    command.add_option("paths", options.inputs, "Shader files, or directories to search")
+        ->required()
+        ->type_name("PATH");
+}
+
+void addVariants(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("variants", "List passes, keyword sets and variant counts");
+    cmd->add_flag("--json", options.json, "Print JSON");
+    cmd->add_flag("--list", options.list, "List every variant in enumeration order");
+    addInputOptions(*cmd, options);
+    cmd->callback([&options] { options.command = Command::Variants; });
+}
+
+void addLock(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("lock", "Write variant counts to a lock file");
+    cmd->add_option("-o,--output", options.lockPath, "Lock file to write")->required();
+    addInputOptions(*cmd, options);
+    cmd->callback([&options] { options.command = Command::Lock; });
+}
+
+void addCheck(CLI::App& app, Options& options, std::string& growthText) {
+    CLI::App* cmd = app.add_subcommand("check", "Compare variant counts with a lock file");
+    cmd->add_option("--lock", options.lockPath, "Lock file to compare with")->required();
+    auto* growth = cmd->add_option("--max-growth", growthText,
+                                   "Allow each shader to grow by N variants (or N%)");
+    cmd->add_option("--budget", options.budget, "Fail when a shader has more than N variants")
+        ->excludes(growth);
+    addInputOptions(*cmd, options);
+    cmd->callback([&options] { options.command = Command::Check; });
+}
+
+void addBuild(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("build", "Compile every variant into a SPIR-V pack");
+    cmd->add_option("-o,--output", options.outputPath, "Pack file to write")->required();
+    cmd->add_option("-j,--jobs", options.jobs, "Worker threads (default: all cores)");
+    cmd->add_option("--optimization", options.optimization,
+                    "Optimisation level; also written -O0, -O (default), -Os")
+        ->check(CLI::IsMember({"-O0", "-O", "-Os"}));
+    cmd->add_option("--depfile", options.depfilePath, "Write a Make-style dependency file");
+    cmd->add_flag("--json", options.json, "Print the build summary as JSON");
+    cmd->add_flag("--keep-going", options.keepGoing, "Compile everything to report all errors");
+    cmd->add_option("--compression-level", options.compressionLevel,
+                    "zstd level of the pack's blobs, 1-22 (default 19; 3 writes faster, ~20% "
+                    "bigger)")
+        ->check(CLI::Range(1, 22));
+    cmd->add_flag("-g,--debug-names", options.debugNames,
+                  "Keep OpName/OpMemberName in the SPIR-V (bigger packs; for GPU debuggers)");
+    cmd->add_option("--cache-dir", options.cacheDirectory,
+                    "Reuse and store compiled programs in this folder (ccache-like)")
+        ->envname("VARC_CACHE_DIR")
+        ->type_name("DIR");
+    addInputOptions(*cmd, options);
+    cmd->callback([&options] { options.command = Command::Build; });
+}
+
+void addInfo(CLI::App& app, Options& options) {
+    CLI::App* cmd =
+        app.add_subcommand("info", "Describe a pack: shaders, passes, variants, programs");
+    cmd->add_flag("--json", options.json, "Print JSON");
+    cmd->add_option("pack", options.packPath, "Pack file")->required()->type_name("PACK");
+    cmd->callback([&options] { options.command = Command::Info; });
+}
+
+void addExtract(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("extract", "Write every program as .spv plus manifest.json");
+    cmd->add_option("pack", options.packPath, "Pack file")->required()->type_name("PACK");
+    cmd->add_option("-o,--output", options.outputPath, "Directory to write")
+        ->required()
+        ->type_name("DIR");
+    cmd->callback([&options] { options.command = Command::Extract; });
+}
+
+void addLookup(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("lookup", "Find the variant for keywords or a light");
+    cmd->add_option("pack", options.packPath, "Pack file")->required()->type_name("PACK");
+    cmd->add_option("--shader", options.lookupShader, "Shader name")->required();
+    cmd->add_option("--pass", options.lookupPass, "Pass index or LightMode")
+        ->required()
+        ->type_name("N|LIGHTMODE");
+    auto* keywords =
+        cmd->add_option("--keywords", options.lookupKeywords,
+                        "Enabled keywords, space-separated (with --light: the material's)");
+    auto* light =
+        cmd->add_option("--light", options.lookupLight, "Light type: directional, point or spot");
+    cmd->add_flag("--cookie", options.lookupCookie, "The light has a cookie")->needs(light);
+    cmd->add_option("--shadows", options.lookupShadows, "none, hard or soft")->needs(light);
+    cmd->add_option("--vertex-lights", options.lookupVertexLights, "Point lights shaded per vertex")
+        ->needs(light);
+    cmd->add_flag("--hdr", options.lookupHdr, "The camera renders HDR")->needs(light);
+    cmd->add_option("--policy", options.lookupPolicy, "exact, closest (default), first or strict");
+    cmd->add_flag("--json", options.json, "Print JSON");
+    cmd->callback([&options, keywords, light] {
+        options.command = Command::Lookup;
+        if (keywords->count() == 0 && light->count() == 0) {
+            throw CLI::RequiredError("lookup needs --keywords or --light");
+        }
+    });
+}
+
+void addRender(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene with pack variants on Vulkan");
+    cmd->add_option("packs", options.packPaths, "Pack files")->required()->type_name("PACK");
+    cmd->add_option("--scene", options.scenePath, "Scene JSON")->required();
+    cmd->add_option("-o,--output", options.outputPath, "PNG to write")->required();
+    cmd->add_option("--reference", options.referencePath,
+                    "Also render the CPU reference to this PNG");
+    cmd->add_option("--diff", options.diffPath, "Also compare and write the diff image here");
+    cmd->add_option("--pipeline-cache", options.pipelineCachePath,
+                    "VkPipelineCache file to load and save");
+    cmd->callback([&options] { options.command = Command::Render; });
+}
+
+void addValidate(CLI::App& app, Options& options) {
+    CLI::App* cmd =
+        app.add_subcommand("validate", "Render every scene and compare with the CPU reference");
+    cmd->add_option("--pack", options.packPaths, "Pack files (repeat)")->required();
+    cmd->add_option("--scenes", options.scenesDir, "Scene folder (default tests/scenes/forward)");
+    cmd->add_option("--out", options.outputPath, "Folder for the PNGs (default validate-out)");
+    cmd->add_option("--pipeline-cache", options.pipelineCachePath,
+                    "VkPipelineCache file to load and save");
+    cmd->callback([&options] { options.command = Command::Validate; });
+}
+
+// CLI11 has no multi-letter short options, so -O0/-O/-Os become --optimization=<same>.
+std::vector<std::string> normalizeArguments(int argc, const char* const* argv) {
+    std::vector<std::string> args;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "-O0" || arg == "-O" || arg == "-Os") arg = "--optimization=" + arg;
+        args.push_back(arg);
+    }
+    std::reverse(args.begin(), args.end());  // CLI11 parses a reversed vector
+    return args;
+}
+
+}  // namespace
+
+std::optional<int> parseOptions(int argc, const char* const* argv, Options& options,
+                                std::ostream& out, std::ostream& err) {
+    CLI::App app{"varc: Unity-style shader variants to SPIR-V packs", "varc"};
+    app.require_subcommand(1);
+    std::string growthText;
+    addVariants(app, options);
+    addLock(app, options);
+    addCheck(app, options, growthText);
+    addBuild(app, options);
+    addInfo(app, options);
+    addExtract(app, options);
+    addLookup(app, options);
+    addRender(app, options);
+    addValidate(app, options);
+    try {
+        std::vector<std::string> args = normalizeArguments(argc, argv);
+        app.parse(args);
+    } catch (const CLI::ParseError& e) {
+        int code = app.exit(e, out, err);
+        return code == 0 ? kExitOk : kExitUsage;
+    }
+    if (!growthText.empty()) {
+        options.maxGrowth = parseGrowth(growthText);
+        if (!options.maxGrowth) {
+            err << "varc: error: --max-growth expects N or N%, got '" << growthText << "'\n";
+            return kExitUsage;
+        }
+    }
+    if (options.builtinIncludeDir.empty()) {
+        if (const char* env = std::getenv("VARC_BUILTIN_INCLUDE_DIR")) {
+            options.builtinIncludeDir = env;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace varc::cli

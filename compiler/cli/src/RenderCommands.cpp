@@ -1,0 +1,282 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "varc/cli/RenderCommands.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <ostream>
+#include <set>
+
+#include "varc/image/Png.h"
+#include "varc/reader/Pack.h"
+#include "varc/reference/DeferredReference.h"
+#include "varc/reference/ImageCompare.h"
+#include "varc/reference/ReferenceRenderer.h"
+#include "varc/reference/SceneTolerance.h"
+#include "varc/reference/SinglePassReference.h"
+#include "varc/render/DeferredRenderer.h"
+#include "varc/render/ForwardRenderer.h"
+#include "varc/render/PipelineCacheFile.h"
+#include "varc/render/SinglePassRenderer.h"
+#include "varc/scene/Scene.h"
+#include "varc/vulkan/VulkanContext.h"
+
+namespace varc::cli {
+
+namespace {
+
+// Opens every pack; nullopt after printing why one failed.
+std::optional<std::vector<runtime::Pack>> openPacks(const std::vector<std::string>& paths,
+                                                    std::ostream& err) {
+    std::vector<runtime::Pack> packs;
+    for (const std::string& path : paths) {
+        auto pack = runtime::Pack::open(path);
+        if (!pack) {
+            err << "varc: error: " << pack.error().detail << "\n";
+            return std::nullopt;
+        }
+        packs.push_back(std::move(*pack));
+    }
+    return packs;
+}
+
+// One renderer per scene path (scene.camera.path), sharing the Vulkan context and packs.
+struct SceneRenderers {
+    runtime::ForwardRenderer forward;
+    runtime::SinglePassRenderer singlePass;
+    runtime::DeferredRenderer deferred;
+
+    static Result<SceneRenderers> create(runtime::VulkanContext& context,
+                                         const std::vector<runtime::Pack>& packs,
+                                         VkPipelineCache cache) {
+        std::vector<const runtime::Pack*> pointers;
+        for (const runtime::Pack& pack : packs) pointers.push_back(&pack);
+        auto forward = runtime::ForwardRenderer::create(context, pointers);
+        if (!forward) return forward.error();
+        auto singlePass = runtime::SinglePassRenderer::create(context, pointers);
+        if (!singlePass) return singlePass.error();
+        auto deferred = runtime::DeferredRenderer::create(context, pointers);
+        if (!deferred) return deferred.error();
+        forward->usePipelineCache(cache);
+        singlePass->usePipelineCache(cache);
+        deferred->usePipelineCache(cache);
+        return SceneRenderers{std::move(*forward), std::move(*singlePass), std::move(*deferred)};
+    }
+
+    Result<runtime::RenderedFrame> render(const scene::Scene& scene) {
+        if (scene.camera.path == scene::RenderPath::SinglePass) return singlePass.render(scene);
+        if (scene.camera.path == scene::RenderPath::Deferred) return deferred.render(scene);
+        return forward.render(scene);
+    }
+};
+
+// The CPU reference for the scene's path.
+Result<reference::ReferenceImage> renderReferenceFor(const scene::Scene& scene) {
+    if (scene.camera.path == scene::RenderPath::SinglePass)
+        return reference::renderSinglePassReference(scene);
+    if (scene.camera.path == scene::RenderPath::Deferred)
+        return reference::renderDeferredReference(scene);
+    return reference::renderReference(scene);
+}
+
+struct SceneOutcome {
+    bool ok = false;      // rendered and compared
+    bool passed = false;  // comparison within tolerance
+    std::string error;    // why it could not render
+    runtime::RenderedFrame frame;
+    reference::CompareResult comparison;
+    double seconds = 0;
+};
+
+// Renders |scenePath| and, when |compare|, its reference; writes the PNGs that are asked for.
+SceneOutcome renderScene(SceneRenderers& renderer, const std::string& scenePath, bool compare,
+                         const std::string& renderPng, const std::string& referencePng,
+                         const std::string& diffPng) {
+    SceneOutcome outcome;
+    auto start = std::chrono::steady_clock::now();
+    auto scene = scene::loadScene(scenePath);
+    if (!scene) {
+        outcome.error = scene.error().detail;
+        return outcome;
+    }
+    auto frame = renderer.render(*scene);
+    if (!frame) {
+        outcome.error = scenePath + ": " + frame.error().detail;
+        return outcome;
+    }
+    outcome.frame = std::move(*frame);
+    if (!renderPng.empty()) {
+        runtime::Image shown = outcome.frame.image.isFloat()
+                                   ? outcome.frame.image.toRgba8(runtime::Tonemap::Reinhard)
+                                   : outcome.frame.image;
+        if (Status written = runtime::writePng(renderPng, shown); !written) {
+            outcome.error = written.error().detail;
+            return outcome;
+        }
+    }
+    outcome.ok = true;
+    if (compare) {
+        auto expected = renderReferenceFor(*scene);
+        if (!expected) {
+            outcome.ok = false;
+            outcome.error = scenePath + ": reference: " + expected.error().detail;
+            return outcome;
+        }
+        outcome.comparison =
+            reference::compareImages(outcome.frame.image, expected->color, expected->classes,
+                                     reference::toleranceFor(*scene));
+        outcome.passed = outcome.comparison.passed;
+        if (!referencePng.empty()) {
+            Status written = runtime::writePng(
+                referencePng, expected->color.toRgba8(scene->camera.hdr ? runtime::Tonemap::Reinhard
+                                                                        : runtime::Tonemap::Clamp));
+            if (!written) outcome.error = written.error().detail;
+        }
+        if (!diffPng.empty() && outcome.comparison.diff.width() > 0) {
+            Status written = runtime::writePng(diffPng, outcome.comparison.diff);
+            if (!written) outcome.error = written.error().detail;
+        }
+    }
+    outcome.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return outcome;
+}
+
+std::optional<runtime::VulkanContext> makeContext(std::ostream& err) {
+    auto context = runtime::VulkanContext::create();
+    if (!context) {
+        err << "varc: error: " << context.error().detail << "\n";
+        return std::nullopt;
+    }
+    return std::move(*context);
+}
+
+// The --pipeline-cache file, when asked for; a file for another device or driver is reported
+// and replaced, never an error.
+std::optional<runtime::PipelineCacheFile> openPipelineCache(const Options& options,
+                                                            runtime::VulkanContext& context,
+                                                            std::ostream& err) {
+    if (options.pipelineCachePath.empty()) return std::nullopt;
+    auto cache = runtime::PipelineCacheFile::open(context, options.pipelineCachePath);
+    if (!cache) {
+        err << "varc: warning: pipeline cache not used: " << cache.error().detail << "\n";
+        return std::nullopt;
+    }
+    if (!cache->rejectedReason().empty()) {
+        err << "varc: note: " << options.pipelineCachePath << " not used ("
+            << cache->rejectedReason() << "); starting a new cache\n";
+    }
+    return std::move(*cache);
+}
+
+void savePipelineCache(const std::optional<runtime::PipelineCacheFile>& cache, std::ostream& err) {
+    if (!cache) return;
+    if (Status saved = cache->save(); !saved)
+        err << "varc: warning: " << saved.error().detail << "\n";
+}
+
+size_t distinctCount(const std::vector<std::string>& names) {
+    return std::set<std::string>(names.begin(), names.end()).size();
+}
+
+}  // namespace
+
+int runRender(const Options& options, std::ostream& out, std::ostream& err) {
+    auto packs = openPacks(options.packPaths, err);
+    if (!packs) return kExitUsage;
+    auto context = makeContext(err);
+    if (!context) return kExitUsage;
+    std::optional<runtime::PipelineCacheFile> cache = openPipelineCache(options, *context, err);
+    auto renderer =
+        SceneRenderers::create(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
+    if (!renderer) {
+        err << "varc: error: " << renderer.error().detail << "\n";
+        return kExitFailure;
+    }
+    bool compare = !options.referencePath.empty() || !options.diffPath.empty();
+    SceneOutcome outcome = renderScene(*renderer, options.scenePath, compare, options.outputPath,
+                                       options.referencePath, options.diffPath);
+    if (!outcome.error.empty()) err << "varc: error: " << outcome.error << "\n";
+    savePipelineCache(cache, err);
+    if (!outcome.ok) return kExitFailure;
+    out << "rendered " << options.scenePath << ": " << outcome.frame.draws << " draws, "
+        << distinctCount(outcome.frame.variants) << " variants -> " << options.outputPath << "\n";
+    for (const std::string& variant : outcome.frame.variants) out << "  " << variant << "\n";
+    if (compare) {
+        out << outcome.comparison.message << "\n";
+        return outcome.passed ? kExitOk : kExitFailure;
+    }
+    return kExitOk;
+}
+
+int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
+    std::string scenesDir = options.scenesDir.empty() ? "tests/scenes/forward" : options.scenesDir;
+    std::string outDir = options.outputPath.empty() ? "validate-out" : options.outputPath;
+    std::vector<std::string> scenes;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(scenesDir, error)) {
+        if (entry.path().extension() == ".json") scenes.push_back(entry.path().string());
+    }
+    if (error || scenes.empty()) {
+        err << "varc: error: no *.json scenes in '" << scenesDir << "'\n";
+        return kExitUsage;
+    }
+    std::sort(scenes.begin(), scenes.end());
+    std::filesystem::create_directories(outDir, error);
+    if (error) {
+        err << "varc: error: cannot create '" << outDir << "': " << error.message() << "\n";
+        return kExitUsage;
+    }
+    auto packs = openPacks(options.packPaths, err);
+    if (!packs) return kExitUsage;
+    auto context = makeContext(err);
+    if (!context) return kExitUsage;
+    std::optional<runtime::PipelineCacheFile> cache = openPipelineCache(options, *context, err);
+    auto renderer =
+        SceneRenderers::create(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
+    if (!renderer) {
+        err << "varc: error: " << renderer.error().detail << "\n";
+        return kExitFailure;
+    }
+    char line[256];
+    std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", "scene", "draws",
+                  "variants", "max LSB", "mean LSB", "time", "result");
+    out << line;
+    int failures = 0;
+    for (const std::string& scenePath : scenes) {
+        std::string stem = std::filesystem::path(scenePath).stem().string();
+        std::string base = (std::filesystem::path(outDir) / stem).string();
+        SceneOutcome outcome = renderScene(*renderer, scenePath, true, base + ".png",
+                                           base + ".reference.png", base + ".diff.png");
+        if (!outcome.ok) {
+            ++failures;
+            std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", stem.c_str(), "-",
+                          "-", "-", "-", "-", "ERROR");
+            out << line;
+            err << "varc: error: " << outcome.error << "\n";
+            continue;
+        }
+        if (!outcome.passed) ++failures;
+        std::snprintf(line, sizeof line, "%-28s %6u %9zu %9.2f %10.3f %6.2fs  %s\n", stem.c_str(),
+                      outcome.frame.draws, distinctCount(outcome.frame.variants),
+                      static_cast<double>(outcome.comparison.maxErrorLsb),
+                      static_cast<double>(outcome.comparison.meanSignedErrorLsb), outcome.seconds,
+                      outcome.passed ? "pass" : "FAIL");
+        out << line;
+        if (!outcome.passed) err << stem << ": " << outcome.comparison.message << "\n";
+    }
+    out << scenes.size() - static_cast<size_t>(failures) << "/" << scenes.size()
+        << " scenes match the reference; PNGs in " << outDir << "\n";
+    savePipelineCache(cache, err);
+    // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.
+    if (context->validationMessageCount() > 0) {
+        err << "varc: error: Vulkan validation reported " << context->validationMessageCount()
+            << " messages:\n"
+            << context->validationReport() << "\n";
+        return kExitFailure;
+    }
+    return failures ? kExitFailure : kExitOk;
+}
+
+}  // namespace varc::cli

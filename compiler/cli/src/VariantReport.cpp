@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: Apache-2.0
+// The output of `varc variants`: a text listing in the spirit of Unity's "Show variants", or JSON.
+#include "varc/cli/VariantReport.h"
+
+#include <limits>
+#include <ostream>
+
+namespace varc::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::vector<std::string> displayKeywords(const variants::KeywordSetDecl& set) {
+    std::vector<std::string> keywords;
+    for (const std::string& keyword : set.keywords) keywords.push_back(keyword.empty() ? "_" : keyword);
+    return keywords;
+}
+
+uint64_t saturatingAdd(uint64_t a, uint64_t b) {
+    return b > std::numeric_limits<uint64_t>::max() - a ? std::numeric_limits<uint64_t>::max()
+                                                         : a + b;
+}
+
+Json passJson(const compiler::LoadedPass& pass, bool withList) {
+    Json sets = Json::array();
+    for (const variants::KeywordSetDecl& set : pass.keywords.sets) sets.push_back(displayKeywords(set));
+    Json json = {{"index", pass.index},
+                 {"name", pass.pass->name},
+                 {"lightmode", pass.pass->lightMode()},
+                 {"keyword_sets", sets},
+                 {"variants", pass.space->count()}};
+    if (withList) {
+        Json list = Json::array();
+        pass.space->forEach([&](const variants::VariantKey& key) {
+            list.push_back(pass.space->table().namesOf(key));
+            return true;
+        });
+        json["list"] = std::move(list);
+    }
+    return json;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+    std::string text;
+    for (const std::string& word : words) text += (text.empty() ? "" : " ") + word;
+    return text;
+}
+
+void printVariantList(const compiler::LoadedPass& pass, std::ostream& out) {
+    out << "      " << pass.space->count() << " keyword variants:\n";
+    pass.space->forEach([&](const variants::VariantKey& key) {
+        std::vector<std::string> names = pass.space->table().namesOf(key);
+        out << "        " << (names.empty() ? "<no keywords defined>" : joined(names)) << "\n";
+        return true;
+    });
+}
+
+void printPass(const compiler::LoadedPass& pass, const includes::SourceMap& sourceMap,
+               bool withList, std::ostream& out) {
+    out << "  pass " << pass.index;
+    if (!pass.pass->name.empty()) out << " \"" << pass.pass->name << "\"";
+    std::string lightMode = pass.pass->lightMode();
+    if (!lightMode.empty()) out << " LightMode " << lightMode;
+    uint64_t count = pass.space->count();
+    out << ": " << count << (count == 1 ? " variant" : " variants");
+    uint64_t full = pass.space->fullCount();
+    if (full != count) out << " (of " << full << " before skip_variants and shortcut rules)";
+    out << "\n";
+    for (const variants::KeywordSetDecl& set : pass.keywords.sets) {
+        out << "      " << set.directive << ": " << joined(displayKeywords(set)) << "  ("
+            << sourceMap.format({set.location.file, set.location.line, 0}) << ")\n";
+    }
+    if (!pass.keywords.skipped.empty()) {
+        out << "      skip_variants: " << joined(pass.keywords.skipped) << "\n";
+    }
+    if (withList) printVariantList(pass, out);
+}
+
+}  // namespace
+
+Json variantsJson(const std::vector<compiler::LoadedShader>& shaders, bool withList) {
+    Json shaderArray = Json::array();
+    uint64_t total = 0;
+    for (const compiler::LoadedShader& shader : shaders) {
+        Json passes = Json::array();
+        for (const compiler::LoadedPass& pass : shader.passes) passes.push_back(passJson(pass, withList));
+        uint64_t count = shader.variantCount();
+        total = saturatingAdd(total, count);
+        shaderArray.push_back(
+            {{"file", shader.path}, {"name", shader.ast.name}, {"passes", passes}, {"variants", count}});
+    }
+    return {{"shaders", shaderArray}, {"variants", total}};
+}
+
+void printVariantsText(const std::vector<compiler::LoadedShader>& shaders,
+                       const includes::SourceMap& sourceMap, bool withList, std::ostream& out) {
+    uint64_t total = 0;
+    for (const compiler::LoadedShader& shader : shaders) {
+        out << "Shader \"" << shader.ast.name << "\" (" << shader.path << ")\n";
+        if (shader.passes.empty()) out << "  no program passes\n";
+        for (const compiler::LoadedPass& pass : shader.passes) printPass(pass, sourceMap, withList, out);
+        uint64_t count = shader.variantCount();
+        total = saturatingAdd(total, count);
+        out << "  " << count << " variants total\n\n";
+    }
+    out << total << " variants in " << shaders.size() << (shaders.size() == 1 ? " shader" : " shaders")
+        << "\n";
+}
+
+}  // namespace varc::cli

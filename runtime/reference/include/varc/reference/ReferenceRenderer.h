@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: Apache-2.0
+// ReferenceRenderer: renders a forward Scene on the CPU exactly as the GPU forward renderer should
+// (issue #5 §6): same camera, meshes, rasterisation rules, light assignment and per-pixel
+// lighting (docs/LIGHTING.md §8, §9), with the colour attachment's quantisation. No Vulkan.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "varc/core/Result.h"
+#include "varc/image/Image.h"
+#include "varc/reference/LinearTexture.h"
+#include "varc/reference/Rasterizer.h"
+#include "varc/scene/ForwardLights.h"
+#include "varc/scene/Scene.h"
+
+namespace varc::reference {
+
+// The shaders the reference knows and how it reads their material properties.
+enum class ShaderModel {
+    ForwardPbs,      // "Custom/My First Lighting Shader" (_Tint) and "varc/Forward" (_Color)
+    SimpleDiffuse,   // "varc/SimpleDiffuse"
+    GlslBlinnPhong,  // "varc/GlslVertexLights"
+};
+struct MaterialParams {
+    ShaderModel model = ShaderModel::ForwardPbs;
+    glm::vec4 color{1.0f};    // _Tint or _Color
+    glm::vec4 mainTex{1.0f};  // the constant value of _MainTex ("white" or "black")
+    std::shared_ptr<const LinearTexture> mainTexture;  // _MainTex as a PNG file, else null
+    glm::vec4 mainTexST{1.0f, 1.0f, 0.0f, 0.0f};       // _MainTex_ST (tiling xy, offset zw)
+    float metallic = 0.0f;      // _Metallic, as given (no [Gamma] conversion)
+    float smoothness = 0.5f;    // _Smoothness
+    glm::vec3 specColor{1.0f};  // _SpecColor (GLSL)
+    float shininess = 32.0f;    // _Shininess (GLSL)
+};
+// The parameters of |material| with each shader's Properties defaults. _MainTex may be "white",
+// "black" or a PNG file (loaded here). Unsupported for other shaders or texture names;
+// InvalidInput for a property of the wrong kind; IoError/InvalidInput for an unreadable PNG.
+Result<MaterialParams> resolveMaterial(const scene::Material& material);
+
+struct ReferenceOptions {
+    // Base-pass LIGHTPROBE_SH for shaders with that keyword (SimpleDiffuse, GlslVertexLights):
+    // on = max(0, ShadeSH9) ambient, off = the flat UNITY_LIGHTMODEL_AMBIENT. Unity turns it on
+    // for every object that is not lightmapped.
+    bool lightProbeSh = true;
+    // Mutation hooks for the comparator's tests: replace the falloff lookup, or edit the light
+    // assignment after assignForwardLights. Leave empty for real references.
+    std::function<float(float t)> falloffOverride;
+    std::function<void(scene::ForwardLightAssignment&)> editAssignment;
+};
+
+struct ReferenceImage {
+    runtime::Image color;  // RgbaFloat, linear; LDR values are multiples of 1/255
+    Classification classes;
+    VisibilityBuffer visibility;
+};
+
+// Renders |scene| (camera.path must be Forward): background = camera.background; per object the
+// base pass (main directional light, vertex lights, SH) and one additive pass per add light.
+// LDR (camera.hdr = false) models an RGBA8_UNORM attachment: each pass's output is clamped to
+// [0, 1] and rounded to 8 bits, blended One One with saturation. HDR models
+// R16G16B16A16_SFLOAT: each pass output and each sum is rounded to half precision.
+// Errors: Unsupported for another path, shader, or a cookie that is not "none"/"default".
+Result<ReferenceImage> renderReference(const scene::Scene& scene,
+                                       const ReferenceOptions& options = {});
+
+}  // namespace varc::reference

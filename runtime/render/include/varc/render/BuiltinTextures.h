@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: Apache-2.0
+// The textures the runtime provides by name (SHADER_ABI.md §6): white/black/bump defaults, the
+// light falloff table, and the default spot, directional and point (cube) cookies.
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "varc/render/DrawResources.h"
+#include "varc/scene/Scene.h"
+#include "varc/vulkan/Texture.h"
+
+namespace varc::runtime {
+
+class BuiltinTextures {
+public:
+    static Result<BuiltinTextures> create(VulkanContext& context);
+
+    // "white", "black", "bump", "gray" ("grey"), "red" (2D; Unity's default texture names) and
+    // "white" (cube), linear-repeat sampled.
+    std::optional<TextureBinding> named(std::string_view name, pack::ResourceDim dim) const;
+    VkSampler repeatSampler() const { return mRepeat.get(); }  // linear, repeat
+    VkSampler clampSampler() const { return mClamp.get(); }    // linear, clamp to edge
+    TextureBinding falloff() const;                            // 1024 x 1, linear, clamp
+    TextureBinding spotCookie() const;                         // linear, clamp
+    TextureBinding directionalCookie() const;                  // linear, repeat
+    TextureBinding pointCookie() const;                        // cube, linear, clamp
+
+    // `_LightTexture0` / `_LightTextureB0` for a light (SHADER_ABI.md §6); nullopt for any other
+    // name. Forward POINT reads its falloff from _LightTexture0; the deferred light pass reads
+    // falloff from _LightTextureB0 and _LightTexture0 only for cookies (white otherwise).
+    std::optional<TextureBinding> lightTexture(std::string_view name, pack::ResourceDim dim,
+                                               scene::LightType type, bool cookie,
+                                               bool deferred) const;
+
+private:
+    std::optional<Texture> mWhite, mBlack, mBump, mGray, mRed, mWhiteCube, mFalloff, mSpot,
+        mDirectional, mPoint;
+    UniqueHandle<VkSampler> mRepeat, mClamp;
+};
+
+}  // namespace varc::runtime

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: Apache-2.0
+// Renders a forward Scene with pack variants on Vulkan, with Unity's built-in forward rules
+// (unity-keywords.md §4): per object one ForwardBase draw (main directional light, vertex lights,
+// SH) and one additive ForwardAdd draw per extra pixel light, each with the variant its light
+// selects through the pack's lookup.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "varc/image/Image.h"
+#include "varc/reader/Pack.h"
+#include "varc/render/BuiltinTextures.h"
+#include "varc/render/DrawResources.h"
+#include "varc/render/VariantPipeline.h"
+#include "varc/scene/Scene.h"
+#include "varc/vulkan/Buffer.h"
+
+namespace varc::runtime {
+
+struct RenderedFrame {
+    Image image;                        // Rgba8 (LDR: RGBA8_UNORM) or RgbaFloat (HDR: RGBA16F)
+    std::vector<std::string> variants;  // VariantView::describe() of every draw, in draw order
+    uint32_t draws = 0;
+};
+
+class ForwardRenderer {
+public:
+    // |packs| must outlive the renderer; shaders are found by name in the first pack that has them.
+    static Result<ForwardRenderer> create(VulkanContext& context, std::vector<const Pack*> packs);
+
+    // Errors name the object and shader: an unknown shader, a pass the shader lacks
+    // (ForwardBase is required; ForwardAdd only when add lights exist), no variant for the light,
+    // pipeline or Vulkan failures.
+    Result<RenderedFrame> render(const scene::Scene& scene);
+
+    // Creates every later pipeline through |cache| (e.g. PipelineCacheFile::handle()), which must
+    // outlive the renderer; VK_NULL_HANDLE (the default) uses none.
+    void usePipelineCache(VkPipelineCache cache);
+
+    ForwardRenderer(ForwardRenderer&&) noexcept;
+    ForwardRenderer& operator=(ForwardRenderer&&) noexcept;
+    ~ForwardRenderer();
+
+private:
+    struct State;
+    explicit ForwardRenderer(std::unique_ptr<State> state);
+    std::unique_ptr<State> mState;
+};
+
+}  // namespace varc::runtime

@@ -1,0 +1,136 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "varc/render/BuiltinTextures.h"
+
+#include <vector>
+
+#include "varc/scene/LightTextures.h"
+#include "varc/vulkan/Sampler.h"
+
+namespace varc::runtime {
+
+namespace {
+
+Image solid(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
+    Image image(1, 1, PixelFormat::Rgba8);
+    image.setPixel8(0, 0, {r, g, b, a});
+    return image;
+}
+
+// The falloff table as a float image (sampled as R16G16B16A16_SFLOAT: within 1/2048 of the
+// 16-bit table, far below an 8-bit LSB), every channel holding f.
+Image falloffImage() {
+    std::vector<uint16_t> table = scene::falloffTable();
+    Image image(static_cast<uint32_t>(table.size()), 1, PixelFormat::RgbaFloat);
+    for (uint32_t i = 0; i < table.size(); ++i) {
+        float f = static_cast<float>(table[i]) / 65535.0f;
+        image.setPixelFloat(i, 0, {f, f, f, f});
+    }
+    return image;
+}
+
+std::vector<Image> cookieLayers(const scene::CookieImage& cookie) {
+    std::vector<Image> layers;
+    size_t layerBytes = size_t{cookie.width} * cookie.height * 4;
+    for (uint32_t layer = 0; layer < cookie.layers; ++layer) {
+        Image image(cookie.width, cookie.height, PixelFormat::Rgba8);
+        std::copy_n(cookie.rgba.begin() + static_cast<std::ptrdiff_t>(layer * layerBytes),
+                    layerBytes, image.bytes().begin());
+        layers.push_back(std::move(image));
+    }
+    return layers;
+}
+
+Result<Texture> make2D(VulkanContext& context, const Image& image, const char* name) {
+    TextureOptions options;
+    options.name = name;
+    return Texture::create2D(context, image, options);
+}
+
+}  // namespace
+
+Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
+    BuiltinTextures textures;
+    struct Solid {
+        std::optional<Texture>* slot;
+        Image image;
+        const char* name;
+    };
+    Solid solids[] = {{&textures.mWhite, solid(255, 255, 255, 255), "white"},
+                      {&textures.mBlack, solid(0, 0, 0, 0), "black"},
+                      {&textures.mBump, solid(128, 128, 255, 255), "bump"},
+                      {&textures.mGray, solid(128, 128, 128, 255), "gray"},
+                      {&textures.mRed, solid(255, 0, 0, 255), "red"},
+                      {&textures.mFalloff, falloffImage(), "falloff"},
+                      {&textures.mSpot, cookieLayers(scene::defaultSpotCookie())[0], "spot cookie"},
+                      {&textures.mDirectional, cookieLayers(scene::defaultDirectionalCookie())[0],
+                       "directional cookie"}};
+    for (Solid& entry : solids) {
+        auto texture = make2D(context, entry.image, entry.name);
+        if (!texture) return texture.error();
+        entry.slot->emplace(std::move(*texture));
+    }
+    std::vector<Image> whiteFaces(6, solid(255, 255, 255, 255));
+    auto whiteCube = Texture::createCube(context, whiteFaces, {false, false, "white cube"});
+    if (!whiteCube) return whiteCube.error();
+    textures.mWhiteCube.emplace(std::move(*whiteCube));
+    auto point = Texture::createCube(context, cookieLayers(scene::defaultPointCookie()),
+                                     {false, false, "point cookie"});
+    if (!point) return point.error();
+    textures.mPoint.emplace(std::move(*point));
+
+    SamplerDesc repeat;
+    repeat.name = "linear repeat";
+    auto repeatSampler = createSampler(context, repeat);
+    if (!repeatSampler) return repeatSampler.error();
+    textures.mRepeat = std::move(*repeatSampler);
+    SamplerDesc clamp;
+    clamp.addressMode = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    clamp.name = "linear clamp";
+    auto clampSampler = createSampler(context, clamp);
+    if (!clampSampler) return clampSampler.error();
+    textures.mClamp = std::move(*clampSampler);
+    return textures;
+}
+
+std::optional<TextureBinding> BuiltinTextures::named(std::string_view name,
+                                                     pack::ResourceDim dim) const {
+    if (dim == pack::ResourceDim::Cube) {
+        if (name == "white" || name.empty())
+            return TextureBinding{mWhiteCube->view(), mRepeat.get()};
+        return std::nullopt;
+    }
+    if (dim != pack::ResourceDim::Dim2D) return std::nullopt;
+    if (name == "white" || name.empty()) return TextureBinding{mWhite->view(), mRepeat.get()};
+    if (name == "black") return TextureBinding{mBlack->view(), mRepeat.get()};
+    if (name == "bump") return TextureBinding{mBump->view(), mRepeat.get()};
+    if (name == "gray" || name == "grey") return TextureBinding{mGray->view(), mRepeat.get()};
+    if (name == "red") return TextureBinding{mRed->view(), mRepeat.get()};
+    return std::nullopt;
+}
+
+TextureBinding BuiltinTextures::falloff() const { return {mFalloff->view(), mClamp.get()}; }
+TextureBinding BuiltinTextures::spotCookie() const { return {mSpot->view(), mClamp.get()}; }
+TextureBinding BuiltinTextures::directionalCookie() const {
+    return {mDirectional->view(), mRepeat.get()};
+}
+std::optional<TextureBinding> BuiltinTextures::lightTexture(std::string_view name,
+                                                            pack::ResourceDim dim,
+                                                            scene::LightType type, bool cookie,
+                                                            bool deferred) const {
+    if (name == "_LightTextureB0") return falloff();
+    if (name != "_LightTexture0") return std::nullopt;
+    switch (type) {
+        case scene::LightType::Spot:
+            return spotCookie();
+        case scene::LightType::Point:
+            if (cookie) return pointCookie();
+            return deferred ? named("white", dim) : falloff();
+        case scene::LightType::Directional:
+            return cookie ? directionalCookie() : named("white", dim);
+    }
+    return std::nullopt;
+}
+
+TextureBinding BuiltinTextures::pointCookie() const { return {mPoint->view(), mClamp.get()}; }
+
+}  // namespace varc::runtime

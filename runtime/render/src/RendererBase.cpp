@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "RendererBase.h"
+
+#include "varc/image/Png.h"
+#include "varc/scene/Mesh.h"
+
+namespace varc::runtime {
+
+variants::LightType toVariantLight(scene::LightType type) {
+    switch (type) {
+        case scene::LightType::Directional:
+            return variants::LightType::Directional;
+        case scene::LightType::Point:
+            return variants::LightType::Point;
+        case scene::LightType::Spot:
+            return variants::LightType::Spot;
+    }
+    return variants::LightType::Directional;
+}
+
+std::string objectLabel(size_t index, const scene::Object& object) {
+    return "object " + std::to_string(index) +
+           (object.name.empty() ? "" : " '" + object.name + "'") + " (shader \"" +
+           object.material.shader + "\")";
+}
+
+Status RendererBase::init(VulkanContext& vulkan, std::vector<const Pack*> inputPacks) {
+    context = &vulkan;
+    packs = std::move(inputPacks);
+    auto builtin = BuiltinTextures::create(vulkan);
+    if (!builtin) return builtin.error();
+    textures.emplace(std::move(*builtin));
+    auto drawResources = DrawResources::create(vulkan);
+    if (!drawResources) return drawResources.error();
+    resources.emplace(std::move(*drawResources));
+    for (scene::MeshKind kind :
+         {scene::MeshKind::Sphere, scene::MeshKind::Cube, scene::MeshKind::Plane}) {
+        auto mesh = uploadMesh(vulkan, scene::builtinMesh(kind));
+        if (!mesh) return mesh.error();
+        meshes.emplace(kind, std::move(*mesh));
+    }
+    return Ok{};
+}
+
+std::optional<ShaderView> RendererBase::findShader(const std::string& name,
+                                                   const Pack** owner) const {
+    for (const Pack* pack : packs) {
+        if (auto shader = pack->findShader(name)) {
+            *owner = pack;
+            return shader;
+        }
+    }
+    return std::nullopt;
+}
+
+Result<const VariantPipeline*> RendererBase::pipeline(const Pack* pack, const VariantView& variant,
+                                                      const pack::PackRenderState& state,
+                                                      const PipelineTarget& target,
+                                                      uint32_t targetKind) {
+    std::string name = variant.describe();
+    for (const CachedPipeline& cached : mPipelines) {
+        if (cached.pack == pack && cached.targetKind == targetKind && cached.variant == name &&
+            cached.state == state) {
+            return &cached.pipeline;
+        }
+    }
+    auto created = VariantPipeline::create(*context, variant, state, target, pipelineCache);
+    if (!created) return created.error();
+    mPipelines.push_back({pack, name, state, targetKind, std::move(*created)});
+    return &mPipelines.back().pipeline;
+}
+
+Status RendererBase::drawFrame(const RenderTarget& target, const std::vector<Draw>& draws,
+                               RenderedFrame& frame) {
+    Status bound = Ok{};
+    Status submitted = context->submitAndWait([&](VkCommandBuffer commands) {
+        target.begin(commands, LoadOp::Clear);
+        VkViewport viewport = target.viewport();
+        VkRect2D area = target.area();
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &area);
+        bound = recordDraws(commands, *resources, draws, frame.draws);
+        target.end(commands);
+    });
+    if (Status reset = resources->reset(); !reset) return reset.error();
+    if (!bound) return bound.error();
+    if (!submitted) return submitted.error();
+    auto image = target.readback(*context);
+    if (!image) return image.error();
+    frame.image = std::move(*image);
+    return Ok{};
+}
+
+Status RendererBase::loadTextureFiles(const std::map<std::string, std::string>& textureNames) {
+    for (const auto& [property, name] : textureNames) {
+        if (!scene::isTextureFile(name) || mTextureFiles.count(name)) continue;
+        auto image = readPng(name);
+        if (!image) {
+            return makeError(image.error().code,
+                             "texture " + property + " = '" + name + "': " + image.error().detail);
+        }
+        TextureOptions options;
+        options.srgb = true;  // colour textures hold sRGB-encoded values, as Unity imports them
+        options.name = name;
+        auto texture = Texture::create2D(*context, *image, options);
+        if (!texture) return texture.error();
+        mTextureFiles.emplace(name, std::move(*texture));
+    }
+    return Ok{};
+}
+
+std::optional<TextureBinding> RendererBase::materialTexture(const std::string& name,
+                                                            pack::ResourceDim dim) const {
+    if (auto builtin = textures->named(name, dim)) return builtin;
+    auto file = mTextureFiles.find(name);
+    if (file == mTextureFiles.end() || dim != pack::ResourceDim::Dim2D) return std::nullopt;
+    return TextureBinding{file->second.view(), textures->repeatSampler()};
+}
+
+Status RendererBase::loadCookieFiles(const std::vector<scene::Light>& lights) {
+    for (const scene::Light& light : lights) {
+        if (!scene::isTextureFile(light.cookie) || mCookieFiles.count(light.cookie)) continue;
+        auto image = readPng(light.cookie);
+        if (!image) return makeError(image.error().code, "cookie: " + image.error().detail);
+        TextureOptions options;  // UNORM: a cookie's alpha is an attenuation, not a colour
+        options.name = light.cookie;
+        auto texture = Texture::create2D(*context, *image, options);
+        if (!texture) return texture.error();
+        mCookieFiles.emplace(light.cookie, std::move(*texture));
+    }
+    return Ok{};
+}
+
+std::optional<TextureBinding> RendererBase::cookieFile(const scene::Light& light) const {
+    if (!scene::isTextureFile(light.cookie)) return std::nullopt;
+    auto file = mCookieFiles.find(light.cookie);
+    if (file == mCookieFiles.end()) return std::nullopt;
+    VkSampler sampler =
+        light.type == scene::LightType::Spot ? textures->clampSampler() : textures->repeatSampler();
+    return TextureBinding{file->second.view(), sampler};
+}
+
+}  // namespace varc::runtime

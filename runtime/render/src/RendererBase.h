@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: Apache-2.0
+// What the forward, deferred and single-pass renderers share: the packs and how shaders are
+// found in them, the built-in textures and meshes, per-frame draw resources, the pipelines
+// created so far (one per variant, resolved render state and kind of target), how errors name
+// objects, and the drawing of a one-pass frame.
+#pragma once
+
+#include <deque>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "Draw.h"
+#include "GpuMesh.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/ShaderView.h"
+#include "varc/render/BuiltinTextures.h"
+#include "varc/render/DrawResources.h"
+#include "varc/render/ForwardRenderer.h"
+#include "varc/render/VariantPipeline.h"
+#include "varc/scene/Scene.h"
+#include "varc/variants/LightKeywords.h"
+#include "varc/vulkan/RenderTarget.h"
+#include "varc/vulkan/Texture.h"
+
+namespace varc::runtime {
+
+// The keyword model's name for a scene light type.
+variants::LightType toVariantLight(scene::LightType type);
+
+// How errors name scene object |index|: `object 2 'floor' (shader "varc/Forward")` (the name in
+// quotes only when the object has one).
+std::string objectLabel(size_t index, const scene::Object& object);
+
+struct RendererBase {
+    VulkanContext* context = nullptr;
+    std::vector<const Pack*> packs;
+    std::optional<BuiltinTextures> textures;
+    std::optional<DrawResources> resources;
+    std::map<scene::MeshKind, GpuMesh> meshes;
+    VkPipelineCache pipelineCache = VK_NULL_HANDLE;  // optional, see usePipelineCache()
+
+    // Creates the textures, draw resources and built-in meshes.
+    Status init(VulkanContext& context, std::vector<const Pack*> packs);
+
+    // The shader called |name| in the first pack that has it (|owner| set to that pack).
+    std::optional<ShaderView> findShader(const std::string& name, const Pack** owner) const;
+
+    // The pipeline of |variant| with |state| for |target|, created on first use. Pipelines are
+    // reused for any render pass compatible with the one they were made for; |targetKind| tells
+    // apart targets whose formats differ (HDR/LDR, G-buffer/light/decode passes).
+    Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
+                                            const pack::PackRenderState& state,
+                                            const PipelineTarget& target, uint32_t targetKind);
+
+    // Records |draws| into one cleared render pass of |target| (viewport and scissor: the whole
+    // target), submits and waits, resets the draw resources, then reads the colour back into
+    // |frame|.image; adds the draws recorded to |frame|.draws. Errors, first that applies: the
+    // reset's, the first bind error (recordDraws), the submit's, the readback's.
+    Status drawFrame(const RenderTarget& target, const std::vector<Draw>& draws,
+                     RenderedFrame& frame);
+
+    // Loads each PNG file among |textureNames| (scene::isTextureFile) once per renderer, as an
+    // sRGB texture without mipmaps, sampled linear with repeat. Errors name the file.
+    Status loadTextureFiles(const std::map<std::string, std::string>& textureNames);
+
+    // The texture a material property names: a built-in texture (BuiltinTextures::named) or a
+    // PNG file loaded by loadTextureFiles (2D only); nullopt for anything else.
+    std::optional<TextureBinding> materialTexture(const std::string& name,
+                                                  pack::ResourceDim dim) const;
+
+    // Loads the PNG cookie of each light that names one (scene::isTextureFile; its alpha is the
+    // cookie, stored linear; the scene parser allows them on spot and directional lights only).
+    // Errors: an unreadable file.
+    Status loadCookieFiles(const std::vector<scene::Light>& lights);
+
+    // _LightTexture0 for |light| when it has a PNG cookie: clamped for spot lights, repeating for
+    // directional ones; nullopt otherwise (the default cookies come from BuiltinTextures).
+    std::optional<TextureBinding> cookieFile(const scene::Light& light) const;
+
+private:
+    struct CachedPipeline {
+        const Pack* pack;
+        std::string variant;  // VariantView::describe()
+        pack::PackRenderState state;
+        uint32_t targetKind;
+        VariantPipeline pipeline;
+    };
+    std::deque<CachedPipeline> mPipelines;         // a deque: returned pointers stay valid
+    std::map<std::string, Texture> mTextureFiles;  // material PNGs (sRGB), by path
+    std::map<std::string, Texture> mCookieFiles;   // cookie PNGs (UNORM), by path
+};
+
+}  // namespace varc::runtime

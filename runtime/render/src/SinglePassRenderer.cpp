@@ -1,0 +1,258 @@
+// SPDX-License-Identifier: Apache-2.0
+// SinglePassRenderer: groups objects into draws (instanced batches where the lights allow it),
+// fills the light buffer and per-draw light lists, records one render pass.
+#include "varc/render/SinglePassRenderer.h"
+
+#include <algorithm>
+#include <deque>
+#include <map>
+#include <set>
+
+#include "CameraTargetCache.h"
+#include "Draw.h"
+#include "GpuMesh.h"
+#include "RendererBase.h"
+#include "varc/reader/PassView.h"
+#include "varc/reader/ShaderView.h"
+#include "varc/render/BuiltinTextures.h"
+#include "varc/render/DrawResources.h"
+#include "varc/render/RenderStateResolver.h"
+#include "varc/render/SceneValues.h"
+#include "varc/render/SinglePassValues.h"
+#include "varc/render/VertexLayout.h"
+#include "varc/scene/CameraMatrices.h"
+#include "varc/scene/Mesh.h"
+#include "varc/vulkan/Buffer.h"
+#include "varc/vulkan/RenderTarget.h"
+
+namespace varc::runtime {
+
+namespace {
+
+constexpr const char* kInstancingKeyword = "INSTANCING_ON";
+constexpr const char* kArraySuffix = "Array";
+
+// What an instanced variant reads per instance: the names P of its `PArray` members other than
+// the object matrices, and how many instances its arrays hold (the smallest array).
+struct InstancedLayout {
+    std::set<std::string> properties;
+    uint32_t maxInstances = 0;
+};
+
+InstancedLayout instancedLayout(const VariantView& variant) {
+    InstancedLayout layout;
+    layout.maxInstances = UINT32_MAX;
+    for (pack::Stage stage : {pack::Stage::Vertex, pack::Stage::Fragment}) {
+        std::optional<ProgramView> program = variant.program(stage);
+        if (!program) continue;
+        for (const pack::UniformBlock& block : program->reflection().uniformBlocks) {
+            for (const pack::BlockMember& member : block.members) {
+                std::string_view name = member.name;
+                if (member.arrayCount == 0 || !name.ends_with(kArraySuffix)) continue;
+                layout.maxInstances = std::min(layout.maxInstances, member.arrayCount);
+                name.remove_suffix(std::string_view(kArraySuffix).size());
+                if (name != "unity_ObjectToWorld" && name != "unity_WorldToObject")
+                    layout.properties.emplace(name);
+            }
+        }
+    }
+    if (layout.maxInstances == UINT32_MAX) layout.maxInstances = 1;
+    return layout;
+}
+
+// One draw: an object, or an instanced batch of objects that share everything but their
+// per-instance properties.
+struct DrawGroup {
+    const Pack* pack = nullptr;
+    std::optional<PassView> pass;
+    scene::MeshKind mesh = scene::MeshKind::Sphere;
+    scene::ObjectLightList lights;
+    std::map<std::string, scene::PropertyValue> sharedProperties;  // instanced ones blanked
+    std::vector<pack::ShaderProperty> propertyDefaults;  // the shader's, for per-instance values
+    bool mirrored = false;  // negative-determinant transform: culls the other side (one pipeline)
+    std::vector<size_t> objects;
+    const InstancedLayout* instancing = nullptr;  // null: the shader cannot instance
+};
+
+bool sameBatch(const DrawGroup& group, const DrawGroup& candidate) {
+    return group.instancing && group.pack == candidate.pack &&
+           group.pass->describe() == candidate.pass->describe() && group.mesh == candidate.mesh &&
+           group.lights == candidate.lights && group.mirrored == candidate.mirrored &&
+           group.sharedProperties == candidate.sharedProperties &&
+           group.objects.size() < group.instancing->maxInstances;
+}
+
+// Per-instance arrays of an instanced batch: object matrices and each instanced property.
+ShaderValues instanceValues(const scene::Scene& scene, const DrawGroup& group) {
+    std::vector<glm::mat4> toWorld, toObject;
+    std::map<std::string, std::vector<glm::vec4>> properties;
+    for (size_t index : group.objects) {
+        const scene::Object& object = scene.objects[index];
+        toWorld.push_back(object.transform.localToWorld());
+        toObject.push_back(glm::inverse(toWorld.back()));
+        for (const std::string& name : group.instancing->properties) {
+            const scene::Material material =
+                withPropertyDefaults(object.material, group.propertyDefaults);
+            auto it = material.properties.find(name);
+            glm::vec4 value(0.0f);
+            if (it != material.properties.end()) {
+                if (const auto* v = std::get_if<glm::vec4>(&it->second)) value = *v;
+                if (const auto* f = std::get_if<float>(&it->second))
+                    value = glm::vec4(*f, 0.0f, 0.0f, 0.0f);
+            }
+            properties[name].push_back(value);
+        }
+    }
+    ShaderValues values;
+    values.setArray("unity_ObjectToWorldArray", toWorld);
+    values.setArray("unity_WorldToObjectArray", toObject);
+    for (const auto& [name, perInstance] : properties)
+        values.setArray(name + kArraySuffix, perInstance);
+    return values;
+}
+
+ShaderValues singleObjectValues(const scene::Object& object) {
+    ShaderValues values;
+    glm::mat4 toWorld = object.transform.localToWorld();
+    values.set("unity_ObjectToWorld", toWorld);
+    values.set("unity_WorldToObject", glm::inverse(toWorld));
+    return values;
+}
+
+}  // namespace
+
+struct SinglePassRenderer::State : RendererBase {
+    CameraTargetCache<RenderTarget> targets;
+    // Per shader pass (PassView::describe()): the INSTANCING_ON variant's layout, or null.
+    std::map<std::string, std::optional<InstancedLayout>> instancedLayouts;
+
+    const InstancedLayout* instancing(const PassView& pass);
+    Result<std::vector<DrawGroup>> group(const scene::Scene& scene,
+                                         const scene::VisibleLightSet& visible, bool instancing);
+};
+
+const InstancedLayout* SinglePassRenderer::State::instancing(const PassView& pass) {
+    auto [it, inserted] = instancedLayouts.try_emplace(pass.describe());
+    if (inserted && pass.keywordIndex(kInstancingKeyword)) {
+        std::vector<std::string> keywords = {kInstancingKeyword};
+        auto variant = pass.lookup(keywords, variants::SelectionPolicy::Exact);
+        if (variant) it->second = instancedLayout(*variant);
+    }
+    return it->second ? &*it->second : nullptr;
+}
+
+Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(
+    const scene::Scene& scene, const scene::VisibleLightSet& visible, bool instancing) {
+    std::vector<DrawGroup> groups;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const scene::Object& object = scene.objects[o];
+        std::string what = objectLabel(o, object);
+        DrawGroup candidate;
+        std::optional<ShaderView> shader = findShader(object.material.shader, &candidate.pack);
+        if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
+        candidate.pass = shader->pass(size_t{0});
+        if (!candidate.pass)
+            return makeError(ErrorCode::NotFound, what + ": the shader has no pass");
+        candidate.mesh = object.mesh;
+        candidate.propertyDefaults = shader->properties();
+        candidate.mirrored = glm::determinant(object.transform.localToWorld()) < 0.0f;
+        candidate.lights = scene::objectLightList(scene, visible, object);
+        candidate.sharedProperties =
+            withPropertyDefaults(object.material, shader->properties()).properties;
+        candidate.objects = {o};
+        if (instancing) candidate.instancing = this->instancing(*candidate.pass);
+        if (candidate.instancing) {
+            for (const std::string& name : candidate.instancing->properties) {
+                if (candidate.sharedProperties.count(name)) candidate.sharedProperties[name] = 0.0f;
+            }
+        }
+        auto batch = std::find_if(groups.begin(), groups.end(),
+                                  [&](const DrawGroup& g) { return sameBatch(g, candidate); });
+        if (batch != groups.end()) {
+            batch->objects.push_back(o);
+        } else {
+            groups.push_back(std::move(candidate));
+        }
+    }
+    return groups;
+}
+
+SinglePassRenderer::SinglePassRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
+SinglePassRenderer::SinglePassRenderer(SinglePassRenderer&&) noexcept = default;
+SinglePassRenderer& SinglePassRenderer::operator=(SinglePassRenderer&&) noexcept = default;
+SinglePassRenderer::~SinglePassRenderer() = default;
+
+Result<SinglePassRenderer> SinglePassRenderer::create(VulkanContext& context,
+                                                      std::vector<const Pack*> packs) {
+    auto state = std::make_unique<State>();
+    if (Status ready = state->init(context, std::move(packs)); !ready) return ready.error();
+    return SinglePassRenderer(std::move(state));
+}
+
+Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
+                                                 const SinglePassOptions& options) {
+    State& s = *mState;
+    auto target = s.targets.get(scene.camera, [&](const scene::Camera& camera) {
+        return createCameraTarget(*s.context, camera, "single-pass target");
+    });
+    if (!target) return target.error();
+    const scene::VisibleLightSet visible = scene::selectVisibleLights(scene);
+    auto groups = s.group(scene, visible, options.instancing);
+    if (!groups) return groups.error();
+
+    const ShaderValues camera = cameraValues(scene, scene::cameraMatrices(scene.camera));
+    const ShaderValues lightBuffer = lightBufferValues(scene, visible);
+    std::deque<ShaderValues> values;  // stable storage for the layers the draws point at
+    std::deque<std::map<std::string, std::string>> materialTextures;
+    std::vector<Draw> draws;
+    RenderedFrame frame;
+    for (const DrawGroup& group : *groups) {
+        const scene::Object& first = scene.objects[group.objects.front()];
+        const bool instanced = group.objects.size() > 1;
+        std::vector<std::string> keywords;
+        if (instanced) keywords.push_back(kInstancingKeyword);
+        auto variant = group.pass->lookup(keywords, variants::SelectionPolicy::Exact);
+        if (!variant)
+            return makeError(
+                variant.error().code,
+                "object " + std::to_string(group.objects.front()) + ": " + variant.error().detail);
+        std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
+        const ShaderValues& material = values.emplace_back(materialValues(
+            withPropertyDefaults(first.material, group.propertyDefaults), textureNames));
+        if (Status loaded = s.loadTextureFiles(textureNames); !loaded) {
+            return makeError(
+                loaded.error().code,
+                "object " + std::to_string(group.objects.front()) + ": " + loaded.error().detail);
+        }
+        pack::PackRenderState state =
+            forObjectTransform(resolveRenderState(group.pass->renderState(), material),
+                               first.transform.localToWorld());
+        auto pipeline =
+            s.pipeline(group.pack, *variant, state, {(*target)->renderPass(LoadOp::Clear), true, 1},
+                       scene.camera.hdr ? 1u : 0u);
+        if (!pipeline) return pipeline.error();
+        Draw draw;
+        draw.pipeline = *pipeline;
+        draw.mesh = &s.meshes.at(group.mesh);
+        draw.instances = static_cast<uint32_t>(group.objects.size());
+        const ShaderValues& objects = values.emplace_back(instanced ? instanceValues(scene, group)
+                                                                    : singleObjectValues(first));
+        const ShaderValues& lights = values.emplace_back(drawLightValues(group.lights));
+        draw.layers = {&objects, &lights, &material, &lightBuffer, &camera};
+        draw.textures = [&s, &textureNames](
+                            std::string_view name,
+                            pack::ResourceDim dim) -> std::optional<TextureBinding> {
+            auto it = textureNames.find(std::string(name));
+            return s.materialTexture(it == textureNames.end() ? "white" : it->second, dim);
+        };
+        draws.push_back(std::move(draw));
+        frame.variants.push_back(variant->describe());
+    }
+
+    if (Status drawn = s.drawFrame(**target, draws, frame); !drawn) return drawn.error();
+    return frame;
+}
+
+void SinglePassRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }
+
+}  // namespace varc::runtime

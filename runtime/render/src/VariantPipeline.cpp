@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "varc/render/VariantPipeline.h"
+
+#include <array>
+
+#include "varc/reader/ProgramView.h"
+#include "varc/render/RenderStateResolver.h"
+#include "varc/render/VertexLayout.h"
+#include "varc/vulkan/CheckVk.h"
+#include "varc/vulkan/ShaderModule.h"
+
+namespace varc::runtime {
+
+namespace {
+
+Error withContext(const std::string& what, const Error& error) {
+    return makeError(error.code, what + ": " + error.detail);
+}
+
+Result<std::vector<UniqueHandle<VkDescriptorSetLayout>>> createSetLayouts(
+    const VulkanContext& context, const std::vector<DescriptorSlot>& slots) {
+    std::vector<UniqueHandle<VkDescriptorSetLayout>> layouts;
+    for (uint32_t set = 0; set < descriptorSetCount(slots); ++set) {
+        std::vector<VkDescriptorSetLayoutBinding> bindings;
+        for (const DescriptorSlot& slot : slots) {
+            if (slot.set == set)
+                bindings.push_back({slot.binding, slot.type, 1, slot.stages, nullptr});
+        }
+        VkDescriptorSetLayoutCreateInfo info{};
+        info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+        info.bindingCount = static_cast<uint32_t>(bindings.size());
+        info.pBindings = bindings.data();
+        VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+        if (Status ok =
+                checkVk(vkCreateDescriptorSetLayout(context.device(), &info, nullptr, &layout),
+                        "vkCreateDescriptorSetLayout");
+            !ok) {
+            return ok.error();
+        }
+        layouts.emplace_back(context.device(), layout);
+    }
+    return layouts;
+}
+
+}  // namespace
+
+Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const VariantView& variant,
+                                                const pack::PackRenderState& resolvedState,
+                                                const PipelineTarget& target,
+                                                VkPipelineCache cache) {
+    VariantPipeline result;
+    result.mDescription = variant.describe();
+    std::optional<ProgramView> vertex = variant.program(pack::Stage::Vertex);
+    std::optional<ProgramView> fragment = variant.program(pack::Stage::Fragment);
+    if (!vertex || !fragment) {
+        return makeError(ErrorCode::InvalidInput,
+                         result.mDescription + ": needs a vertex and a fragment program");
+    }
+    pack::ProgramReflection vertexReflection = vertex->reflection();
+    pack::ProgramReflection fragmentReflection = fragment->reflection();
+    auto slots = collectDescriptorSlots({{VK_SHADER_STAGE_VERTEX_BIT, &vertexReflection},
+                                         {VK_SHADER_STAGE_FRAGMENT_BIT, &fragmentReflection}});
+    if (!slots) return withContext(result.mDescription, slots.error());
+    result.mSlots = std::move(*slots);
+    auto vertexInput = vertexInputLayout(vertexReflection.vertexInputs);
+    if (!vertexInput) return withContext(result.mDescription, vertexInput.error());
+
+    std::array<UniqueHandle<VkShaderModule>, 2> modules;
+    std::array<ProgramView, 2> programs = {*vertex, *fragment};
+    for (size_t i = 0; i < 2; ++i) {
+        auto spirv = programs[i].spirv();
+        if (!spirv) return withContext(result.mDescription, spirv.error());
+        auto module = createShaderModule(context, *spirv, programs[i].describe());
+        if (!module) return withContext(result.mDescription, module.error());
+        modules[i] = std::move(*module);
+    }
+    auto setLayouts = createSetLayouts(context, result.mSlots);
+    if (!setLayouts) return withContext(result.mDescription, setLayouts.error());
+    result.mSetLayouts = std::move(*setLayouts);
+
+    std::vector<VkDescriptorSetLayout> rawLayouts;
+    for (const auto& layout : result.mSetLayouts) rawLayouts.push_back(layout.get());
+    VkPipelineLayoutCreateInfo layoutInfo{};
+    layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+    layoutInfo.setLayoutCount = static_cast<uint32_t>(rawLayouts.size());
+    layoutInfo.pSetLayouts = rawLayouts.data();
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    if (Status ok = checkVk(vkCreatePipelineLayout(context.device(), &layoutInfo, nullptr, &layout),
+                            "vkCreatePipelineLayout");
+        !ok) {
+        return withContext(result.mDescription, ok.error());
+    }
+    result.mLayout = UniqueHandle<VkPipelineLayout>(context.device(), layout);
+
+    std::string vertexEntry(vertex->entryPoint()), fragmentEntry(fragment->entryPoint());
+    std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+    stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                 nullptr,
+                 0,
+                 VK_SHADER_STAGE_VERTEX_BIT,
+                 modules[0].get(),
+                 vertexEntry.c_str(),
+                 nullptr};
+    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                 nullptr,
+                 0,
+                 VK_SHADER_STAGE_FRAGMENT_BIT,
+                 modules[1].get(),
+                 fragmentEntry.c_str(),
+                 nullptr};
+
+    VkPipelineVertexInputStateCreateInfo vertexInputInfo{};
+
+    vertexInputInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+    if (!vertexInput->attributes.empty()) {
+        vertexInputInfo.vertexBindingDescriptionCount = 1;
+        vertexInputInfo.pVertexBindingDescriptions = &vertexInput->binding;
+        vertexInputInfo.vertexAttributeDescriptionCount =
+            static_cast<uint32_t>(vertexInput->attributes.size());
+        vertexInputInfo.pVertexAttributeDescriptions = vertexInput->attributes.data();
+    }
+    VkPipelineInputAssemblyStateCreateInfo assembly{};
+    assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo viewport{};
+    viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    VkPipelineMultisampleStateCreateInfo multisample{};
+    multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VulkanRenderState state = toVulkan(resolvedState, target.hasStencil);
+    VkPipelineColorBlendStateCreateInfo blend{};
+    blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
+    std::vector<VkPipelineColorBlendAttachmentState> attachments(target.colorAttachments,
+                                                                 state.blend);
+    blend.attachmentCount = static_cast<uint32_t>(attachments.size());
+    blend.pAttachments = attachments.data();
+    std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
+                                                   VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{};
+    dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+    dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
+    dynamic.pDynamicStates = dynamicStates.data();
+
+    VkGraphicsPipelineCreateInfo info{};
+
+    info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+    info.stageCount = static_cast<uint32_t>(stages.size());
+    info.pStages = stages.data();
+    info.pVertexInputState = &vertexInputInfo;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &state.rasterization;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &state.depthStencil;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = layout;
+    info.renderPass = target.renderPass;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    if (Status ok = checkVk(
+            vkCreateGraphicsPipelines(context.device(), cache, 1, &info, nullptr, &pipeline),
+            "vkCreateGraphicsPipelines");
+        !ok) {
+        return withContext(result.mDescription, ok.error());
+    }
+    result.mPipeline = UniqueHandle<VkPipeline>(context.device(), pipeline);
+    context.nameObject(result.mPipeline, result.mDescription);
+    return result;
+}
+
+}  // namespace varc::runtime
