@@ -104,7 +104,7 @@ BENCHMARK(BM_VarcBuild)
 // One glslangValidator process per (pass, variant, stage), on the same spliced source and
 // predefined macros varc uses: the start-up-bound baseline the issue measures (~110 ms each).
 bool compileWithValidator(const compiler::LoadedPass& pass,
-                          const std::vector<std::string>& keywords, uint32_t stage,
+                          const std::vector<std::string>& keywords, Stage stage,
                           const std::string& entry, const std::string& dir) {
     bool glsl = pass.pass->program->language == shaderlab::ProgramLanguage::Glsl;
     compiler::DefineContext context{pass.pass->lightMode(), pass.keywords.target,
@@ -115,11 +115,11 @@ bool compileWithValidator(const compiler::LoadedPass& pass,
     source += pass.source.text;
     std::string path = dir + (glsl ? "/program.glsl" : "/program.hlsl");
     std::ofstream(path) << source;
-    std::string stageName = stage == variants::kStageVertex ? "vert" : "frag";
+    std::string stageFlag = stage == Stage::Vertex ? "vert" : "frag";
     std::string command =
         "glslangValidator -V --quiet --auto-map-bindings --auto-map-locations "
         "--target-env vulkan1.0 -S " +
-        stageName + " ";
+        stageFlag + " ";
     command += glsl ? "-R " : "-D --hlsl-dx9-compatible -e " + entry + " ";
     command += path + " -o " + dir + "/program.spv > /dev/null 2>&1";
     return std::system(command.c_str()) == 0;
@@ -171,9 +171,8 @@ void BM_GlslangValidatorPerVariant(benchmark::State& state) {
                 bool glsl = pass.pass->program->language == shaderlab::ProgramLanguage::Glsl;
                 pass.space->forEach([&](const variants::VariantKey& key) {
                     std::vector<std::string> keywords = pass.space->table().namesOf(key);
-                    for (uint32_t stage :
-                         {uint32_t(variants::kStageVertex), uint32_t(variants::kStageFragment)}) {
-                        const std::string& entry = stage == variants::kStageVertex
+                    for (Stage stage : {Stage::Vertex, Stage::Fragment}) {
+                        const std::string& entry = stage == Stage::Vertex
                                                        ? pass.keywords.vertexEntry
                                                        : pass.keywords.fragmentEntry;
                         ++processes;

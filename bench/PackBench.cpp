@@ -89,7 +89,7 @@ const Synthetic& synthetic() {
         s.contents.toolchain = {{"varc", "bench"}};
         for (uint32_t stage = 0; stage < 2; ++stage) {
             for (uint32_t i = 0; i < kProgramsPerStage; ++i) {
-                s.contents.programs.push_back({static_cast<pack::Stage>(stage),
+                s.contents.programs.push_back({static_cast<Stage>(stage),
                                                stage == 0 ? "vert" : "frag",
                                                syntheticSpirv(i, stage),
                                                {},

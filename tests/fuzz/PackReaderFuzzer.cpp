@@ -34,7 +34,7 @@ void exercise(const Pack& pack) {
             for (size_t v = 0; v < pass.variantCount(); ++v) {
                 varc::runtime::VariantView variant = pass.variant(v);
                 (void)variant.describe();
-                (void)variant.spirv(varc::pack::Stage::Vertex);
+                (void)variant.spirv(varc::Stage::Vertex);
             }
         }
     }

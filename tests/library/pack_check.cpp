@@ -19,7 +19,7 @@
 
 namespace {
 
-using varc::pack::Stage;
+using varc::Stage;
 
 // Validates |view|'s program for |stage| unless already seen; returns false on a missing or
 // invalid program, after printing why.
@@ -27,7 +27,8 @@ bool checkStage(const varc::runtime::VariantView& view, Stage stage, spvtools::S
                 std::set<size_t>& validated, std::string& log) {
     auto program = view.program(stage);
     if (!program) {
-        std::printf("FAIL: %s has no %s program\n", view.describe().c_str(), varc::pack::stageName(stage));
+        std::printf("FAIL: %s has no %s program\n", view.describe().c_str(),
+                    varc::stageName(stage));
         return false;
     }
     if (!validated.insert(program->index()).second) return true;

@@ -165,8 +165,7 @@ TEST_F(VariantDrawTest, EveryVariantOfTheTestPacksDraws) {
             for (size_t v = 0; v < pass.variantCount(); ++v) {
                 VariantView variant = pass.variant(v);
                 SCOPED_TRACE(variant.describe());
-                size_t outputs =
-                    variant.program(pack::Stage::Fragment)->reflection().outputs.size();
+                size_t outputs = variant.program(Stage::Fragment)->reflection().outputs.size();
                 const RenderTarget* target = outputs > 1 ? &*gbuffer : &*single;
                 auto pipeline = VariantPipeline::create(
                     context(), variant, state,

@@ -46,7 +46,7 @@ struct ItemOutcome {
 // One distinct preprocessed, pruned program.
 struct SourceProgram {
     size_t job = 0;
-    uint32_t stage = 0;
+    Stage stage = Stage::Vertex;
     std::string entryPoint;
     std::string text;
     size_t firstVariant = 0;
@@ -81,6 +81,11 @@ private:
     CompiledSource compileSource(const SourceProgram& source) const;
     // Remembers the first failure to write the cache (thread-safe); the build goes on.
     void noteCacheFailure(const Status& stored) const;
+    // Where a program first used by |pass| came from, for runtime error messages.
+    pack::SourceInfo sourceInfoOf(const LoadedPass& pass) const {
+        SourceLocation origin = pass.pass->program->origin;
+        return {mSourceMap.path(origin.file), origin.line, pass.source.dependencies};
+    }
     void fillStats(const PassJob& job, CompiledPass& pass,
                    const std::vector<uint32_t>& finalIds) const;
 
@@ -129,7 +134,7 @@ bool Builder::plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sin
 uint32_t Builder::internSource(size_t jobIndex, size_t variant, size_t stageIndex,
                                std::string text) {
     const auto& [stage, entry] = mJobs[jobIndex].stages[stageIndex];
-    std::string key = std::to_string(stage) + "|" + entry + "|" + text;
+    std::string key = std::to_string(varc::stageIndex(stage)) + "|" + entry + "|" + text;
     auto [it, inserted] =
         mSourceIndex.emplace(std::move(key), static_cast<uint32_t>(mSources.size()));
     if (inserted) mSources.push_back({jobIndex, stage, entry, std::move(text), variant});
@@ -317,7 +322,7 @@ void Builder::fillStats(const PassJob& job, CompiledPass& pass,
     pass.stats.declaredVariants = job.pass->space->fullCount();
     pass.stats.variants = job.keys.size();
     for (size_t stageIndex = 0; stageIndex < job.stages.size(); ++stageIndex) {
-        size_t slot = stageSlot(job.stages[stageIndex].first);
+        size_t slot = varc::stageIndex(job.stages[stageIndex].first);
         std::set<uint32_t> sources, modules;
         for (size_t v = 0; v < job.keys.size(); ++v) {
             uint32_t source = job.sourceIds[v * job.stages.size() + stageIndex];
@@ -346,7 +351,7 @@ BuildOutput Builder::assemble() {
             if (inserted) {
                 output.programs.push_back({program.stage, program.entryPoint,
                                            mCompiled[source].spirv, mCompiled[source].reflection,
-                                           job.shaderIndex, job.passIndex});
+                                           sourceInfoOf(*job.pass)});
             }
             finalIds[source] = it->second;
         }
@@ -356,10 +361,10 @@ BuildOutput Builder::assemble() {
         pass.shaderIndex = job.shaderIndex;
         pass.passIndex = job.passIndex;
         for (size_t v = 0; v < job.keys.size(); ++v) {
-            CompiledVariant variant{job.keys[v], {}};
+            pack::PackVariant variant{job.keys[v], {}};
             variant.programs.fill(kNoProgram);
             for (size_t s = 0; s < job.stages.size(); ++s) {
-                variant.programs[stageSlot(job.stages[s].first)] =
+                variant.programs[stageIndex(job.stages[s].first)] =
                     finalIds[job.sourceIds[v * job.stages.size() + s]];
             }
             pass.variants.push_back(variant);
@@ -372,37 +377,6 @@ BuildOutput Builder::assemble() {
 }
 
 }  // namespace
-
-size_t stageSlot(uint32_t stageBit) {
-    switch (stageBit) {
-        case variants::kStageVertex:
-            return 0;
-        case variants::kStageFragment:
-            return 1;
-        case variants::kStageGeometry:
-            return 2;
-        case variants::kStageHull:
-            return 3;
-        case variants::kStageDomain:
-            return 4;
-        default:
-            return kStageCount;
-    }
-}
-
-uint32_t stageBitOfSlot(size_t slot) {
-    static constexpr uint32_t kBits[kStageCount] = {
-        variants::kStageVertex, variants::kStageFragment, variants::kStageGeometry,
-        variants::kStageHull, variants::kStageDomain};
-    return slot < kStageCount ? kBits[slot] : 0;
-}
-
-const char* stageName(uint32_t stageBit) {
-    static const char* const kNames[kStageCount] = {"vertex", "fragment", "geometry", "hull",
-                                                    "domain"};
-    size_t slot = stageSlot(stageBit);
-    return slot < kStageCount ? kNames[slot] : "unknown";
-}
 
 std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shaders,
                                          const includes::SourceMap& sourceMap,

@@ -14,29 +14,29 @@ namespace {
 struct LegacyBuiltin {
     const char* name;         // the gl_ name the source uses
     const char* declaration;  // what replaces it, declared as varc_<suffix>
-    uint32_t stages;          // where it may be used
+    StageMask stages;         // where it may be used
 };
 
 // Vertex attributes become inputs; fixed-function state becomes uniforms of the default block.
 constexpr LegacyBuiltin kBuiltins[] = {
-    {"gl_Vertex", "in vec4 varc_Vertex;", variants::kStageVertex},
-    {"gl_Normal", "in vec3 varc_Normal;", variants::kStageVertex},
-    {"gl_Color", "in vec4 varc_Color;", variants::kStageVertex},
-    {"gl_MultiTexCoord0", "in vec4 varc_MultiTexCoord0;", variants::kStageVertex},
-    {"gl_MultiTexCoord1", "in vec4 varc_MultiTexCoord1;", variants::kStageVertex},
-    {"gl_MultiTexCoord2", "in vec4 varc_MultiTexCoord2;", variants::kStageVertex},
-    {"gl_MultiTexCoord3", "in vec4 varc_MultiTexCoord3;", variants::kStageVertex},
-    {"gl_ModelViewProjectionMatrix", "uniform mat4 varc_ModelViewProjectionMatrix;", variants::kStageAll},
-    {"gl_ModelViewMatrix", "uniform mat4 varc_ModelViewMatrix;", variants::kStageAll},
-    {"gl_ProjectionMatrix", "uniform mat4 varc_ProjectionMatrix;", variants::kStageAll},
-    {"gl_NormalMatrix", "uniform mat3 varc_NormalMatrix;", variants::kStageAll},
+    {"gl_Vertex", "in vec4 varc_Vertex;", stageBit(Stage::Vertex)},
+    {"gl_Normal", "in vec3 varc_Normal;", stageBit(Stage::Vertex)},
+    {"gl_Color", "in vec4 varc_Color;", stageBit(Stage::Vertex)},
+    {"gl_MultiTexCoord0", "in vec4 varc_MultiTexCoord0;", stageBit(Stage::Vertex)},
+    {"gl_MultiTexCoord1", "in vec4 varc_MultiTexCoord1;", stageBit(Stage::Vertex)},
+    {"gl_MultiTexCoord2", "in vec4 varc_MultiTexCoord2;", stageBit(Stage::Vertex)},
+    {"gl_MultiTexCoord3", "in vec4 varc_MultiTexCoord3;", stageBit(Stage::Vertex)},
+    {"gl_ModelViewProjectionMatrix", "uniform mat4 varc_ModelViewProjectionMatrix;", kAllStages},
+    {"gl_ModelViewMatrix", "uniform mat4 varc_ModelViewMatrix;", kAllStages},
+    {"gl_ProjectionMatrix", "uniform mat4 varc_ProjectionMatrix;", kAllStages},
+    {"gl_NormalMatrix", "uniform mat3 varc_NormalMatrix;", kAllStages},
     {"gl_ModelViewMatrixInverseTranspose", "uniform mat4 varc_ModelViewMatrixInverseTranspose;",
-     variants::kStageAll},
+     kAllStages},
     {"gl_LightModel",
      "struct varc_LightModelParameters { vec4 ambient; };\n"
      "uniform varc_LightModelParameters varc_LightModel;",
-     variants::kStageAll},
-    {"gl_FragColor", "out vec4 varc_FragColor;", variants::kStageFragment},
+     kAllStages},
+    {"gl_FragColor", "out vec4 varc_FragColor;", stageBit(Stage::Fragment)},
 };
 
 bool mentions(std::string_view source, std::string_view name) {
@@ -97,16 +97,16 @@ std::string toGlslLineConvention(std::string_view source) {
     return result;
 }
 
-std::string legacyGlslPreamble(std::string_view source, uint32_t stage) {
+std::string legacyGlslPreamble(std::string_view source, Stage stage) {
     std::string text;
     for (const LegacyBuiltin& builtin : kBuiltins) {
-        if (!(builtin.stages & stage) || !mentions(source, builtin.name)) continue;
+        if (!hasStage(builtin.stages, stage) || !mentions(source, builtin.name)) continue;
         std::string name = builtin.name;
         text += std::string(builtin.declaration) + "\n";
         text += "#define " + name + " varc_" + name.substr(3) + "\n";
     }
-    if (stage == variants::kStageVertex) text += "#define varying out\n";
-    if (stage == variants::kStageFragment) text += "#define varying in\n";
+    if (stage == Stage::Vertex) text += "#define varying out\n";
+    if (stage == Stage::Fragment) text += "#define varying in\n";
     return text;
 }
 

@@ -17,15 +17,20 @@ namespace varc::compiler {
 
 namespace {
 
-EShLanguage toGlslangStage(uint32_t stage) {
+EShLanguage toGlslangStage(Stage stage) {
     switch (stage) {
-        case variants::kStageVertex: return EShLangVertex;
-        case variants::kStageFragment: return EShLangFragment;
-        case variants::kStageGeometry: return EShLangGeometry;
-        case variants::kStageHull: return EShLangTessControl;
-        case variants::kStageDomain: return EShLangTessEvaluation;
-        default: return EShLangVertex;
+        case Stage::Vertex:
+            return EShLangVertex;
+        case Stage::Fragment:
+            return EShLangFragment;
+        case Stage::Geometry:
+            return EShLangGeometry;
+        case Stage::Hull:
+            return EShLangTessControl;
+        case Stage::Domain:
+            return EShLangTessEvaluation;
     }
+    return EShLangVertex;
 }
 
 bool isHlsl(const FrontendInput& input) {
@@ -38,16 +43,8 @@ EShMessages messagesFor(const FrontendInput& input) {
     return static_cast<EShMessages>(messages);
 }
 
-uint32_t descriptorSetOfStage(uint32_t stage) {
-    switch (stage) {
-        case variants::kStageVertex: return 0;
-        case variants::kStageFragment: return 1;
-        case variants::kStageGeometry: return 2;
-        case variants::kStageHull: return 3;
-        case variants::kStageDomain: return 4;
-    }
-    return 0;
-}
+// One descriptor set per stage, numbered like the stage slots (docs/SHADER_ABI.md §1).
+uint32_t descriptorSetOfStage(Stage stage) { return static_cast<uint32_t>(stageIndex(stage)); }
 
 // Default version for sources without `#version`: HLSL ignores it; see GlslLegacyPreamble.h.
 int defaultVersion(const FrontendInput& input) { return isHlsl(input) ? 100 : kLegacyGlslVersion; }

@@ -15,8 +15,6 @@ namespace varc::compiler {
 
 namespace {
 
-pack::Stage packStage(uint32_t stageBit) { return static_cast<pack::Stage>(stageSlot(stageBit)); }
-
 std::vector<pack::DeclaredSet> declaredSets(const variants::PassKeywords& keywords) {
     std::vector<pack::DeclaredSet> sets;
     for (const variants::KeywordSetDecl& set : keywords.sets)
@@ -41,17 +39,8 @@ std::optional<pack::PackPass> assemblePass(const LoadedShader& shader, const Com
     pass.state = state.state;
     pass.keywordTable = loaded.space->table().names();
     pass.sets = declaredSets(loaded.keywords);
-    for (const CompiledVariant& variant : compiled.variants) {
-        pass.variants.push_back({variant.key, variant.programs});
-    }
+    pass.variants = compiled.variants;
     return pass;
-}
-
-pack::SourceInfo sourceInfo(const LoadedShader& shader, size_t passIndex,
-                            const includes::SourceMap& sourceMap) {
-    const LoadedPass& pass = shader.passes[passIndex];
-    SourceLocation origin = pass.pass->program->origin;
-    return {sourceMap.path(origin.file), origin.line, pass.source.dependencies};
 }
 
 // Hash of everything that decides the pack's bytes: every file read, options and versions.
@@ -122,11 +111,7 @@ std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& 
         }
         contents.shaders[shaderSlot[compiled.shaderIndex]].passes.push_back(std::move(*pass));
     }
-    for (const CompiledProgram& program : build.programs) {
-        contents.programs.push_back(
-            {packStage(program.stage), program.entryPoint, program.spirv, program.reflection,
-             sourceInfo(shaders[program.shaderIndex], program.passIndex, sourceMap)});
-    }
+    contents.programs = build.programs;
     if (!ok) return std::nullopt;
     return contents;
 }
@@ -136,9 +121,9 @@ bool checkStageInterfaces(const std::vector<LoadedShader>& shaders, const BuildO
     bool ok = true;
     std::set<std::pair<uint32_t, uint32_t>> checked;
     for (const CompiledPass& pass : build.passes) {
-        for (const CompiledVariant& variant : pass.variants) {
-            uint32_t vertex = variant.programs[stageSlot(variants::kStageVertex)];
-            uint32_t fragment = variant.programs[stageSlot(variants::kStageFragment)];
+        for (const pack::PackVariant& variant : pass.variants) {
+            uint32_t vertex = variant.programs[stageIndex(Stage::Vertex)];
+            uint32_t fragment = variant.programs[stageIndex(Stage::Fragment)];
             if (vertex == kNoProgram || fragment == kNoProgram ||
                 !checked.insert({vertex, fragment}).second)
                 continue;

@@ -18,23 +18,31 @@ std::string upper(std::string_view text) {
     return result;
 }
 
-const char* stageMacro(uint32_t stage) {
+const char* stageMacro(Stage stage) {
     switch (stage) {
-        case variants::kStageVertex: return "SHADER_STAGE_VERTEX";
-        case variants::kStageFragment: return "SHADER_STAGE_FRAGMENT";
-        case variants::kStageGeometry: return "SHADER_STAGE_GEOMETRY";
-        case variants::kStageHull: return "SHADER_STAGE_HULL";
-        case variants::kStageDomain: return "SHADER_STAGE_DOMAIN";
-        default: return nullptr;
+        case Stage::Vertex:
+            return "SHADER_STAGE_VERTEX";
+        case Stage::Fragment:
+            return "SHADER_STAGE_FRAGMENT";
+        case Stage::Geometry:
+            return "SHADER_STAGE_GEOMETRY";
+        case Stage::Hull:
+            return "SHADER_STAGE_HULL";
+        case Stage::Domain:
+            return "SHADER_STAGE_DOMAIN";
     }
+    return nullptr;
 }
 
 // GLSLPROGRAM blocks hold every stage in one text, selected by VERTEX / FRAGMENT.
-const char* glslStageMacro(uint32_t stage) {
+const char* glslStageMacro(Stage stage) {
     switch (stage) {
-        case variants::kStageVertex: return "VERTEX";
-        case variants::kStageFragment: return "FRAGMENT";
-        case variants::kStageGeometry: return "GEOMETRY";
+        case Stage::Vertex:
+            return "VERTEX";
+        case Stage::Fragment:
+            return "FRAGMENT";
+        case Stage::Geometry:
+            return "GEOMETRY";
         default: return nullptr;
     }
 }

@@ -143,7 +143,7 @@ ProgramCacheKey ProgramCache::keyOf(const ProgramCacheInput& input) const {
     putU64(text, mToolchain.high);
     putU32(text, static_cast<uint32_t>(input.optimization));
     putU32(text, static_cast<uint32_t>(input.language));
-    putU32(text, input.stage);
+    putU32(text, static_cast<uint32_t>(input.stage));
     putU32(text, static_cast<uint32_t>(input.entryPoint.size()));
     text += input.entryPoint;
     text += input.text;
@@ -157,7 +157,7 @@ ProgramCacheKey ProgramCache::sourceKeyOf(const SourceCacheInput& input) const {
     putU64(text, input.passText.low);
     putU64(text, input.passText.high);
     putU32(text, static_cast<uint32_t>(input.language));
-    putU32(text, input.stage);
+    putU32(text, static_cast<uint32_t>(input.stage));
     putU32(text, input.pruned ? 1 : 0);
     putU32(text, static_cast<uint32_t>(input.entryPoint.size()));
     text += input.entryPoint;

@@ -17,15 +17,16 @@ variants::VariantKey unionOf(const std::vector<variants::VariantKey>& options) {
 
 // Variants that agree on every other set fall into one group; the set affects a stage when a
 // group holds two different programs for it.
-uint32_t effectOfSet(const variants::VariantKey& setBits,
-                     const std::vector<CompiledVariant>& variants) {
-    std::unordered_map<variants::VariantKey, const CompiledVariant*> firstInGroup;
-    uint32_t stages = 0;
-    for (const CompiledVariant& variant : variants) {
+StageMask effectOfSet(const variants::VariantKey& setBits,
+                      const std::vector<pack::PackVariant>& variants) {
+    std::unordered_map<variants::VariantKey, const pack::PackVariant*> firstInGroup;
+    StageMask stages = 0;
+    for (const pack::PackVariant& variant : variants) {
         auto [it, inserted] = firstInGroup.emplace(variant.key.andNot(setBits), &variant);
         if (inserted) continue;
-        for (size_t slot = 0; slot < kStageCount; ++slot) {
-            if (it->second->programs[slot] != variant.programs[slot]) stages |= stageBitOfSlot(slot);
+        for (Stage stage : kStages) {
+            size_t slot = stageIndex(stage);
+            if (it->second->programs[slot] != variant.programs[slot]) stages |= stageBit(stage);
         }
     }
     return stages;
@@ -33,9 +34,9 @@ uint32_t effectOfSet(const variants::VariantKey& setBits,
 
 }  // namespace
 
-std::vector<uint32_t> computeSetStageEffects(const variants::VariantSpace& space,
-                                             const std::vector<CompiledVariant>& variants) {
-    std::vector<uint32_t> effects;
+std::vector<StageMask> computeSetStageEffects(const variants::VariantSpace& space,
+                                              const std::vector<pack::PackVariant>& variants) {
+    std::vector<StageMask> effects;
     for (const std::vector<variants::VariantKey>& options : space.setOptions()) {
         effects.push_back(effectOfSet(unionOf(options), variants));
     }

@@ -15,21 +15,21 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // "vertex 2, fragment 1" for the stages a pass compiles.
-std::string stageCounts(const std::array<size_t, compiler::kStageCount>& counts) {
+std::string stageCounts(const std::array<size_t, kStageCount>& counts) {
     std::string text;
-    for (size_t slot = 0; slot < compiler::kStageCount; ++slot) {
-        if (counts[slot] == 0) continue;
+    for (Stage stage : kStages) {
+        size_t count = counts[stageIndex(stage)];
+        if (count == 0) continue;
         if (!text.empty()) text += ", ";
-        text += std::string(compiler::stageName(compiler::stageBitOfSlot(slot))) + " " +
-                std::to_string(counts[slot]);
+        text += std::string(stageName(stage)) + " " + std::to_string(count);
     }
     return text;
 }
 
-uint32_t compiledStages(const compiler::CompiledPass& pass) {
-    uint32_t stages = 0;
-    for (size_t slot = 0; slot < compiler::kStageCount; ++slot) {
-        if (pass.stats.distinctModules[slot] > 0) stages |= compiler::stageBitOfSlot(slot);
+StageMask compiledStages(const compiler::CompiledPass& pass) {
+    StageMask stages = 0;
+    for (Stage stage : kStages) {
+        if (pass.stats.distinctModules[stageIndex(stage)] > 0) stages |= stageBit(stage);
     }
     return stages;
 }
@@ -38,13 +38,12 @@ uint32_t compiledStages(const compiler::CompiledPass& pass) {
 std::vector<std::pair<std::string, std::vector<std::string>>> unaffectedStages(
     const compiler::LoadedPass& loaded, const compiler::CompiledPass& pass) {
     std::vector<std::pair<std::string, std::vector<std::string>>> result;
-    uint32_t stages = compiledStages(pass);
+    StageMask stages = compiledStages(pass);
     for (size_t i = 0; i < pass.setStageEffects.size(); ++i) {
         std::vector<std::string> unaffected;
-        for (size_t slot = 0; slot < compiler::kStageCount; ++slot) {
-            uint32_t bit = compiler::stageBitOfSlot(slot);
-            if ((stages & bit) && !(pass.setStageEffects[i] & bit)) {
-                unaffected.push_back(compiler::stageName(bit));
+        for (Stage stage : kStages) {
+            if (hasStage(stages, stage) && !hasStage(pass.setStageEffects[i], stage)) {
+                unaffected.push_back(stageName(stage));
             }
         }
         std::string keywords;
@@ -109,9 +108,10 @@ Json buildReportJson(const std::vector<compiler::LoadedShader>& shaders,
         const compiler::LoadedShader& shader = shaders[pass.shaderIndex];
         const compiler::LoadedPass& loaded = shader.passes[pass.passIndex];
         Json sources = Json::object(), programs = Json::object(), unaffected = Json::object();
-        for (size_t slot = 0; slot < compiler::kStageCount; ++slot) {
+        for (Stage stage : kStages) {
+            size_t slot = stageIndex(stage);
             if (pass.stats.distinctModules[slot] == 0) continue;
-            const char* name = compiler::stageName(compiler::stageBitOfSlot(slot));
+            const char* name = stageName(stage);
             sources[name] = pass.stats.distinctSources[slot];
             programs[name] = pass.stats.distinctModules[slot];
         }

@@ -127,13 +127,13 @@ int runCheck(const Options& options, Session& session, std::ostream& out, std::o
 // Raw bytes count every variant's stages as if stored separately; unique counts each module once.
 PackSizes measureSpirv(const compiler::BuildOutput& build) {
     PackSizes sizes;
-    for (const compiler::CompiledProgram& program : build.programs) {
+    for (const pack::PackProgram& program : build.programs) {
         sizes.uniqueSpirvBytes += program.spirv.size() * sizeof(uint32_t);
     }
     for (const compiler::CompiledPass& pass : build.passes) {
-        for (const compiler::CompiledVariant& variant : pass.variants) {
+        for (const pack::PackVariant& variant : pass.variants) {
             for (uint32_t program : variant.programs) {
-                if (program == compiler::kNoProgram) continue;
+                if (program == pack::kNoProgram) continue;
                 sizes.rawSpirvBytes += build.programs[program].spirv.size() * sizeof(uint32_t);
             }
         }

@@ -24,14 +24,14 @@ using Json = nlohmann::ordered_json;
 std::string programFileName(const runtime::ProgramView& program) {
     char index[16];
     std::snprintf(index, sizeof index, "%04u", program.index());
-    return std::string("program-") + index + "-" + pack::stageName(program.stage()) + ".spv";
+    return std::string("program-") + index + "-" + stageName(program.stage()) + ".spv";
 }
 
 Json variantJson(const runtime::VariantView& variant) {
     Json stages = Json::object();
-    for (size_t s = 0; s < pack::kStageCount; ++s) {
-        if (auto program = variant.program(static_cast<pack::Stage>(s))) {
-            stages[pack::stageName(program->stage())] = programFileName(*program);
+    for (Stage stage : kStages) {
+        if (auto program = variant.program(stage)) {
+            stages[stageName(program->stage())] = programFileName(*program);
         }
     }
     return {{"keywords", variant.keywords()}, {"stages", stages}};
@@ -86,7 +86,7 @@ int runExtract(const Options& options, std::ostream& out, std::ostream& err) {
             return kExitFailure;
         }
         programs.push_back({{"file", programFileName(program)},
-                            {"stage", pack::stageName(program.stage())},
+                            {"stage", stageName(program.stage())},
                             {"entry_point", program.entryPoint()},
                             {"bytes", program.spirvByteSize()},
                             {"source", std::string(program.sourceFile()) + ":" +

@@ -22,13 +22,13 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // Distinct program indices per stage over every variant of |pass|.
-std::array<std::set<uint32_t>, pack::kStageCount> distinctPrograms(const runtime::PassView& pass) {
-    std::array<std::set<uint32_t>, pack::kStageCount> programs;
+std::array<std::set<uint32_t>, kStageCount> distinctPrograms(const runtime::PassView& pass) {
+    std::array<std::set<uint32_t>, kStageCount> programs;
     for (size_t v = 0; v < pass.variantCount(); ++v) {
         runtime::VariantView variant = pass.variant(v);
-        for (size_t s = 0; s < pack::kStageCount; ++s) {
-            if (auto program = variant.program(static_cast<pack::Stage>(s))) {
-                programs[s].insert(program->index());
+        for (Stage stage : kStages) {
+            if (auto program = variant.program(stage)) {
+                programs[stageIndex(stage)].insert(program->index());
             }
         }
     }
@@ -38,9 +38,9 @@ std::array<std::set<uint32_t>, pack::kStageCount> distinctPrograms(const runtime
 Json programsJson(const runtime::PassView& pass) {
     Json json = Json::object();
     auto programs = distinctPrograms(pass);
-    for (size_t s = 0; s < pack::kStageCount; ++s) {
-        if (!programs[s].empty())
-            json[pack::stageName(static_cast<pack::Stage>(s))] = programs[s].size();
+    for (Stage stage : kStages) {
+        const std::set<uint32_t>& distinct = programs[stageIndex(stage)];
+        if (!distinct.empty()) json[stageName(stage)] = distinct.size();
     }
     return json;
 }

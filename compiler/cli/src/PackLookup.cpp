@@ -88,9 +88,9 @@ Json programJson(const runtime::ProgramView& program) {
 void printVariant(const runtime::VariantView& variant, const std::vector<std::string>& requested,
                   bool json, std::ostream& out) {
     Json stages = Json::object();
-    for (size_t s = 0; s < pack::kStageCount; ++s) {
-        if (auto program = variant.program(static_cast<pack::Stage>(s))) {
-            stages[pack::stageName(program->stage())] = programJson(*program);
+    for (Stage stage : kStages) {
+        if (auto program = variant.program(stage)) {
+            stages[stageName(program->stage())] = programJson(*program);
         }
     }
     if (json) {

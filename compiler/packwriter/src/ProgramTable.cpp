@@ -29,7 +29,7 @@ ProgramTable::ProgramTable(const pack::PackContents& contents)
     for (const pack::PackShader& shader : contents.shaders) {
         for (const pack::PackPass& pass : shader.passes) {
             for (const pack::PackVariant& variant : pass.variants) {
-                for (size_t slot = 0; slot < pack::kStageCount; ++slot) {
+                for (size_t slot = 0; slot < kStageCount; ++slot) {
                     if (variant.programs[slot] != pack::kNoProgram) {
                         use(contents, variant.programs[slot], slot);
                     }
@@ -50,9 +50,9 @@ uint32_t ProgramTable::use(const pack::PackContents& contents, uint32_t original
         << "variant uses program " << original << " of " << contents.programs.size();
     if (mRemap[original] != pack::kNoProgram) return mRemap[original];
     const pack::PackProgram& program = contents.programs[original];
-    VARC_CHECK(pack::stageIndex(program.stage) == slot)
-        << "program " << original << " (" << pack::stageName(program.stage)
-        << ") is used in stage slot " << slot;
+    VARC_CHECK(stageIndex(program.stage) == slot)
+        << "program " << original << " (" << stageName(program.stage) << ") is used in stage slot "
+        << slot;
     VARC_CHECK(!program.spirv.empty() && program.spirv.size() <= pack::kMaxBlobBytes / 4)
         << "program " << original << " has " << program.spirv.size() << " SPIR-V words";
     std::vector<uint32_t>& candidates = mByHash[contentHash(program)];

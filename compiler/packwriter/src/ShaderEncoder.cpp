@@ -88,7 +88,7 @@ uint32_t encodeVariants(const pack::PackPass& pass, const ProgramTable& programs
             << "a variant of pass '" << pass.name << "' uses a bit outside its keyword table";
         pack::appendKey(keys, variant.key, keyWords);
         std::array<uint32_t, pack::kVariantProgramFieldCount> record{};
-        for (size_t slot = 0; slot < pack::kStageCount; ++slot) {
+        for (size_t slot = 0; slot < kStageCount; ++slot) {
             record[pack::kVariantProgram + slot] = programs.remap(variant.programs[slot]);
         }
         record[pack::kVariantOrdinal] = order[sorted];

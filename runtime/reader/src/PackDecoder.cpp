@@ -23,9 +23,9 @@ pack::PackPass decodePass(const PassView& view) {
         VariantView variant = view.variant(e);
         pack::PackVariant out;
         out.key = variant.key();
-        for (size_t slot = 0; slot < pack::kStageCount; ++slot) {
-            std::optional<ProgramView> program = variant.program(static_cast<pack::Stage>(slot));
-            if (program) out.programs[slot] = program->index();
+        for (Stage stage : kStages) {
+            std::optional<ProgramView> program = variant.program(stage);
+            if (program) out.programs[stageIndex(stage)] = program->index();
         }
         pass.variants.push_back(out);
     }

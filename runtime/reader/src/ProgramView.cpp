@@ -14,9 +14,7 @@ uint32_t ProgramView::field(uint32_t field) const {
     return mImage->get(Chunk::Programs, mIndex, field);
 }
 
-pack::Stage ProgramView::stage() const {
-    return static_cast<pack::Stage>(field(pack::kProgramStage));
-}
+Stage ProgramView::stage() const { return static_cast<Stage>(field(pack::kProgramStage)); }
 
 std::string_view ProgramView::entryPoint() const {
     return mImage->string(field(pack::kProgramEntry));
@@ -55,7 +53,7 @@ uint32_t ProgramView::sourceLine() const { return field(pack::kProgramSourceLine
 
 std::string ProgramView::describe() const {
     return std::string(sourceFile()) + ":" + std::to_string(sourceLine()) + " (" +
-           pack::stageName(stage()) + " program '" + std::string(entryPoint()) + "')";
+           stageName(stage()) + " program '" + std::string(entryPoint()) + "')";
 }
 
 }  // namespace varc::runtime

@@ -122,7 +122,7 @@ Status validateVariants(const PackImage& image, uint32_t pass, const std::vector
             image.get(Chunk::VariantOrder, first + ordinal, pack::kOrderPosition) != s) {
             return corrupt("pass " + std::to_string(pass) + " variant order");
         }
-        for (uint32_t slot = 0; slot < pack::kStageCount; ++slot) {
+        for (uint32_t slot = 0; slot < kStageCount; ++slot) {
             uint32_t program = programs.get(first + s, pack::kVariantProgram + slot);
             if (program != pack::kNone && stages[program] != slot) {
                 return corrupt("program " + std::to_string(program) + " in the wrong stage slot");

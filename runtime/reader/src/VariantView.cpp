@@ -26,25 +26,25 @@ variants::VariantKey VariantView::key() const {
 
 std::vector<std::string> VariantView::keywords() const { return pass().keywordsOf(key()); }
 
-uint32_t VariantView::programIndex(pack::Stage stage) const {
+uint32_t VariantView::programIndex(Stage stage) const {
     uint32_t first = mImage->get(Chunk::Passes, mPass, pack::kPassVariantFirst);
     return mImage->get(Chunk::VariantPrograms, first + mSorted,
-                       pack::kVariantProgram + static_cast<uint32_t>(pack::stageIndex(stage)));
+                       pack::kVariantProgram + static_cast<uint32_t>(stageIndex(stage)));
 }
 
-bool VariantView::hasStage(pack::Stage stage) const { return programIndex(stage) != pack::kNone; }
+bool VariantView::hasStage(Stage stage) const { return programIndex(stage) != pack::kNone; }
 
-std::optional<ProgramView> VariantView::program(pack::Stage stage) const {
+std::optional<ProgramView> VariantView::program(Stage stage) const {
     uint32_t index = programIndex(stage);
     if (index == pack::kNone) return std::nullopt;
     return ProgramView(mImage, index);
 }
 
-Result<std::span<const uint32_t>> VariantView::spirv(pack::Stage stage) const {
+Result<std::span<const uint32_t>> VariantView::spirv(Stage stage) const {
     std::optional<ProgramView> stageProgram = program(stage);
     if (!stageProgram) {
         return makeError(ErrorCode::NotFound,
-                         describe() + " has no " + pack::stageName(stage) + " program");
+                         describe() + " has no " + stageName(stage) + " program");
     }
     return stageProgram->spirv();
 }

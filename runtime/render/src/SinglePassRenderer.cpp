@@ -42,7 +42,7 @@ struct InstancedLayout {
 InstancedLayout instancedLayout(const VariantView& variant) {
     InstancedLayout layout;
     layout.maxInstances = UINT32_MAX;
-    for (pack::Stage stage : {pack::Stage::Vertex, pack::Stage::Fragment}) {
+    for (Stage stage : {Stage::Vertex, Stage::Fragment}) {
         std::optional<ProgramView> program = variant.program(stage);
         if (!program) continue;
         for (const pack::UniformBlock& block : program->reflection().uniformBlocks) {

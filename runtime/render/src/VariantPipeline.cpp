@@ -50,8 +50,8 @@ Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const Va
                                                 VkPipelineCache cache) {
     VariantPipeline result;
     result.mDescription = variant.describe();
-    std::optional<ProgramView> vertex = variant.program(pack::Stage::Vertex);
-    std::optional<ProgramView> fragment = variant.program(pack::Stage::Fragment);
+    std::optional<ProgramView> vertex = variant.program(Stage::Vertex);
+    std::optional<ProgramView> fragment = variant.program(Stage::Fragment);
     if (!vertex || !fragment) {
         return makeError(ErrorCode::InvalidInput,
                          result.mDescription + ": needs a vertex and a fragment program");

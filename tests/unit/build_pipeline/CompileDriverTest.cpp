@@ -95,15 +95,15 @@ TEST_F(CompileDriverTest, KeywordsTouchingOneStageEachGiveTwoProgramsPerStage) {
     ASSERT_EQ(output->passes.size(), 1u);
     const CompiledPass& pass = output->passes[0];
     EXPECT_EQ(pass.variants.size(), 4u);
-    EXPECT_EQ(pass.stats.distinctSources[stageSlot(variants::kStageVertex)], 2u);
-    EXPECT_EQ(pass.stats.distinctSources[stageSlot(variants::kStageFragment)], 2u);
-    EXPECT_EQ(pass.stats.distinctModules[stageSlot(variants::kStageVertex)], 2u);
-    EXPECT_EQ(pass.stats.distinctModules[stageSlot(variants::kStageFragment)], 2u);
+    EXPECT_EQ(pass.stats.distinctSources[stageIndex(Stage::Vertex)], 2u);
+    EXPECT_EQ(pass.stats.distinctSources[stageIndex(Stage::Fragment)], 2u);
+    EXPECT_EQ(pass.stats.distinctModules[stageIndex(Stage::Vertex)], 2u);
+    EXPECT_EQ(pass.stats.distinctModules[stageIndex(Stage::Fragment)], 2u);
     EXPECT_EQ(output->compiledSources, 4u);
     EXPECT_EQ(output->programs.size(), 4u);
     ASSERT_EQ(pass.setStageEffects.size(), 2u);
-    EXPECT_EQ(pass.setStageEffects[0], static_cast<uint32_t>(variants::kStageVertex));
-    EXPECT_EQ(pass.setStageEffects[1], static_cast<uint32_t>(variants::kStageFragment));
+    EXPECT_EQ(pass.setStageEffects[0], stageBit(Stage::Vertex));
+    EXPECT_EQ(pass.setStageEffects[1], stageBit(Stage::Fragment));
 }
 
 TEST_F(CompileDriverTest, WithoutPruningEveryVariantTextIsDistinctButModulesStillDedup) {
@@ -112,9 +112,9 @@ TEST_F(CompileDriverTest, WithoutPruningEveryVariantTextIsDistinctButModulesStil
     auto output = build(kTwoKeywordShader, options);
     ASSERT_TRUE(output);
     const CompiledPass& pass = output->passes[0];
-    EXPECT_EQ(pass.stats.distinctSources[stageSlot(variants::kStageVertex)], 4u);
-    EXPECT_EQ(pass.stats.distinctModules[stageSlot(variants::kStageVertex)], 2u);
-    EXPECT_EQ(pass.stats.distinctModules[stageSlot(variants::kStageFragment)], 2u);
+    EXPECT_EQ(pass.stats.distinctSources[stageIndex(Stage::Vertex)], 4u);
+    EXPECT_EQ(pass.stats.distinctModules[stageIndex(Stage::Vertex)], 2u);
+    EXPECT_EQ(pass.stats.distinctModules[stageIndex(Stage::Fragment)], 2u);
 }
 
 TEST_F(CompileDriverTest, OutputIsIdenticalForAnyThreadCount) {
@@ -137,12 +137,12 @@ TEST_F(CompileDriverTest, OutputIsIdenticalForAnyThreadCount) {
 TEST_F(CompileDriverTest, ReflectsSemanticsAndUniforms) {
     auto output = build(kTwoKeywordShader);
     ASSERT_TRUE(output);
-    const CompiledVariant& tinted = output->passes[0].variants[1];  // [TINTED]
-    const auto& vertex = output->programs[tinted.programs[stageSlot(variants::kStageVertex)]];
+    const pack::PackVariant& tinted = output->passes[0].variants[1];  // [TINTED]
+    const auto& vertex = output->programs[tinted.programs[stageIndex(Stage::Vertex)]];
     ASSERT_EQ(vertex.reflection.vertexInputs.size(), 1u);
     EXPECT_EQ(vertex.reflection.vertexInputs[0].semantic, "POSITION");
     EXPECT_EQ(vertex.reflection.vertexInputs[0].type, "float4");
-    const auto& fragment = output->programs[tinted.programs[stageSlot(variants::kStageFragment)]];
+    const auto& fragment = output->programs[tinted.programs[stageIndex(Stage::Fragment)]];
     ASSERT_EQ(fragment.reflection.uniformBlocks.size(), 1u);
     ASSERT_EQ(fragment.reflection.uniformBlocks[0].members.size(), 1u);
     EXPECT_EQ(fragment.reflection.uniformBlocks[0].members[0].name, "_Tint");
@@ -171,11 +171,10 @@ TEST_F(CompileDriverTest, ReflectsOneDescriptorSetPerStageWithRealBindings) {
 }
 )");
     ASSERT_TRUE(output);
-    const CompiledVariant& variant = output->passes[0].variants[0];
-    const auto& vertex =
-        output->programs[variant.programs[stageSlot(variants::kStageVertex)]].reflection;
+    const pack::PackVariant& variant = output->passes[0].variants[0];
+    const auto& vertex = output->programs[variant.programs[stageIndex(Stage::Vertex)]].reflection;
     const auto& fragment =
-        output->programs[variant.programs[stageSlot(variants::kStageFragment)]].reflection;
+        output->programs[variant.programs[stageIndex(Stage::Fragment)]].reflection;
     ASSERT_EQ(vertex.uniformBlocks.size(), 1u);
     EXPECT_EQ(vertex.uniformBlocks[0].set, 0u);
     ASSERT_EQ(fragment.resources.size(), 2u);
@@ -230,8 +229,8 @@ TEST_F(CompileDriverTest, VariantsDifferingOnlyInUnobservedDefinesSharePreproces
     // 8 variants x 2 stages, but neither NEVER_TESTED nor the SHADER_STAGE_* macros occur in the
     // text: one preprocessing per WOBBLE x TINTED choice.
     EXPECT_EQ(output->preprocessedPrograms, 4u);
-    EXPECT_EQ(pass.stats.distinctSources[stageSlot(variants::kStageVertex)], 2u);
-    EXPECT_EQ(pass.stats.distinctSources[stageSlot(variants::kStageFragment)], 2u);
+    EXPECT_EQ(pass.stats.distinctSources[stageIndex(Stage::Vertex)], 2u);
+    EXPECT_EQ(pass.stats.distinctSources[stageIndex(Stage::Fragment)], 2u);
     EXPECT_EQ(output->compiledSources, 4u);
 }
 
@@ -290,7 +289,7 @@ TEST_F(CompileDriverTest, ASecondBuildTakesEveryProgramFromTheCacheWithIdentical
     auto named = build(kTwoKeywordShader, options);
     ASSERT_TRUE(named);
     EXPECT_EQ(named->cachedSources, named->compiledSources);
-    for (const CompiledProgram& program : named->programs) {
+    for (const pack::PackProgram& program : named->programs) {
         EXPECT_TRUE(hasInstruction(program.spirv, 5)) << "OpName expected with debug names";
     }
     options.debugNames = false;
@@ -309,7 +308,7 @@ TEST_F(CompileDriverTest, ShippedSpirvHasNoNamesUnlessAskedButReflectionKeepsThe
         auto output = build(kTwoKeywordShader, options);
         ASSERT_TRUE(output);
         bool sawTint = false;
-        for (const CompiledProgram& program : output->programs) {
+        for (const pack::PackProgram& program : output->programs) {
             EXPECT_EQ(hasInstruction(program.spirv, 5), debugNames);
             for (const pack::UniformBlock& block : program.reflection.uniformBlocks) {
                 for (const pack::BlockMember& member : block.members)

@@ -10,7 +10,7 @@ namespace {
 
 TEST(GlslLegacyPreamble, DeclaresOnlyTheBuiltinsTheSourceMentions) {
     std::string source = "void main() { gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }";
-    std::string vertex = legacyGlslPreamble(source, variants::kStageVertex);
+    std::string vertex = legacyGlslPreamble(source, Stage::Vertex);
     EXPECT_NE(vertex.find("in vec4 varc_Vertex;\n#define gl_Vertex varc_Vertex\n"),
               std::string::npos);
     EXPECT_NE(vertex.find("uniform mat4 varc_ModelViewProjectionMatrix;"), std::string::npos);
@@ -20,14 +20,14 @@ TEST(GlslLegacyPreamble, DeclaresOnlyTheBuiltinsTheSourceMentions) {
 
 TEST(GlslLegacyPreamble, FragmentStageGetsFragColorButNoVertexAttributes) {
     std::string source = "varying vec4 p; void main() { gl_FragColor = p + gl_Vertex; }";
-    std::string fragment = legacyGlslPreamble(source, variants::kStageFragment);
+    std::string fragment = legacyGlslPreamble(source, Stage::Fragment);
     EXPECT_NE(fragment.find("out vec4 varc_FragColor;"), std::string::npos);
     EXPECT_EQ(fragment.find("varc_Vertex"), std::string::npos);
     EXPECT_NE(fragment.find("#define varying in\n"), std::string::npos);
 }
 
 TEST(GlslLegacyPreamble, DoesNotMatchLongerIdentifiers) {
-    std::string preamble = legacyGlslPreamble("float gl_VertexCount;", variants::kStageVertex);
+    std::string preamble = legacyGlslPreamble("float gl_VertexCount;", Stage::Vertex);
     EXPECT_EQ(preamble.find("varc_Vertex"), std::string::npos);
 }
 

@@ -42,7 +42,7 @@ std::vector<uint32_t> compileValid(const FrontendInput& input) {
 
 TEST(GlslangFrontend, CompilesDx9StyleHlslStagesToValidSpirv) {
     for (auto [stage, entry] :
-         {std::pair{variants::kStageVertex, "vert"}, std::pair{variants::kStageFragment, "frag"}}) {
+         {std::pair{Stage::Vertex, "vert"}, std::pair{Stage::Fragment, "frag"}}) {
         std::vector<uint32_t> spirv =
             compileValid({kHlsl, "", shaderlab::ProgramLanguage::Cg, stage, entry});
         ASSERT_GT(spirv.size(), 5u);
@@ -52,9 +52,8 @@ TEST(GlslangFrontend, CompilesDx9StyleHlslStagesToValidSpirv) {
 
 TEST(GlslangFrontend, PreprocessingResolvesPreambleDefinesAndKeepsLineDirectives) {
     std::string source = "#line 7 2\n#ifdef POINT\nfloat point;\n#else\nfloat other;\n#endif\n";
-    PreprocessOutput pre =
-        preprocessProgram({source, "#define POINT 1\n", shaderlab::ProgramLanguage::Hlsl,
-                           variants::kStageVertex, "v"});
+    PreprocessOutput pre = preprocessProgram(
+        {source, "#define POINT 1\n", shaderlab::ProgramLanguage::Hlsl, Stage::Vertex, "v"});
     ASSERT_TRUE(pre.ok) << pre.log;
     EXPECT_NE(pre.text.find("float point;"), std::string::npos);
     EXPECT_EQ(pre.text.find("float other;"), std::string::npos);
@@ -70,7 +69,7 @@ TEST(GlslangFrontend, HlslLineDirectiveNumbersTheNextLine) {
         "#line 5 1\nfloat4 f() { return missingThing; }\n"
         "float4 v() : SV_Position { return f(); }\n";
     CompileOutput compiled =
-        compileProgram({source, "", shaderlab::ProgramLanguage::Hlsl, variants::kStageVertex, "v"});
+        compileProgram({source, "", shaderlab::ProgramLanguage::Hlsl, Stage::Vertex, "v"});
     ASSERT_FALSE(compiled.ok);
     auto diagnostics = parseGlslangLog(compiled.log, sourceMap);
     ASSERT_FALSE(diagnostics.empty()) << compiled.log;
@@ -84,9 +83,9 @@ TEST(GlslangFrontend, LegacyGlslLineDirectiveMapsAfterConversion) {
     sourceMap.addFile("lib.glslinc", "a\nb\nvoid main() { gl_FragColor = missingThing; }\n");
     std::string source =
         toGlslLineConvention("#line 3 1\nvoid main() { gl_FragColor = missingThing; }\n");
-    std::string preamble = legacyGlslPreamble(source, variants::kStageFragment);
+    std::string preamble = legacyGlslPreamble(source, Stage::Fragment);
     CompileOutput compiled = compileProgram(
-        {source, preamble, shaderlab::ProgramLanguage::Glsl, variants::kStageFragment, "main"});
+        {source, preamble, shaderlab::ProgramLanguage::Glsl, Stage::Fragment, "main"});
     ASSERT_FALSE(compiled.ok);
     auto diagnostics = parseGlslangLog(compiled.log, sourceMap);
     ASSERT_FALSE(diagnostics.empty()) << compiled.log;
@@ -108,11 +107,10 @@ void main() {
 void main() { gl_FragColor = _Color * position + gl_LightModel.ambient; }
 #endif
 )";
-    for (auto stage : {variants::kStageVertex, variants::kStageFragment}) {
+    for (auto stage : {Stage::Vertex, Stage::Fragment}) {
         std::string text = toGlslLineConvention(source);
         std::string preamble =
-            std::string(stage == variants::kStageVertex ? "#define VERTEX 1\n"
-                                                        : "#define FRAGMENT 1\n") +
+            std::string(stage == Stage::Vertex ? "#define VERTEX 1\n" : "#define FRAGMENT 1\n") +
             legacyGlslPreamble(text, stage);
         PreprocessOutput pre =
             preprocessProgram({text, preamble, shaderlab::ProgramLanguage::Glsl, stage, "main"});

@@ -29,7 +29,7 @@ TEST(PassDefines, PreambleListsApiTargetPassStageAndKeywordsInOrder) {
     DefineContext context{"ForwardAdd",
                           "3.0",
                           shaderlab::ProgramLanguage::Cg,
-                          variants::kStageFragment,
+                          Stage::Fragment,
                           {"POINT", "SHADOWS_CUBE"}};
     EXPECT_EQ(makePreamble(context),
               "#define SHADER_API_VULKAN 1\n"
@@ -43,7 +43,7 @@ TEST(PassDefines, PreambleListsApiTargetPassStageAndKeywordsInOrder) {
 }
 
 TEST(PassDefines, GlslProgramsAlsoGetTheVertexOrFragmentSelector) {
-    DefineContext context{"", "", shaderlab::ProgramLanguage::Glsl, variants::kStageVertex, {}};
+    DefineContext context{"", "", shaderlab::ProgramLanguage::Glsl, Stage::Vertex, {}};
     std::string preamble = makePreamble(context);
     EXPECT_NE(preamble.find("#define VERTEX 1\n"), std::string::npos);
     EXPECT_EQ(preamble.find("FRAGMENT"), std::string::npos);

@@ -45,7 +45,7 @@ protected:
 };
 
 ProgramCacheInput input(std::string_view text) {
-    return {OptimizationLevel::Performance, shaderlab::ProgramLanguage::Cg, 1, "frag", text};
+    return {OptimizationLevel::Performance, shaderlab::ProgramLanguage::Cg, Stage::Fragment, "frag", text};
 }
 
 TEST_F(ProgramCacheTest, AStoredEntryLoadsBackWhole) {
@@ -69,7 +69,7 @@ TEST_F(ProgramCacheTest, EveryInputChangesTheKey) {
     std::vector<ProgramCacheInput> changed(5, base);
     changed[0].optimization = OptimizationLevel::None;
     changed[1].language = shaderlab::ProgramLanguage::Glsl;
-    changed[2].stage = 2;
+    changed[2].stage = Stage::Vertex;
     changed[3].entryPoint = "frag2";
     changed[4].text = "text ";
     std::vector<std::string> keys = {cache.keyOf(base).hex()};
@@ -103,7 +103,7 @@ TEST_F(ProgramCacheTest, PrunedSourcesRoundTripAndDamageIsRejected) {
     ProgramCache cache(mDir.string());
     SourceCacheInput input{ProgramCache::hashText("pass text"),
                            shaderlab::ProgramLanguage::Cg,
-                           1,
+                           Stage::Fragment,
                            "frag",
                            "#define POINT 1\n",
                            true};
@@ -133,7 +133,7 @@ TEST_F(ProgramCacheTest, PrunedSourcesRoundTripAndDamageIsRejected) {
     other.pruned = false;
     EXPECT_NE(cache.sourceKeyOf(other), key);
     other = input;
-    other.stage = 2;
+    other.stage = Stage::Vertex;
     EXPECT_NE(cache.sourceKeyOf(other), key);
 }
 

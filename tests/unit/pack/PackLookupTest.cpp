@@ -12,10 +12,10 @@
 namespace varc {
 namespace {
 
-using pack::Stage;
 using runtime::Pack;
 using runtime::PassView;
 using runtime::VariantView;
+using varc::Stage;
 using variants::SelectionPolicy;
 
 class PackLookup : public ::testing::Test {

@@ -10,7 +10,7 @@ namespace varc::packtest {
 namespace {
 
 using pack::PackProgram;
-using pack::Stage;
+using varc::Stage;
 
 // Adds programs in first-use order: the same (stage, name) returns the same index.
 class ProgramMaker {

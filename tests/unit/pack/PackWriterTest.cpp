@@ -118,7 +118,7 @@ TEST(PackWriter, EqualProgramsAreStoredOnce) {
 TEST(PackWriter, UnusedProgramsAreDropped) {
     pack::PackContents contents = packtest::makeSampleContents();
     pack::PackContents extra = contents;
-    extra.programs.push_back({pack::Stage::Vertex, "unused", packtest::fakeSpirv(999), {}, {}});
+    extra.programs.push_back({Stage::Vertex, "unused", packtest::fakeSpirv(999), {}, {}});
     EXPECT_EQ(serializePack(extra), serializePack(contents));
 }
 
@@ -151,7 +151,7 @@ TEST(PackWriter, EmptyContentsRoundTrip) {
 
 TEST(PackWriter, KeysBeyond64KeywordsRoundTrip) {
     pack::PackContents contents;
-    contents.programs.push_back({pack::Stage::Vertex, "vert", packtest::fakeSpirv(1), {}, {}});
+    contents.programs.push_back({Stage::Vertex, "vert", packtest::fakeSpirv(1), {}, {}});
     pack::PackPass pass;
     for (int i = 0; i < 130; ++i) pass.keywordTable.push_back("K" + std::to_string(1000 + i));
     for (int v : {0, 63, 64, 65, 127, 128, 129}) {

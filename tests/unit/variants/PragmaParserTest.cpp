@@ -38,7 +38,7 @@ TEST(PragmaParser, PlainMultiCompileIsOneSet) {
     ASSERT_EQ(kw.sets.size(), 1u);
     EXPECT_EQ(kw.sets[0].kind, DirectiveKind::MultiCompile);
     EXPECT_FALSE(kw.sets[0].local);
-    EXPECT_EQ(kw.sets[0].stages, kStageAll);
+    EXPECT_EQ(kw.sets[0].stages, kEverySetStage);
     EXPECT_EQ(kw.sets[0].keywords, (Keywords{"", "A", "B"}));
     EXPECT_EQ(kw.sets[0].directive, "multi_compile");
     EXPECT_EQ(kw.sets[0].location, (SourceLocation{7, 1, 1}));
@@ -49,21 +49,22 @@ TEST(PragmaParser, LocalAndStageSuffixesCombine) {
                                "multi_compile_vertex C D", "shader_feature_local E"});
     ASSERT_EQ(kw.sets.size(), 4u);
     EXPECT_TRUE(kw.sets[0].local);
-    EXPECT_EQ(kw.sets[0].stages, kStageFragment);
+    EXPECT_EQ(kw.sets[0].stages, stageBit(Stage::Fragment));
     EXPECT_EQ(kw.sets[0].directive, "multi_compile_local_fragment");
     EXPECT_EQ(kw.sets[1].kind, DirectiveKind::ShaderFeature);
     EXPECT_TRUE(kw.sets[1].local);
-    EXPECT_EQ(kw.sets[1].stages, kStageVertex);
+    EXPECT_EQ(kw.sets[1].stages, stageBit(Stage::Vertex));
     EXPECT_FALSE(kw.sets[2].local);
-    EXPECT_EQ(kw.sets[2].stages, kStageVertex);
+    EXPECT_EQ(kw.sets[2].stages, stageBit(Stage::Vertex));
     EXPECT_TRUE(kw.sets[3].local);
-    EXPECT_EQ(kw.sets[3].stages, kStageAll);
+    EXPECT_EQ(kw.sets[3].stages, kEverySetStage);
 }
 
 TEST(PragmaParser, EveryStageSuffixMapsToItsBit) {
     const std::pair<const char*, uint32_t> cases[] = {
-        {"vertex", kStageVertex}, {"fragment", kStageFragment}, {"hull", kStageHull},
-        {"domain", kStageDomain}, {"geometry", kStageGeometry}, {"raytracing", kStageRaytracing}};
+        {"vertex", stageBit(Stage::Vertex)},     {"fragment", stageBit(Stage::Fragment)},
+        {"hull", stageBit(Stage::Hull)},         {"domain", stageBit(Stage::Domain)},
+        {"geometry", stageBit(Stage::Geometry)}, {"raytracing", kRaytracingStages}};
     for (const auto& [suffix, bit] : cases) {
         PassKeywords kw = parseOk({std::string("multi_compile_") + suffix + " _ A"});
         ASSERT_EQ(kw.sets.size(), 1u) << suffix;

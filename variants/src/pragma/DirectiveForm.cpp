@@ -17,13 +17,13 @@ constexpr std::array<Base, 3> kBases = {{{"multi_compile", DirectiveKind::MultiC
                                          {"shader_feature", DirectiveKind::ShaderFeature},
                                          {"dynamic_branch", DirectiveKind::DynamicBranch}}};
 
-constexpr std::array<std::pair<std::string_view, uint32_t>, 6> kStageSuffixes = {{
-    {"vertex", kStageVertex},
-    {"fragment", kStageFragment},
-    {"hull", kStageHull},
-    {"domain", kStageDomain},
-    {"geometry", kStageGeometry},
-    {"raytracing", kStageRaytracing},
+constexpr std::array<std::pair<std::string_view, StageMask>, 6> kStageSuffixes = {{
+    {"vertex", stageBit(Stage::Vertex)},
+    {"fragment", stageBit(Stage::Fragment)},
+    {"hull", stageBit(Stage::Hull)},
+    {"domain", stageBit(Stage::Domain)},
+    {"geometry", stageBit(Stage::Geometry)},
+    {"raytracing", kRaytracingStages},
 }};
 
 // Reads "[local][_stage]" from |rest| into |form|; false if anything else is left over.
@@ -55,14 +55,15 @@ DirectiveForm classifyDirective(std::string_view name) {
         } else if (rest[0] != '_' || rest.size() == 1) {
             continue;  // "multi_compilefoo" is some other pragma
         } else if (parseSuffixes(rest.substr(1), form)) {
-            bool staged = form.stages != kStageAll;
+            bool staged = form.stages != kEverySetStage;
             form.status = base.kind == DirectiveKind::DynamicBranch && staged
                               ? FormStatus::StageOnDynamicBranch
                               : FormStatus::Set;
         } else if (base.kind == DirectiveKind::MultiCompile) {
-            form = DirectiveForm{FormStatus::Shortcut, base.kind, false, kStageAll, rest.substr(1)};
+            form = DirectiveForm{FormStatus::Shortcut, base.kind, false, kEverySetStage,
+                                 rest.substr(1)};
         } else {
-            form = DirectiveForm{FormStatus::UnknownSuffix, base.kind, false, kStageAll, {}};
+            form = DirectiveForm{FormStatus::UnknownSuffix, base.kind, false, kEverySetStage, {}};
         }
         return form;
     }

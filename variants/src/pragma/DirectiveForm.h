@@ -23,13 +23,13 @@ struct DirectiveForm {
     FormStatus status = FormStatus::NotKeywordDirective;
     DirectiveKind kind = DirectiveKind::MultiCompile;
     bool local = false;
-    uint32_t stages = kStageAll;
+    StageMask stages = kEverySetStage;
     std::string_view shortcutName;  // Shortcut: "fwdadd" (views into the classified name)
 };
 
 // Suffixes are parsed first: base, then optional `_local`, then optional one stage suffix.
 // Whatever else follows `multi_compile_` is a shortcut name (known or not).
-// Examples: "multi_compile_local_fragment" -> Set{MultiCompile, local, kStageFragment};
+// Examples: "multi_compile_local_fragment" -> Set{MultiCompile, local, stageBit(Stage::Fragment)};
 //           "multi_compile_fwdadd" -> Shortcut{"fwdadd"}; "shader_feature_fwdadd" -> UnknownSuffix.
 DirectiveForm classifyDirective(std::string_view name);
 

@@ -33,7 +33,7 @@ uint64_t variantId(size_t job, size_t variant) {
     return (static_cast<uint64_t>(job) << 32) | static_cast<uint64_t>(variant);
 }
 
-std::string contextOf(const PassJob& job, uint32_t stage, size_t variant) {
+std::string contextOf(const PassJob& job, Stage stage, size_t variant) {
     const auto& table = job.pass->space->table();
     return std::string("in the ") + stageName(stage) + " stage of " +
            describePass(job.shader->ast, *job.pass->pass, job.pass->index) +
@@ -52,12 +52,11 @@ bool collectStages(PassJob& job, DiagnosticSink& sink) {
                        describePass(job.shader->ast, *job.pass->pass, job.pass->index));
         return false;
     }
-    job.stages.push_back({variants::kStageVertex, entry(kw.vertexEntry)});
-    job.stages.push_back({variants::kStageFragment, entry(kw.fragmentEntry)});
-    if (!kw.geometryEntry.empty())
-        job.stages.push_back({variants::kStageGeometry, entry(kw.geometryEntry)});
-    if (!kw.hullEntry.empty()) job.stages.push_back({variants::kStageHull, kw.hullEntry});
-    if (!kw.domainEntry.empty()) job.stages.push_back({variants::kStageDomain, kw.domainEntry});
+    job.stages.push_back({Stage::Vertex, entry(kw.vertexEntry)});
+    job.stages.push_back({Stage::Fragment, entry(kw.fragmentEntry)});
+    if (!kw.geometryEntry.empty()) job.stages.push_back({Stage::Geometry, entry(kw.geometryEntry)});
+    if (!kw.hullEntry.empty()) job.stages.push_back({Stage::Hull, kw.hullEntry});
+    if (!kw.domainEntry.empty()) job.stages.push_back({Stage::Domain, kw.domainEntry});
     return true;
 }
 
@@ -77,22 +76,22 @@ std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex) {
 
 // glslang's preprocessing of |job|'s text: HLSL's does not depend on the stage beyond the
 // preamble, GLSL's version and extension handling may.
-std::string preprocessKeyOf(const PassJob& job, uint32_t stage, std::string preamble) {
+std::string preprocessKeyOf(const PassJob& job, Stage stage, std::string preamble) {
     if (languageOf(job) != shaderlab::ProgramLanguage::Glsl) return preamble;
-    return std::to_string(stage) + "\n" + preamble;
+    return std::to_string(stageIndex(stage)) + "\n" + preamble;
 }
 
-ItemKey itemKeyOf(const std::string& preprocessKey, uint32_t stage, const std::string& entry) {
+ItemKey itemKeyOf(const std::string& preprocessKey, Stage stage, const std::string& entry) {
     std::string text = preprocessKey;
     text += '\0';
-    text += std::to_string(stage);
+    text += std::to_string(stageIndex(stage));
     text += '\0';
     text += entry;
     XXH128_hash_t hash = XXH3_128bits(text.data(), text.size());
     return {hash.low64, hash.high64};
 }
 
-StageResult preprocessStage(const PassJob& job, uint32_t stage, const std::string& entry,
+StageResult preprocessStage(const PassJob& job, Stage stage, const std::string& entry,
                             const std::string& preamble, const includes::SourceMap& sourceMap) {
     PreprocessOutput pre = preprocessProgram({job.text, preamble, languageOf(job), stage, entry});
     StageResult result;

@@ -15,6 +15,7 @@
 #include "varc/build/ObservedDefines.h"
 #include "varc/build/ProgramCache.h"
 #include "varc/core/Diagnostic.h"
+#include "varc/core/Stage.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/SourceMap.h"
 #include "varc/variants/VariantKey.h"
@@ -31,7 +32,7 @@ struct PassJob {
     const LoadedShader* shader = nullptr;
     const LoadedPass* pass = nullptr;
     std::vector<variants::VariantKey> keys;
-    std::vector<std::pair<uint32_t, std::string>> stages;  // (stage bit, entry point)
+    std::vector<std::pair<Stage, std::string>> stages;  // (stage, entry point)
     std::string text;  // the expanded source, in the front end's #line convention
     std::optional<ObservedNames> observed;  // the macro names |text| can see; none: keep all
     ProgramCacheKey textHash;               // of |text|, when a program cache is used
@@ -61,7 +62,7 @@ shaderlab::ProgramLanguage languageOf(const PassJob& job);
 uint64_t variantId(size_t job, size_t variant);
 
 // "in the fragment stage of pass 1 (LightMode ForwardAdd) of shader "X", keywords: POINT".
-std::string contextOf(const PassJob& job, uint32_t stage, size_t variant);
+std::string contextOf(const PassJob& job, Stage stage, size_t variant);
 
 // The stages a pass compiles, from its #pragma vertex/fragment/...; reports missing entries.
 bool collectStages(PassJob& job, DiagnosticSink& sink);
@@ -71,11 +72,11 @@ std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex);
 
 // What glslang's preprocessing of |job|'s text depends on besides the text: the preamble, and
 // for GLSL the stage.
-std::string preprocessKeyOf(const PassJob& job, uint32_t stage, std::string preamble);
+std::string preprocessKeyOf(const PassJob& job, Stage stage, std::string preamble);
 
-ItemKey itemKeyOf(const std::string& preprocessKey, uint32_t stage, const std::string& entry);
+ItemKey itemKeyOf(const std::string& preprocessKey, Stage stage, const std::string& entry);
 
-StageResult preprocessStage(const PassJob& job, uint32_t stage, const std::string& entry,
+StageResult preprocessStage(const PassJob& job, Stage stage, const std::string& entry,
                             const std::string& preamble, const includes::SourceMap& sourceMap);
 
 // |preprocessed| cut to what |entry| reaches (unchanged without BuildOptions::pruneStages).

@@ -16,7 +16,7 @@ namespace varc::compiler::detail {
 CompiledSource compileStageProgram(const StageProgram& program, const BuildOptions& options,
                                    const ProgramCache* cache, const includes::SourceMap& sourceMap,
                                    const std::function<void(const Status&)>& onCacheFailure) {
-    const bool vertex = program.stage == variants::kStageVertex;
+    const bool vertex = program.stage == Stage::Vertex;
     CompiledSource result;
     auto fail = [&](std::string message) {
         result.diagnostics.push_back({Severity::Error, program.origin, std::move(message), {}});

@@ -20,7 +20,7 @@ namespace varc::compiler::detail {
 struct StageProgram {
     std::string_view text;  // preprocessed and pruned
     shaderlab::ProgramLanguage language = shaderlab::ProgramLanguage::Cg;
-    uint32_t stage = 0;  // variants::StageBits bit
+    Stage stage = Stage::Vertex;
     std::string_view entryPoint;
     SourceLocation origin;  // the program block, for errors without a line of their own
 };

@@ -7,27 +7,23 @@
 #include <vector>
 
 #include "varc/core/SourceLocation.h"
+#include "varc/core/Stage.h"
 
 namespace varc::variants {
 
 enum class DirectiveKind { MultiCompile, ShaderFeature, DynamicBranch };
 
-// Stages a keyword set applies to (`_vertex`, `_fragment`, ... suffixes). All = no suffix.
-enum StageBits : uint32_t {
-    kStageVertex = 1u << 0,
-    kStageFragment = 1u << 1,
-    kStageHull = 1u << 2,
-    kStageDomain = 1u << 3,
-    kStageGeometry = 1u << 4,
-    kStageRaytracing = 1u << 5,
-    kStageAll = 0x3fu,
-};
+// The stages a keyword set applies to (`_vertex`, `_fragment`, ... suffixes): a StageMask of the
+// program stages, plus kRaytracingStages for `_raytracing` (ray-tracing shaders, which a
+// rasterisation pass never compiles). A set without a suffix applies to kEverySetStage.
+inline constexpr StageMask kRaytracingStages = StageMask{1} << kStageCount;
+inline constexpr StageMask kEverySetStage = kAllStages | kRaytracingStages;
 
 // One `#pragma multi_compile...` line (or one set produced by a shortcut).
 struct KeywordSetDecl {
     DirectiveKind kind = DirectiveKind::MultiCompile;
     bool local = false;                 // `_local` form
-    uint32_t stages = kStageAll;        // StageBits
+    StageMask stages = kEverySetStage;  // see kEverySetStage
     std::vector<std::string> keywords;  // declared order; "" is the no-keyword entry (`_`, `__`)
     std::string directive;              // as written: "multi_compile_local_fragment",
                                         // "multi_compile_fwdadd" for shortcut sets

@@ -13,18 +13,12 @@
 #include "varc/core/Diagnostic.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/SourceMap.h"
-#include "varc/pack/ProgramReflection.h"
+#include "varc/pack/PackModel.h"
 #include "varc/variants/VariantKey.h"
 
 namespace varc::compiler {
 
-// Stage slots in variant tables: vertex, fragment, geometry, hull, domain.
-inline constexpr size_t kStageCount = 5;
-inline constexpr uint32_t kNoProgram = 0xffffffffu;
-// Slot of a single variants::StageBits bit; kStageCount for anything else.
-size_t stageSlot(uint32_t stageBit);
-uint32_t stageBitOfSlot(size_t slot);
-const char* stageName(uint32_t stageBit);  // "vertex", "fragment", ...
+using pack::kNoProgram;
 
 struct BuildOptions {
     OptimizationLevel optimization = OptimizationLevel::Performance;
@@ -44,22 +38,6 @@ struct BuildOptions {
     std::function<void(size_t, size_t)> progress;
 };
 
-// One optimised, validated SPIR-V module, shared by every variant whose stage compiles to it.
-struct CompiledProgram {
-    uint32_t stage = 0;  // variants::StageBits bit
-    std::string entryPoint;
-    std::vector<uint32_t> spirv;
-    pack::ProgramReflection reflection;
-    size_t shaderIndex = 0, passIndex = 0;  // where it was first used (for source info)
-};
-
-struct CompiledVariant {
-    variants::VariantKey key;
-    std::array<uint32_t, kStageCount> programs{kNoProgram, kNoProgram, kNoProgram, kNoProgram,
-                                               kNoProgram};
-    friend bool operator==(const CompiledVariant&, const CompiledVariant&) = default;
-};
-
 // Per pass: the staged counts of `varc build`'s summary.
 struct PassBuildStats {
     uint64_t declaredVariants = 0;  // full product of the keyword sets
@@ -71,16 +49,20 @@ struct PassBuildStats {
 struct CompiledPass {
     size_t shaderIndex = 0;  // into the shaders given to build()
     size_t passIndex = 0;    // into LoadedShader::passes
-    std::vector<CompiledVariant> variants;  // enumeration order
+    // Enumeration order; programs index BuildOutput::programs.
+    std::vector<pack::PackVariant> variants;
     PassBuildStats stats;
-    // Per declared keyword set (PassKeywords::sets order): the StageBits whose program changes
+    // Per declared keyword set (PassKeywords::sets order): the stages whose program changes
     // with that set's choice. A set with mask 0 does not affect the pass at all.
-    std::vector<uint32_t> setStageEffects;
+    std::vector<StageMask> setStageEffects;
 };
 
 struct BuildOutput {
     std::vector<CompiledPass> passes;
-    std::vector<CompiledProgram> programs;  // deduplicated by bytes, in first-use order
+    // One optimised, validated SPIR-V module per distinct program, shared by every variant whose
+    // stage compiles to it: deduplicated by bytes, in first-use order, with the source of the
+    // pass that first used it.
+    std::vector<pack::PackProgram> programs;
     size_t compiledSources = 0;             // glslang compilations
     size_t preprocessedPrograms = 0;        // glslang preprocessing runs (before pruning)
     size_t cachedSources = 0;               // of compiledSources, taken from the program cache

@@ -7,13 +7,15 @@
 #include <string>
 #include <string_view>
 
+#include "varc/core/Stage.h"
+
 namespace varc::compiler {
 
 // The GLSL version assumed for GLSLPROGRAM blocks without `#version`: the lowest glslang accepts
 // for Vulkan, compiled with its relaxed Vulkan rules (loose uniforms go to one default block).
 inline constexpr int kLegacyGlslVersion = 140;
 
-// Declarations plus `#define gl_X varc_X` lines for |stage| (a variants::StageBits bit), for the
+// Declarations plus `#define gl_X varc_X` lines for |stage|, for the
 // legacy built-ins that |source| mentions (so unused ones add no inputs or uniforms). Names
 // starting with `gl_` cannot be declared, but they can be #defined, which is what makes this
 // work. Also maps `varying` to `out` (vertex) or `in` (fragment). The runtime fills the
@@ -22,7 +24,7 @@ inline constexpr int kLegacyGlslVersion = 140;
 //   in vec4 varc_Vertex;
 //   #define gl_Vertex varc_Vertex
 //   #define varying out
-std::string legacyGlslPreamble(std::string_view source, uint32_t stage);
+std::string legacyGlslPreamble(std::string_view source, Stage stage);
 
 // varc's `#line N F` directives mean "the next line is N" (C and HLSL). GLSL before 3.30 (and
 // ES before 3.00) reads `#line N` as numbering the directive's own line N instead (glslang's

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "varc/core/Stage.h"
 #include "varc/shaderlab/ShaderAst.h"
 
 namespace varc::compiler {
@@ -16,7 +17,7 @@ struct FrontendInput {
     std::string_view text;      // expanded source (with `#line` directives) or its preprocessed form
     std::string_view preamble;  // `#define` lines from makePreamble()
     shaderlab::ProgramLanguage language = shaderlab::ProgramLanguage::Cg;
-    uint32_t stage = 0;         // one variants::StageBits bit
+    Stage stage = Stage::Vertex;
     std::string_view entryPoint;
 };
 

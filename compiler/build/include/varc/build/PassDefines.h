@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "varc/core/Stage.h"
 #include "varc/shaderlab/ShaderAst.h"
 
 namespace varc::compiler {
@@ -16,7 +17,7 @@ struct DefineContext {
     std::string lightMode;         // Pass LightMode tag ("ForwardBase", ...; "" = none)
     std::string target;            // `#pragma target` ("3.0"); "" = Unity's default 2.5
     shaderlab::ProgramLanguage language = shaderlab::ProgramLanguage::Cg;
-    uint32_t stage = 0;            // one variants::StageBits bit
+    Stage stage = Stage::Vertex;
     std::vector<std::string> keywords;  // the variant's keywords, sorted
 };
 

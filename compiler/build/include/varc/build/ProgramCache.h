@@ -23,6 +23,7 @@
 #include "varc/build/SpirvOptimizer.h"
 #include "varc/build/SpirvReflection.h"
 #include "varc/core/Result.h"
+#include "varc/core/Stage.h"
 #include "varc/shaderlab/ShaderAst.h"
 
 namespace varc::compiler {
@@ -45,7 +46,7 @@ struct CachedProgram {
 struct ProgramCacheInput {
     OptimizationLevel optimization = OptimizationLevel::Performance;
     shaderlab::ProgramLanguage language = shaderlab::ProgramLanguage::Cg;
-    uint32_t stage = 0;
+    Stage stage = Stage::Vertex;
     std::string_view entryPoint;
     std::string_view text;  // preprocessed and pruned
 };
@@ -54,7 +55,7 @@ struct ProgramCacheInput {
 struct SourceCacheInput {
     ProgramCacheKey passText;  // ProgramCache::hashText of the expanded pass source
     shaderlab::ProgramLanguage language = shaderlab::ProgramLanguage::Cg;
-    uint32_t stage = 0;
+    Stage stage = Stage::Vertex;
     std::string_view entryPoint;
     std::string_view preamble;  // the defines the text observes (+ the legacy GLSL preamble)
     bool pruned = true;

@@ -11,11 +11,11 @@
 
 namespace varc::compiler {
 
-// For each set of |space| (declaration order), the StageBits of the stages whose program differs
-// between two variants that differ only in that set's choice. Example: `multi_compile _
-// VERTEXLIGHT_ON` used only inside the vertex program yields kStageVertex; a set that no stage
-// tests yields 0. |variants| are the pass's compiled variants (any order).
-std::vector<uint32_t> computeSetStageEffects(const variants::VariantSpace& space,
-                                             const std::vector<CompiledVariant>& variants);
+// For each set of |space| (declaration order), the stages whose program differs between two
+// variants that differ only in that set's choice. Example: `multi_compile _ VERTEXLIGHT_ON` used
+// only inside the vertex program yields stageBit(Stage::Vertex); a set that no stage tests yields
+// 0. |variants| are the pass's compiled variants (any order).
+std::vector<StageMask> computeSetStageEffects(const variants::VariantSpace& space,
+                                              const std::vector<pack::PackVariant>& variants);
 
 }  // namespace varc::compiler

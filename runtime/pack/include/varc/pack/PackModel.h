@@ -8,23 +8,15 @@
 #include <utility>
 #include <vector>
 
+#include "varc/core/Stage.h"
 #include "varc/pack/PackRenderState.h"
 #include "varc/pack/ProgramReflection.h"
 #include "varc/variants/VariantKey.h"
 
 namespace varc::pack {
 
-// Stage slots of a variant, in this order everywhere (matches compiler::stageSlot).
-enum class Stage : uint8_t { Vertex = 0, Fragment = 1, Geometry = 2, Hull = 3, Domain = 4 };
-inline constexpr size_t kStageCount = 5;
+// A variant's program in a stage slot that has none.
 inline constexpr uint32_t kNoProgram = 0xffffffffu;
-
-constexpr size_t stageIndex(Stage stage) { return static_cast<size_t>(stage); }
-constexpr const char* stageName(Stage stage) {
-    constexpr const char* kNames[kStageCount] = {"vertex", "fragment", "geometry", "hull",
-                                                 "domain"};
-    return kNames[stageIndex(stage)];
-}
 
 // Where a program came from, for runtime error messages (variant -> program -> file:line).
 struct SourceInfo {

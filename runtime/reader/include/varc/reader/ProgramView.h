@@ -23,7 +23,7 @@ public:
     ProgramView(const detail::PackImage* image, uint32_t index) : mImage(image), mIndex(index) {}
 
     uint32_t index() const { return mIndex; }
-    pack::Stage stage() const;
+    Stage stage() const;
     std::string_view entryPoint() const;
     size_t spirvByteSize() const;  // without decompressing
 

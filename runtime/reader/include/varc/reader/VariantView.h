@@ -35,18 +35,18 @@ public:
     variants::VariantKey key() const;
     std::vector<std::string> keywords() const;  // sorted; allocates
 
-    bool hasStage(pack::Stage stage) const;
-    std::optional<ProgramView> program(pack::Stage stage) const;
+    bool hasStage(Stage stage) const;
+    std::optional<ProgramView> program(Stage stage) const;
     // The stage's SPIR-V (see ProgramView::spirv); NotFound when the variant has no program
     // for |stage|.
-    Result<std::span<const uint32_t>> spirv(pack::Stage stage) const;
+    Result<std::span<const uint32_t>> spirv(Stage stage) const;
     pack::PackRenderState renderState() const;  // the pass's
 
     // "shader 'Custom/Lit' pass 0 'FORWARD' (LightMode ForwardBase) {DIRECTIONAL FOG_EXP}".
     std::string describe() const;
 
 private:
-    uint32_t programIndex(pack::Stage stage) const;
+    uint32_t programIndex(Stage stage) const;
 
     const detail::PackImage* mImage;
     uint32_t mShader;
