@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "varc/variants/RuntimeKeywords.h"
+
 namespace varc::variants {
 
 namespace {
@@ -97,7 +99,7 @@ std::vector<std::string> lightKeywords(const LightDescription& light, LightPassK
         case LightPassKind::DeferredLight:
             keywords.emplace_back(lightTypeKeyword(light));
             addShadowKeywords(light, keywords);
-            if (light.hdr) keywords.emplace_back("UNITY_HDR_ON");
+            if (light.hdr) keywords.emplace_back(kHdrKeyword);
             break;
     }
     std::sort(keywords.begin(), keywords.end());

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "varc/variants/RuntimeKeywords.h"
+
 namespace varc::variants {
 
 namespace {
@@ -80,7 +82,7 @@ std::vector<Shortcut> makeShortcuts() {
                                      {{"", "LIGHTMAP_ON"},
                                       {"", "DIRLIGHTMAP_COMBINED"},
                                       {"", "DYNAMICLIGHTMAP_ON"},
-                                      {"", "UNITY_HDR_ON"},
+                                      {"", kHdrKeyword},
                                       {"", "SHADOWS_SHADOWMASK"},
                                       {"", "LIGHTPROBE_SH"}},
                                      "unity-keywords.md §1.1, §1.3");
@@ -94,7 +96,8 @@ std::vector<Shortcut> makeShortcuts() {
                                   "unity-keywords.md §1.1, §1.2 (two independent sets)"));
     table.push_back(plainShortcut("fog", {{"", "FOG_LINEAR", "FOG_EXP", "FOG_EXP2"}},
                                   "unity-keywords.md §1.1, §1.2"));
-    table.push_back(plainShortcut("instancing", {{"", "INSTANCING_ON"}}, "unity-keywords.md §1.1"));
+    table.push_back(
+        plainShortcut("instancing", {{"", kInstancingKeyword}}, "unity-keywords.md §1.1"));
     table.push_back(
         plainShortcut("particles", {{"", "SOFTPARTICLES_ON"}}, "unity-keywords.md §1.1"));
     for (Shortcut& shortcut : table) {

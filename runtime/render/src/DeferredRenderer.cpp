@@ -21,6 +21,7 @@
 #include "varc/render/VertexLayout.h"
 #include "varc/scene/ForwardLights.h"
 #include "varc/variants/LightKeywords.h"
+#include "varc/variants/RuntimeKeywords.h"
 #include "varc/vulkan/Sampler.h"
 
 namespace varc::runtime {
@@ -175,7 +176,7 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
         if (!pass)
             return makeError(ErrorCode::NotFound, what + ": the shader has no Deferred pass");
         std::vector<std::string> keywords;
-        if (hdr) keywords.push_back("UNITY_HDR_ON");
+        if (hdr) keywords.push_back(variants::kHdrKeyword);
         auto variant = pass->lookup(keywords, variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         std::map<std::string, std::string>& textureNames =
@@ -232,7 +233,7 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
         if (!pass) return makeError(ErrorCode::NotFound, what + ": the shader has no pass 0");
         variants::LightDescription description;
         description.type = toVariantLight(light.type);
-        description.cookie = light.type != scene::LightType::Spot && light.cookie != "none";
+        description.cookie = light.hasCookie();
         description.hdr = hdr;
         auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);

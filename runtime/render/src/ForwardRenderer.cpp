@@ -73,8 +73,7 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
             variants::LightDescription description;
             description.type =
                 light ? toVariantLight(light->type) : variants::LightType::Directional;
-            description.cookie =
-                light && light->type != scene::LightType::Spot && light->cookie != "none";
+            description.cookie = light && light->hasCookie();
             description.vertexLightCount = static_cast<int>(assignment.vertexLights.size());
             description.hdr = scene.camera.hdr;
             description.lightProbes = true;

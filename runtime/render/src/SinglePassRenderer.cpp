@@ -22,6 +22,7 @@
 #include "varc/render/VertexLayout.h"
 #include "varc/scene/CameraMatrices.h"
 #include "varc/scene/Mesh.h"
+#include "varc/variants/RuntimeKeywords.h"
 #include "varc/vulkan/Buffer.h"
 #include "varc/vulkan/RenderTarget.h"
 
@@ -29,7 +30,6 @@ namespace varc::runtime {
 
 namespace {
 
-constexpr const char* kInstancingKeyword = "INSTANCING_ON";
 constexpr const char* kArraySuffix = "Array";
 
 // What an instanced variant reads per instance: the names P of its `PArray` members other than
@@ -133,8 +133,8 @@ struct SinglePassRenderer::State : RendererBase {
 
 const InstancedLayout* SinglePassRenderer::State::instancing(const PassView& pass) {
     auto [it, inserted] = instancedLayouts.try_emplace(pass.describe());
-    if (inserted && pass.keywordIndex(kInstancingKeyword)) {
-        std::vector<std::string> keywords = {kInstancingKeyword};
+    if (inserted && pass.keywordIndex(variants::kInstancingKeyword)) {
+        std::vector<std::string> keywords = {variants::kInstancingKeyword};
         auto variant = pass.lookup(keywords, variants::SelectionPolicy::Exact);
         if (variant) it->second = instancedLayout(*variant);
     }
@@ -210,7 +210,7 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
         const scene::Object& first = scene.objects[group.objects.front()];
         const bool instanced = group.objects.size() > 1;
         std::vector<std::string> keywords;
-        if (instanced) keywords.push_back(kInstancingKeyword);
+        if (instanced) keywords.push_back(variants::kInstancingKeyword);
         auto variant = group.pass->lookup(keywords, variants::SelectionPolicy::Exact);
         if (!variant)
             return makeError(
