@@ -21,7 +21,7 @@ bool parseTags(TokenCursor& cursor, Tags& tags) {
             return false;
         }
         for (auto& [existingKey, existingValue] : tags) {
-            if (equalsIgnoreCase(existingKey, key.text)) {
+            if (equalsIgnoreAsciiCase(existingKey, key.text)) {
                 existingValue = std::string(value.text);
                 return true;
             }

@@ -8,7 +8,7 @@ namespace varc::shaderlab {
 
 std::string findTag(const Tags& tags, const std::string& key) {
     for (const auto& [name, value] : tags) {
-        if (equalsIgnoreCase(name, key)) return value;
+        if (equalsIgnoreAsciiCase(name, key)) return value;
     }
     return {};
 }

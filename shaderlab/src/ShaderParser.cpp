@@ -97,7 +97,7 @@ bool ShaderParser::parseCategoryItem(ShaderFile& shader, CategoryState& category
 void ShaderParser::applyCategory(const CategoryState& category, SubShader& subShader) {
     for (const auto& [key, value] : category.tags) {
         bool overridden = false;
-        for (const auto& own : subShader.tags) overridden |= equalsIgnoreCase(own.first, key);
+        for (const auto& own : subShader.tags) overridden |= equalsIgnoreAsciiCase(own.first, key);
         if (!overridden) subShader.tags.emplace_back(key, value);
     }
     if (subShader.lod == 0) subShader.lod = category.lod;

@@ -3,20 +3,13 @@
 #include "varc/variants/LightKeywords.h"
 
 #include <algorithm>
-#include <cctype>
 
+#include "varc/core/AsciiCase.h"
 #include "varc/variants/RuntimeKeywords.h"
 
 namespace varc::variants {
 
 namespace {
-
-bool equalsIgnoringCase(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) ==
-                      std::tolower(static_cast<unsigned char>(y));
-           });
-}
 
 // §4.2 table: spot lights always have a cookie, so there is no SPOT_COOKIE.
 const char* lightTypeKeyword(const LightDescription& light) {
@@ -64,23 +57,23 @@ void addForwardBaseKeywords(const LightDescription& light, std::vector<std::stri
 }  // namespace
 
 std::optional<LightType> parseLightType(std::string_view name) {
-    if (equalsIgnoringCase(name, "directional")) return LightType::Directional;
-    if (equalsIgnoringCase(name, "point")) return LightType::Point;
-    if (equalsIgnoringCase(name, "spot")) return LightType::Spot;
+    if (equalsIgnoreAsciiCase(name, "directional")) return LightType::Directional;
+    if (equalsIgnoreAsciiCase(name, "point")) return LightType::Point;
+    if (equalsIgnoreAsciiCase(name, "spot")) return LightType::Spot;
     return std::nullopt;
 }
 
 std::optional<ShadowMode> parseShadowMode(std::string_view name) {
-    if (equalsIgnoringCase(name, "none")) return ShadowMode::None;
-    if (equalsIgnoringCase(name, "hard")) return ShadowMode::Hard;
-    if (equalsIgnoringCase(name, "soft")) return ShadowMode::Soft;
+    if (equalsIgnoreAsciiCase(name, "none")) return ShadowMode::None;
+    if (equalsIgnoreAsciiCase(name, "hard")) return ShadowMode::Hard;
+    if (equalsIgnoreAsciiCase(name, "soft")) return ShadowMode::Soft;
     return std::nullopt;
 }
 
 std::optional<LightPassKind> lightPassKindFromLightMode(std::string_view lightMode) {
-    if (equalsIgnoringCase(lightMode, "ForwardBase")) return LightPassKind::ForwardBase;
-    if (equalsIgnoringCase(lightMode, "ForwardAdd")) return LightPassKind::ForwardAdd;
-    if (lightMode.empty() || equalsIgnoringCase(lightMode, "Deferred")) {
+    if (equalsIgnoreAsciiCase(lightMode, "ForwardBase")) return LightPassKind::ForwardBase;
+    if (equalsIgnoreAsciiCase(lightMode, "ForwardAdd")) return LightPassKind::ForwardAdd;
+    if (lightMode.empty() || equalsIgnoreAsciiCase(lightMode, "Deferred")) {
         return LightPassKind::DeferredLight;
     }
     return std::nullopt;

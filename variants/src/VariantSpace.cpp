@@ -4,8 +4,8 @@
 
 #include <algorithm>
 
-#include "SaturatingMath.h"
 #include "VariantSpaceBuilder.h"
+#include "varc/core/SaturatingMath.h"
 
 namespace varc::variants {
 

@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "SaturatingMath.h"
+#include "varc/core/SaturatingMath.h"
 
 namespace varc::variants {
 

@@ -10,6 +10,7 @@
 #include "varc/build/PropertyDefaults.h"
 #include "varc/build/SpirvOptimizer.h"
 #include "varc/packwriter/RenderStateConversion.h"
+#include "varc/variants/KeywordList.h"
 
 namespace varc::compiler {
 
@@ -57,13 +58,6 @@ uint64_t inputsHash(const includes::SourceMap& sourceMap, const std::string& fin
     uint64_t hash = XXH64_digest(state);
     XXH64_freeState(state);
     return hash;
-}
-
-std::string keywordList(const std::vector<std::string>& names) {
-    if (names.empty()) return "<none>";
-    std::string text;
-    for (const std::string& name : names) text += (text.empty() ? "" : " ") + name;
-    return text;
 }
 
 // The shader's Properties defaults; one that cannot be read is left out with a warning (the
@@ -137,13 +131,13 @@ bool checkStageInterfaces(const std::vector<LoadedShader>& shaders, const BuildO
                 if (matched) continue;
                 const LoadedShader& shader = shaders[pass.shaderIndex];
                 const LoadedPass& loaded = shader.passes[pass.passIndex];
-                sink.error(
-                    loaded.pass->program->origin,
-                    "fragment input '" + input.name + "' (location " +
-                        std::to_string(input.location) + ", " + input.type +
-                        ") is not written by the vertex program in " +
-                        describePass(shader.ast, *loaded.pass, loaded.index) +
-                        ", keywords: " + keywordList(loaded.space->table().namesOf(variant.key)));
+                sink.error(loaded.pass->program->origin,
+                           "fragment input '" + input.name + "' (location " +
+                               std::to_string(input.location) + ", " + input.type +
+                               ") is not written by the vertex program in " +
+                               describePass(shader.ast, *loaded.pass, loaded.index) +
+                               ", keywords: " +
+                               variants::joinKeywords(loaded.space->table().namesOf(variant.key)));
                 ok = false;
             }
         }

@@ -5,18 +5,12 @@
 #include <algorithm>
 #include <cctype>
 
+#include "varc/core/AsciiCase.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::compiler {
 
 namespace {
-
-std::string upper(std::string_view text) {
-    std::string result(text);
-    std::transform(result.begin(), result.end(), result.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return result;
-}
 
 const char* stageMacro(Stage stage) {
     switch (stage) {
@@ -63,7 +57,7 @@ std::string passMacro(std::string_view lightMode) {
     static const char* const kKnown[] = {"FORWARDBASE", "FORWARDADD",   "DEFERRED",
                                          "SHADOWCASTER", "PREPASSBASE", "PREPASSFINAL",
                                          "META",         "MOTIONVECTORS"};
-    std::string name = upper(lightMode);
+    std::string name = toAsciiUpper(lightMode);
     for (const char* known : kKnown) {
         if (name == known) return "UNITY_PASS_" + name;
     }

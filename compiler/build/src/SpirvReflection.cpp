@@ -3,11 +3,11 @@
 #include "varc/build/SpirvReflection.h"
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 #include <tuple>
 
 #include "SpirvModule.h"
+#include "varc/core/AsciiCase.h"
 
 namespace varc::compiler {
 
@@ -163,11 +163,7 @@ std::map<uint32_t, std::string> semanticsByLocation(const SpirvModule& module) {
         const Decorations& decorations = module.decorations(variable.id);
         auto semantic = decorations.strings.find(UserSemantic);
         if (decorations.has(Location) && semantic != decorations.strings.end()) {
-            std::string name = semantic->second;
-            std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) {
-                return static_cast<char>(std::toupper(c));
-            });
-            semantics[decorations.get(Location)] = name;
+            semantics[decorations.get(Location)] = toAsciiUpper(semantic->second);
         }
     }
     return semantics;

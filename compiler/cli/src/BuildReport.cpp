@@ -6,6 +6,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "varc/core/JoinWords.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::cli {
@@ -55,12 +56,6 @@ std::vector<std::pair<std::string, std::vector<std::string>>> unaffectedStages(
     return result;
 }
 
-std::string joined(const std::vector<std::string>& words, const char* separator) {
-    std::string text;
-    for (const std::string& word : words) text += (text.empty() ? "" : separator) + word;
-    return text;
-}
-
 std::string kibibytes(uint64_t bytes) {
     std::ostringstream out;
     out << std::fixed << std::setprecision(1) << static_cast<double>(bytes) / 1024.0 << " KiB";
@@ -86,7 +81,7 @@ void printBuildReport(const std::vector<compiler::LoadedShader>& shaders,
             << "    Compiled SPIR-V modules:     " << stageCounts(pass.stats.distinctModules)
             << "\n";
         for (const auto& [keywords, stages] : unaffectedStages(loaded, pass)) {
-            out << "    Does not affect " << joined(stages, ", ") << ": " << keywords << "\n";
+            out << "    Does not affect " << joinWords(stages, ", ") << ": " << keywords << "\n";
         }
     }
     out << "Built " << variants << " variants from " << build.compiledSources

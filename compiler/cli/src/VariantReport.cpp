@@ -2,8 +2,10 @@
 // The output of `varc variants`: a text listing in the spirit of Unity's "Show variants", or JSON.
 #include "varc/cli/VariantReport.h"
 
-#include <limits>
 #include <ostream>
+
+#include "varc/core/JoinWords.h"
+#include "varc/core/SaturatingMath.h"
 
 namespace varc::cli {
 
@@ -15,11 +17,6 @@ std::vector<std::string> displayKeywords(const variants::KeywordSetDecl& set) {
     std::vector<std::string> keywords;
     for (const std::string& keyword : set.keywords) keywords.push_back(keyword.empty() ? "_" : keyword);
     return keywords;
-}
-
-uint64_t saturatingAdd(uint64_t a, uint64_t b) {
-    return b > std::numeric_limits<uint64_t>::max() - a ? std::numeric_limits<uint64_t>::max()
-                                                         : a + b;
 }
 
 Json passJson(const compiler::LoadedPass& pass, bool withList) {
@@ -41,17 +38,12 @@ Json passJson(const compiler::LoadedPass& pass, bool withList) {
     return json;
 }
 
-std::string joined(const std::vector<std::string>& words) {
-    std::string text;
-    for (const std::string& word : words) text += (text.empty() ? "" : " ") + word;
-    return text;
-}
-
 void printVariantList(const compiler::LoadedPass& pass, std::ostream& out) {
     out << "      " << pass.space->count() << " keyword variants:\n";
     pass.space->forEach([&](const variants::VariantKey& key) {
         std::vector<std::string> names = pass.space->table().namesOf(key);
-        out << "        " << (names.empty() ? "<no keywords defined>" : joined(names)) << "\n";
+        // Unity's inspector spelling for the variant without keywords, kept for familiarity.
+        out << "        " << (names.empty() ? "<no keywords defined>" : joinWords(names)) << "\n";
         return true;
     });
 }
@@ -68,11 +60,11 @@ void printPass(const compiler::LoadedPass& pass, const includes::SourceMap& sour
     if (full != count) out << " (of " << full << " before skip_variants and shortcut rules)";
     out << "\n";
     for (const variants::KeywordSetDecl& set : pass.keywords.sets) {
-        out << "      " << set.directive << ": " << joined(displayKeywords(set)) << "  ("
+        out << "      " << set.directive << ": " << joinWords(displayKeywords(set)) << "  ("
             << sourceMap.format({set.location.file, set.location.line, 0}) << ")\n";
     }
     if (!pass.keywords.skipped.empty()) {
-        out << "      skip_variants: " << joined(pass.keywords.skipped) << "\n";
+        out << "      skip_variants: " << joinWords(pass.keywords.skipped) << "\n";
     }
     if (withList) printVariantList(pass, out);
 }

@@ -2,8 +2,7 @@
 // Loads a .shader file: ShaderLab parse, include expansion and keyword model for every pass.
 #include "varc/frontend/ShaderLoader.h"
 
-#include <limits>
-
+#include "varc/core/SaturatingMath.h"
 #include "varc/shaderlab/ShaderLabParser.h"
 #include "varc/variants/PragmaParser.h"
 
@@ -55,10 +54,7 @@ bool loadPass(LoadedPass& loaded, includes::IncludeResolver& resolver, Diagnosti
 uint64_t LoadedShader::variantCount() const {
     uint64_t total = 0;
     for (const LoadedPass& pass : passes) {
-        uint64_t count = pass.space->count();
-        total = (count > std::numeric_limits<uint64_t>::max() - total)
-                    ? std::numeric_limits<uint64_t>::max()
-                    : total + count;
+        total = saturatingAdd(total, pass.space->count());
     }
     return total;
 }

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "varc/core/AsciiCase.h"
+
 namespace varc::compiler {
 
 namespace {
@@ -61,15 +63,6 @@ constexpr Named<pack::StencilOp> kStencilOps[] = {
 };
 constexpr Named<bool> kOnOff[] = {{"On", true}, {"Off", false}};
 
-bool equalsIgnoreCase(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i) {
-        auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c + 32) : c; };
-        if (lower(a[i]) != lower(b[i])) return false;
-    }
-    return true;
-}
-
 // Collects the errors of one conversion.
 class Converter {
 public:
@@ -85,7 +78,7 @@ public:
             return;
         }
         for (const Named<T>& entry : names) {
-            if (equalsIgnoreCase(entry.name, in.literal)) {
+            if (equalsIgnoreAsciiCase(entry.name, in.literal)) {
                 out = {entry.value, {}};  // a literal replaces a copied property reference
                 return;
             }

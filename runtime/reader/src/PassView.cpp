@@ -2,8 +2,8 @@
 // One pass of an open Pack: tags, render state, keyword table and declared sets.
 #include "varc/reader/PassView.h"
 
-#include "AsciiCase.h"
 #include "PackImage.h"
+#include "varc/core/AsciiCase.h"
 #include "varc/core/Check.h"
 #include "varc/pack/PackTables.h"
 
@@ -31,7 +31,7 @@ std::pair<std::string_view, std::string_view> PassView::tag(size_t i) const {
 std::string_view PassView::tagValue(std::string_view key) const {
     for (size_t i = 0; i < tagCount(); ++i) {
         auto [name, value] = tag(i);
-        if (detail::equalsIgnoreAsciiCase(name, key)) return value;
+        if (equalsIgnoreAsciiCase(name, key)) return value;
     }
     return {};
 }

@@ -4,8 +4,8 @@
 
 #include <bit>
 
-#include "AsciiCase.h"
 #include "PackImage.h"
+#include "varc/core/AsciiCase.h"
 #include "varc/pack/PackTables.h"
 
 namespace varc::runtime {
@@ -29,7 +29,7 @@ std::optional<PassView> ShaderView::pass(size_t position) const {
 std::optional<PassView> ShaderView::pass(std::string_view lightMode) const {
     for (size_t i = 0; i < passCount(); ++i) {
         PassView candidate = *pass(i);
-        if (detail::equalsIgnoreAsciiCase(candidate.lightMode(), lightMode)) return candidate;
+        if (equalsIgnoreAsciiCase(candidate.lightMode(), lightMode)) return candidate;
     }
     return std::nullopt;
 }

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "varc/render/VertexLayout.h"
 
-#include <cctype>
 #include <cstddef>
 #include <optional>
 #include <string>
+
+#include "varc/core/AsciiCase.h"
 
 namespace varc::runtime {
 
@@ -15,14 +16,9 @@ struct Stream {
     VkFormat format;
 };
 
-std::string upper(std::string text) {
-    for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return text;
-}
-
 // The stream a semantic (or GLSL legacy name) reads; nullopt when the mesh has no such data.
 std::optional<Stream> streamFor(const pack::VertexInput& input) {
-    std::string key = upper(input.semantic.empty() ? input.name : input.semantic);
+    std::string key = toAsciiUpper(input.semantic.empty() ? input.name : input.semantic);
     auto is = [&](std::string_view prefix) { return key.rfind(prefix, 0) == 0; };
     if (is("POSITION") || key == "VARC_VERTEX" || is("SV_POSITION")) {
         return Stream{offsetof(MeshVertex, position), VK_FORMAT_R32G32B32_SFLOAT};

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // Physical device selection and logical device creation for VulkanContext.
-#include <algorithm>
-#include <cctype>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "varc/vulkan/CheckVk.h"
 #include "ContextState.h"
+#include "varc/core/AsciiCase.h"
+#include "varc/vulkan/CheckVk.h"
 
 namespace varc::runtime {
 
@@ -16,14 +15,8 @@ namespace {
 // The name lavapipe reports, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
 constexpr const char* kLavapipeName = "llvmpipe";
 
-std::string lowercase(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
-
 bool nameContains(const VkPhysicalDeviceProperties& properties, const std::string& needle) {
-    return lowercase(properties.deviceName).find(lowercase(needle)) != std::string::npos;
+    return toAsciiLower(properties.deviceName).find(toAsciiLower(needle)) != std::string::npos;
 }
 
 std::optional<uint32_t> graphicsQueueFamily(VkPhysicalDevice device) {

@@ -131,7 +131,7 @@ std::optional<std::string_view> Lexer::captureUntilWord(const Token& opening,
 }
 
 bool Lexer::isWholeWordAt(size_t pos, std::string_view word) const {
-    if (!equalsIgnoreCase(mText.substr(pos, word.size()), word)) return false;
+    if (!equalsIgnoreAsciiCase(mText.substr(pos, word.size()), word)) return false;
     if (pos > 0 && isIdentifierChar(mText[pos - 1])) return false;
     return !isIdentifierChar(at(pos + word.size()));
 }

@@ -7,22 +7,12 @@
 namespace varc::shaderlab {
 namespace {
 
-char lowerAscii(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
-
 bool isPrintableAscii(char c) { return c >= 0x20 && c < 0x7f; }
 
 }  // namespace
 
-bool equalsIgnoreCase(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) return false;
-    for (size_t i = 0; i < a.size(); ++i) {
-        if (lowerAscii(a[i]) != lowerAscii(b[i])) return false;
-    }
-    return true;
-}
-
 bool Token::isKeyword(std::string_view keyword) const {
-    return kind == TokenKind::Identifier && equalsIgnoreCase(text, keyword);
+    return kind == TokenKind::Identifier && equalsIgnoreAsciiCase(text, keyword);
 }
 
 std::string Token::describe() const {

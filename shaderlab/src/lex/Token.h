@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "varc/core/AsciiCase.h"
 #include "varc/core/SourceLocation.h"
 
 namespace varc::shaderlab {
@@ -31,8 +32,5 @@ struct Token {
     // How the token reads in a message: 'Pass', "a string", end of file, byte 0x01.
     std::string describe() const;
 };
-
-// ASCII case-insensitive equality, as ShaderLab keywords compare.
-bool equalsIgnoreCase(std::string_view a, std::string_view b);
 
 }  // namespace varc::shaderlab

@@ -68,7 +68,7 @@ bool LegacyCommandSkipper::skipAlphaTest() {
         return false;
     }
     const Token& token = mCursor.peek();
-    if (equalsIgnoreCase(comparison.literal, "Off")) return true;
+    if (equalsIgnoreAsciiCase(comparison.literal, "Off")) return true;
     if (!token.is(TokenKind::Number) && !token.isSymbol('[')) return true;
     StateValue reference;
     return parseStateValue(mCursor, "AlphaTest", {}, true, reference);

@@ -36,15 +36,15 @@ enum class Faces { Both, Front, Back };
 const FaceField* findFaceField(std::string_view key, Faces& faces) {
     for (const FaceField& entry : kFaceFields) {
         if (key.size() < entry.name.size() ||
-            !equalsIgnoreCase(key.substr(0, entry.name.size()), entry.name)) {
+            !equalsIgnoreAsciiCase(key.substr(0, entry.name.size()), entry.name)) {
             continue;
         }
         std::string_view suffix = key.substr(entry.name.size());
         if (suffix.empty())
             faces = Faces::Both;
-        else if (equalsIgnoreCase(suffix, "Front"))
+        else if (equalsIgnoreAsciiCase(suffix, "Front"))
             faces = Faces::Front;
-        else if (equalsIgnoreCase(suffix, "Back"))
+        else if (equalsIgnoreAsciiCase(suffix, "Back"))
             faces = Faces::Back;
         else
             continue;

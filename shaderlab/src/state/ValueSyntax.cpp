@@ -42,7 +42,7 @@ bool parsePropertyReference(TokenCursor& cursor, std::string_view command, State
 
 bool containsName(std::span<const std::string_view> names, std::string_view text) {
     for (std::string_view name : names) {
-        if (equalsIgnoreCase(name, text)) return true;
+        if (equalsIgnoreAsciiCase(name, text)) return true;
     }
     return false;
 }

@@ -9,20 +9,10 @@
 #include "varc/build/GlslangLogParser.h"
 #include "varc/build/PassDefines.h"
 #include "varc/frontend/StagePruner.h"
+#include "varc/variants/KeywordList.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::compiler::detail {
-
-namespace {
-
-std::string joinKeywords(const std::vector<std::string>& names) {
-    if (names.empty()) return "<no keywords>";
-    std::string text;
-    for (const std::string& name : names) text += (text.empty() ? "" : " ") + name;
-    return text;
-}
-
-}  // namespace
 
 shaderlab::ProgramLanguage languageOf(const PassJob& job) {
     return job.pass->pass->program->language;
@@ -37,7 +27,7 @@ std::string contextOf(const PassJob& job, Stage stage, size_t variant) {
     const auto& table = job.pass->space->table();
     return std::string("in the ") + stageName(stage) + " stage of " +
            describePass(job.shader->ast, *job.pass->pass, job.pass->index) +
-           ", keywords: " + joinKeywords(table.namesOf(job.keys[variant]));
+           ", keywords: " + variants::joinKeywords(table.namesOf(job.keys[variant]));
 }
 
 // The stages a pass compiles, from its #pragma vertex/fragment/...; reports missing entries.
