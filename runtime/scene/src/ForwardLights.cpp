@@ -6,24 +6,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "varc/scene/LightImportance.h"
 #include "varc/scene/Mesh.h"
 
 namespace varc::scene {
 namespace {
-
-int importanceRank(LightRenderMode mode) {
-    switch (mode) {
-        case LightRenderMode::Important: return 0;
-        case LightRenderMode::Auto: return 1;
-        case LightRenderMode::NotImportant: return 2;
-    }
-    return 1;
-}
-
-bool reaches(const Light& light, const BoundingSphere& bounds) {
-    if (light.type == LightType::Directional) return true;
-    return glm::distance(light.transform.position, bounds.centre) < light.range + bounds.radius;
-}
 
 // 1/(1 + 25 d²/r²): Unity's vertex-light attenuation, used for sorting and SH folding.
 float distanceAttenuation(const Light& light, const glm::vec3& centre) {
@@ -47,26 +34,17 @@ float lightBrightnessAt(const Light& light, const glm::vec3& centre) {
 
 ForwardLightAssignment assignForwardLights(const Scene& scene, const Object& object) {
     const BoundingSphere bounds = worldBounds(object);
-    struct Candidate {
-        int index;
-        int rank;
-        float brightness;
-    };
-    std::vector<Candidate> sorted;
+    std::vector<RankedLight> sorted;
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const Light& light = scene.lights[i];
-        if (!reaches(light, bounds)) continue;
-        sorted.push_back({static_cast<int>(i), importanceRank(light.renderMode),
-                          lightBrightnessAt(light, bounds.centre)});
+        if (lightReaches(light, bounds))
+            sorted.push_back(rankLight(static_cast<int>(i), light, bounds.centre));
     }
-    std::stable_sort(sorted.begin(), sorted.end(), [](const Candidate& a, const Candidate& b) {
-        if (a.rank != b.rank) return a.rank < b.rank;
-        return a.brightness > b.brightness;
-    });
+    sortByImportance(sorted);
 
     ForwardLightAssignment out;
     int pixelLights = 0;
-    for (const Candidate& c : sorted) {
+    for (const RankedLight& c : sorted) {
         const Light& light = scene.lights[c.index];
         if (light.type == LightType::Directional &&
             light.renderMode != LightRenderMode::NotImportant) {
@@ -78,7 +56,7 @@ ForwardLightAssignment assignForwardLights(const Scene& scene, const Object& obj
         }
     }
     std::vector<int> rest;
-    for (const Candidate& c : sorted) {
+    for (const RankedLight& c : sorted) {
         if (c.index == out.mainDirectional) continue;
         const Light& light = scene.lights[c.index];
         const bool alwaysPixel = light.renderMode == LightRenderMode::Important ||

@@ -8,33 +8,10 @@
 
 #include "varc/scene/CameraMatrices.h"
 #include "varc/scene/ForwardLights.h"
+#include "varc/scene/LightImportance.h"
 
 namespace varc::scene {
 namespace {
-
-int importanceRank(LightRenderMode mode) {
-    switch (mode) {
-        case LightRenderMode::Important: return 0;
-        case LightRenderMode::Auto: return 1;
-        case LightRenderMode::NotImportant: return 2;
-    }
-    return 1;
-}
-
-struct Ranked {
-    int index;  // what is being ordered (scene light index or buffer slot)
-    int rank;
-    float brightness;
-};
-
-// Importance, then brightness, then |index|: a strict total order, so any sort is stable.
-void sortByImportance(std::vector<Ranked>& lights) {
-    std::sort(lights.begin(), lights.end(), [](const Ranked& a, const Ranked& b) {
-        if (a.rank != b.rank) return a.rank < b.rank;
-        if (a.brightness != b.brightness) return a.brightness > b.brightness;
-        return a.index < b.index;
-    });
-}
 
 // Whether the sphere (|centre|, |radius|) intersects the frustum of |viewProjection| (Vulkan
 // clip space: -w <= x, y <= w, 0 <= z <= w). Planes from the matrix rows (Gribb & Hartmann);
@@ -50,28 +27,22 @@ bool sphereInFrustum(const glm::mat4& viewProjection, const glm::vec3& centre, f
     return true;
 }
 
-bool reaches(const Light& light, const BoundingSphere& bounds) {
-    if (light.type == LightType::Directional) return true;
-    return glm::distance(light.transform.position, bounds.centre) < light.range + bounds.radius;
-}
-
 }  // namespace
 
 VisibleLightSet selectVisibleLights(const Scene& scene) {
     const glm::mat4 viewProjection = cameraMatrices(scene.camera).viewProjection;
-    std::vector<Ranked> visible;
+    std::vector<RankedLight> visible;
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const Light& light = scene.lights[i];
         if (light.type != LightType::Directional &&
             !sphereInFrustum(viewProjection, light.transform.position, light.range)) {
             continue;
         }
-        visible.push_back({static_cast<int>(i), importanceRank(light.renderMode),
-                           lightBrightnessAt(light, scene.camera.position)});
+        visible.push_back(rankLight(static_cast<int>(i), light, scene.camera.position));
     }
     sortByImportance(visible);
     VisibleLightSet out;
-    for (const Ranked& light : visible) {
+    for (const RankedLight& light : visible) {
         auto& list = out.slots.size() < kMaxVisibleLights ? out.slots : out.dropped;
         list.push_back(light.index);
     }
@@ -81,12 +52,11 @@ VisibleLightSet selectVisibleLights(const Scene& scene) {
 ObjectLightList objectLightList(const Scene& scene, const VisibleLightSet& visible,
                                 const Object& object) {
     const BoundingSphere bounds = worldBounds(object);
-    std::vector<Ranked> touching;
+    std::vector<RankedLight> touching;
     for (size_t slot = 0; slot < visible.slots.size(); ++slot) {
         const Light& light = scene.lights[static_cast<size_t>(visible.slots[slot])];
-        if (!reaches(light, bounds)) continue;
-        touching.push_back({static_cast<int>(slot), importanceRank(light.renderMode),
-                            lightBrightnessAt(light, bounds.centre)});
+        if (lightReaches(light, bounds))
+            touching.push_back(rankLight(static_cast<int>(slot), light, bounds.centre));
     }
     sortByImportance(touching);
     ObjectLightList out;
