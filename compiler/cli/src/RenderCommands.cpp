@@ -15,10 +15,8 @@
 #include "varc/reference/ReferenceRenderer.h"
 #include "varc/reference/SceneTolerance.h"
 #include "varc/reference/SinglePassReference.h"
-#include "varc/render/DeferredRenderer.h"
-#include "varc/render/ForwardRenderer.h"
 #include "varc/render/PipelineCacheFile.h"
-#include "varc/render/SinglePassRenderer.h"
+#include "varc/render/SceneRenderer.h"
 #include "varc/scene/Scene.h"
 #include "varc/vulkan/VulkanContext.h"
 
@@ -41,35 +39,16 @@ std::optional<std::vector<runtime::Pack>> openPacks(const std::vector<std::strin
     return packs;
 }
 
-// One renderer per scene path (scene.camera.path), sharing the Vulkan context and packs.
-struct SceneRenderers {
-    runtime::ForwardRenderer forward;
-    runtime::SinglePassRenderer singlePass;
-    runtime::DeferredRenderer deferred;
-
-    static Result<SceneRenderers> create(runtime::VulkanContext& context,
-                                         const std::vector<runtime::Pack>& packs,
-                                         VkPipelineCache cache) {
-        std::vector<const runtime::Pack*> pointers;
-        for (const runtime::Pack& pack : packs) pointers.push_back(&pack);
-        auto forward = runtime::ForwardRenderer::create(context, pointers);
-        if (!forward) return forward.error();
-        auto singlePass = runtime::SinglePassRenderer::create(context, pointers);
-        if (!singlePass) return singlePass.error();
-        auto deferred = runtime::DeferredRenderer::create(context, pointers);
-        if (!deferred) return deferred.error();
-        forward->usePipelineCache(cache);
-        singlePass->usePipelineCache(cache);
-        deferred->usePipelineCache(cache);
-        return SceneRenderers{std::move(*forward), std::move(*singlePass), std::move(*deferred)};
-    }
-
-    Result<runtime::RenderedFrame> render(const scene::Scene& scene) {
-        if (scene.camera.path == scene::RenderPath::SinglePass) return singlePass.render(scene);
-        if (scene.camera.path == scene::RenderPath::Deferred) return deferred.render(scene);
-        return forward.render(scene);
-    }
-};
+// The renderer for every scene path, sharing the Vulkan context, the packs and |cache|.
+Result<runtime::SceneRenderer> createSceneRenderer(runtime::VulkanContext& context,
+                                                   const std::vector<runtime::Pack>& packs,
+                                                   VkPipelineCache cache) {
+    std::vector<const runtime::Pack*> pointers;
+    for (const runtime::Pack& pack : packs) pointers.push_back(&pack);
+    auto renderer = runtime::SceneRenderer::create(context, std::move(pointers));
+    if (renderer) renderer->usePipelineCache(cache);
+    return renderer;
+}
 
 // The CPU reference for the scene's path.
 Result<reference::ReferenceImage> renderReferenceFor(const scene::Scene& scene) {
@@ -90,7 +69,7 @@ struct SceneOutcome {
 };
 
 // Renders |scenePath| and, when |compare|, its reference; writes the PNGs that are asked for.
-SceneOutcome renderScene(SceneRenderers& renderer, const std::string& scenePath, bool compare,
+SceneOutcome renderScene(runtime::Renderer& renderer, const std::string& scenePath, bool compare,
                          const std::string& renderPng, const std::string& referencePng,
                          const std::string& diffPng) {
     SceneOutcome outcome;
@@ -188,8 +167,7 @@ int runRender(const Options& options, std::ostream& out, std::ostream& err) {
     auto context = makeContext(err);
     if (!context) return kExitUsage;
     std::optional<runtime::PipelineCacheFile> cache = openPipelineCache(options, *context, err);
-    auto renderer =
-        SceneRenderers::create(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
+    auto renderer = createSceneRenderer(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
     if (!renderer) {
         err << "varc: error: " << renderer.error().detail << "\n";
         return kExitFailure;
@@ -233,8 +211,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     auto context = makeContext(err);
     if (!context) return kExitUsage;
     std::optional<runtime::PipelineCacheFile> cache = openPipelineCache(options, *context, err);
-    auto renderer =
-        SceneRenderers::create(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
+    auto renderer = createSceneRenderer(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
     if (!renderer) {
         err << "varc: error: " << renderer.error().detail << "\n";
         return kExitFailure;

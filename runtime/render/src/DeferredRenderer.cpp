@@ -48,35 +48,63 @@ Result<GpuMesh> uploadQuad(VulkanContext& context, const scene::CameraMatrices& 
 
 }  // namespace
 
+// Everything one frame's draws point at, kept alive until the frame is submitted.
+struct DeferredFrame {
+    FrameStorage storage;
+    const ShaderValues* camera = nullptr;
+    const ShaderValues* quadLayer = nullptr;
+    const ShaderValues* lightMaterial = nullptr;
+    std::optional<GpuMesh> quad;
+    std::vector<Draw> gbufferDraws, lightDraws, decodeDraws;
+    RenderedFrame frame;
+};
+
 struct DeferredRenderer::State : RendererBase {
     std::string lightShader;
     UniqueHandle<VkSampler> nearest;
     std::optional<GpuMesh> sphereVolume, pyramidVolume;
     CameraTargetCache<DeferredTargets> targets;
 
-    Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
-                                            const pack::PackRenderState& state, Phase phase,
-                                            const DeferredTargets& target, bool hdr);
+    // The pass and formats a pipeline of |phase| renders into, and its RendererBase target kind.
+    static PipelineTarget pipelineTarget(Phase phase, const DeferredTargets& target);
+    static uint32_t targetKind(Phase phase, bool hdr);
+
+    // The G-buffer as the light pass samples it.
+    struct GBufferBindings {
+        TextureBinding depth, diffuse, specular, normal;
+    };
+
+    // The frame's phases, in order: each adds its draws to |frame|.
+    Status gbufferPhase(const scene::Scene& scene, const scene::CameraMatrices& matrices,
+                        const DeferredTargets& target, DeferredFrame& frame);
+    Status lightPhase(const scene::Scene& scene, const std::optional<ShaderView>& shader,
+                      const Pack* pack, const scene::CameraMatrices& matrices,
+                      const DeferredTargets& target, DeferredFrame& frame);
+    Status lightDraw(const scene::Scene& scene, size_t index, const ShaderView& shader,
+                     const Pack* pack, const scene::CameraMatrices& matrices,
+                     const DeferredTargets& target, const GBufferBindings& gbuffer,
+                     DeferredFrame& frame);
+    Status decodePhase(const std::optional<ShaderView>& shader, const Pack* pack,
+                       const DeferredTargets& target, DeferredFrame& frame);
+    // Records the three passes, submits, waits and reads the frame back.
+    Status submit(const DeferredTargets& target, bool hdr, DeferredFrame& frame);
 };
 
-Result<const VariantPipeline*> DeferredRenderer::State::pipeline(
-    const Pack* pack, const VariantView& variant, const pack::PackRenderState& state, Phase phase,
-    const DeferredTargets& target, bool hdr) {
-    PipelineTarget pipelineTarget;
+PipelineTarget DeferredRenderer::State::pipelineTarget(Phase phase, const DeferredTargets& target) {
     switch (phase) {
         case Phase::GBuffer:
-            pipelineTarget = {target.gbuffer().renderPass(LoadOp::Clear), true,
-                              target.gbuffer().colorAttachmentCount()};
-            break;
+            return {target.gbuffer().renderPass(LoadOp::Clear), true,
+                    target.gbuffer().colorAttachmentCount()};
         case Phase::Light:
-            pipelineTarget = {target.lightPass(), true, 1};
-            break;
+            return {target.lightPass(), true, 1};
         case Phase::Decode:
-            pipelineTarget = {target.decodePass(), true, 1};
-            break;
+            return {target.decodePass(), true, 1};
     }
-    uint32_t targetKind = static_cast<uint32_t>(phase) * 2 + (hdr ? 1u : 0u);
-    return RendererBase::pipeline(pack, variant, state, pipelineTarget, targetKind);
+    return {};
+}
+
+uint32_t DeferredRenderer::State::targetKind(Phase phase, bool hdr) {
+    return static_cast<uint32_t>(phase) * 2 + (hdr ? 1u : 0u);
 }
 
 DeferredRenderer::DeferredRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
@@ -110,14 +138,6 @@ Result<DeferredRenderer> DeferredRenderer::create(VulkanContext& context,
 
 namespace {
 
-// Everything one frame's draws point at, kept alive until the frame is submitted.
-struct FrameData {
-    std::deque<ShaderValues> values;
-    std::deque<std::map<std::string, std::string>> materialTextures;
-    std::optional<GpuMesh> quad;
-    std::vector<Draw> gbufferDraws, lightDraws, decodeDraws;
-};
-
 ShaderValues lightPassMaterial(bool hdr) {
     ShaderValues material;
     // Unity's BlendMode numbers: Zero 0, One 1, DstColor 2.
@@ -146,6 +166,187 @@ void applyVolumeState(LightVolumeDraw draw, pack::PackRenderState& state) {
 
 }  // namespace
 
+Status DeferredRenderer::State::gbufferPhase(const scene::Scene& scene,
+                                             const scene::CameraMatrices& matrices,
+                                             const DeferredTargets& target, DeferredFrame& frame) {
+    const bool hdr = scene.camera.hdr;
+    std::vector<std::string> keywords;
+    if (hdr) keywords.push_back(variants::kHdrKeyword);
+    // SH = the flat ambient: every light is a deferred light.
+    const scene::ForwardLightAssignment noLights;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        const scene::Object& object = scene.objects[o];
+        const std::string what = objectLabel(o, object);
+        const Pack* pack = nullptr;
+        auto shader = objectShader(what, object, &pack);
+        if (!shader) return shader.error();
+        std::optional<PassView> pass = shader->pass(std::string_view("Deferred"));
+        if (!pass)
+            return makeError(ErrorCode::NotFound, what + ": the shader has no Deferred pass");
+        auto variant = pass->lookup(keywords, variants::SelectionPolicy::Closest);
+        if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
+        auto material = objectMaterial(what, object.material, shader->properties(), frame.storage,
+                                       {{"_StencilNonBackground", kStencilNonBackground}});
+        if (!material) return material.error();
+        auto draw = objectDraw(
+            {what, pack, &*pass, &*variant, *material, object.transform.localToWorld(), object.mesh,
+             pipelineTarget(Phase::GBuffer, target), targetKind(Phase::GBuffer, hdr)});
+        if (!draw) return draw.error();
+        const ShaderValues& objectLayer =
+            frame.storage.values.emplace_back(objectValues(scene, object, matrices, noLights));
+        draw->layers = {nullptr, &objectLayer, material->values, frame.camera};
+        frame.gbufferDraws.push_back(std::move(*draw));
+        frame.frame.variants.push_back(variant->describe());
+    }
+    return Ok{};
+}
+
+Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t index,
+                                          const ShaderView& shader, const Pack* pack,
+                                          const scene::CameraMatrices& matrices,
+                                          const DeferredTargets& target,
+                                          const GBufferBindings& gbuffer, DeferredFrame& frame) {
+    const scene::Light& light = scene.lights[index];
+    const bool hdr = scene.camera.hdr;
+    const std::string what = "light " + std::to_string(index) + " (shader \"" + lightShader + "\")";
+    std::optional<PassView> pass = shader.pass(size_t{0});
+    if (!pass) return makeError(ErrorCode::NotFound, what + ": the shader has no pass 0");
+    variants::LightDescription description;
+    description.type = toVariantLight(light.type);
+    description.cookie = light.hasCookie();
+    description.hdr = hdr;
+    auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
+    if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
+    pack::PackRenderState state = resolveRenderState(pass->renderState(), *frame.lightMaterial);
+    const LightVolume volume = chooseLightVolume(light, scene.camera, matrices);
+    applyVolumeState(volume.draw, state);
+    auto created = pipeline(pack, *variant, state, pipelineTarget(Phase::Light, target),
+                            targetKind(Phase::Light, hdr));
+    if (!created) return makeError(created.error().code, what + ": " + created.error().detail);
+    const bool asQuad = volume.draw == LightVolumeDraw::FullScreenQuad;
+    const ShaderValues& lightLayer =
+        frame.storage.values.emplace_back(deferredLightValues(light, asQuad));
+    Draw draw;
+    draw.pipeline = *created;
+    if (asQuad) {
+        draw.mesh = &*frame.quad;
+        draw.layers = {&lightLayer, frame.quadLayer, frame.lightMaterial, frame.camera};
+    } else {
+        draw.mesh = volume.mesh == &unitSphereVolume() ? &*sphereVolume : &*pyramidVolume;
+        const ShaderValues& volumeLayer =
+            frame.storage.values.emplace_back(lightVolumeValues(volume.objectToWorld));
+        draw.layers = {&lightLayer, &volumeLayer, frame.lightMaterial, frame.camera};
+    }
+    const bool cookie = light.cookie != "none";
+    draw.textures = [this, &light, cookie, gbuffer](
+                        std::string_view name,
+                        pack::ResourceDim dim) -> std::optional<TextureBinding> {
+        if (name == "_LightTexture0") {
+            if (auto file = cookieFile(light)) return file;
+        }
+        if (name == "_CameraDepthTexture") return gbuffer.depth;
+        if (name == "_CameraGBufferTexture0") return gbuffer.diffuse;
+        if (name == "_CameraGBufferTexture1") return gbuffer.specular;
+        if (name == "_CameraGBufferTexture2") return gbuffer.normal;
+        if (auto texture = textures->lightTexture(name, dim, light.type, cookie, true))
+            return texture;
+        return textures->named("white", dim);
+    };
+    frame.lightDraws.push_back(std::move(draw));
+    frame.frame.variants.push_back(variant->describe());
+    return Ok{};
+}
+
+Status DeferredRenderer::State::lightPhase(const scene::Scene& scene,
+                                           const std::optional<ShaderView>& shader,
+                                           const Pack* pack, const scene::CameraMatrices& matrices,
+                                           const DeferredTargets& target, DeferredFrame& frame) {
+    const RenderTarget& g = target.gbuffer();
+    const GBufferBindings gbuffer{
+        {g.depthSampleView(), nearest.get(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL},
+        {g.colorView(kGBufferDiffuse), nearest.get()},
+        {g.colorView(kGBufferSpecular), nearest.get()},
+        {g.colorView(kGBufferNormal), nearest.get()}};
+    if (Status cookies = loadCookieFiles(scene.lights); !cookies) return cookies;
+    for (size_t l = 0; l < scene.lights.size(); ++l) {
+        Status drawn = lightDraw(scene, l, *shader, pack, matrices, target, gbuffer, frame);
+        if (!drawn) return drawn;
+    }
+    return Ok{};
+}
+
+Status DeferredRenderer::State::decodePhase(const std::optional<ShaderView>& shader,
+                                            const Pack* pack, const DeferredTargets& target,
+                                            DeferredFrame& frame) {
+    std::optional<PassView> pass = shader->pass(size_t{1});
+    if (!pass)
+        return makeError(ErrorCode::NotFound,
+                         "deferred light shader \"" + lightShader + "\" has no pass 1");
+    auto variant = pass->lookup(std::vector<std::string>{}, variants::SelectionPolicy::Closest);
+    if (!variant) return makeError(variant.error().code, "LDR decode: " + variant.error().detail);
+    pack::PackRenderState state = resolveRenderState(pass->renderState(), *frame.lightMaterial);
+    // The decoded alpha is −log2(1) = 0 (the light buffer's alpha stays 1): keep the clear alpha.
+    state.colorMask.value = pack::kColorWriteRed | pack::kColorWriteGreen | pack::kColorWriteBlue;
+    auto created = pipeline(pack, *variant, state, pipelineTarget(Phase::Decode, target),
+                            targetKind(Phase::Decode, false));
+    if (!created) return makeError(created.error().code, "LDR decode: " + created.error().detail);
+    Draw draw;
+    draw.pipeline = *created;
+    draw.mesh = &*frame.quad;
+    draw.layers = {nullptr, frame.quadLayer, frame.lightMaterial, frame.camera};
+    TextureBinding lightBuffer{target.gbuffer().colorView(kGBufferLight), nearest.get()};
+    draw.textures = [this, lightBuffer](std::string_view name,
+                                        pack::ResourceDim dim) -> std::optional<TextureBinding> {
+        if (name == "_LightBuffer") return lightBuffer;
+        return textures->named("white", dim);
+    };
+    frame.decodeDraws.push_back(std::move(draw));
+    frame.frame.variants.push_back(variant->describe());
+    return Ok{};
+}
+
+Status DeferredRenderer::State::submit(const DeferredTargets& target, bool hdr,
+                                       DeferredFrame& frame) {
+    const RenderTarget& g = target.gbuffer();
+    Status bound = Ok{};
+    // Records each pass's draws; after a bind error the later passes stay empty.
+    auto record = [&](VkCommandBuffer commands, const std::vector<Draw>& draws) {
+        if (bound) bound = recordDraws(commands, *resources, draws, frame.frame.draws);
+    };
+    Status submitted = context->submitAndWait([&](VkCommandBuffer commands) {
+        VkViewport viewport = g.viewport();
+        VkRect2D area = g.area();
+        g.begin(commands, LoadOp::Clear);
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &area);
+        record(commands, frame.gbufferDraws);
+        g.end(commands);
+        target.toLighting(commands);
+        target.beginLightPass(commands);
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &area);
+        record(commands, frame.lightDraws);
+        vkCmdEndRenderPass(commands);
+        if (!hdr) {
+            target.toDecode(commands);
+            target.beginDecodePass(commands);
+            vkCmdSetViewport(commands, 0, 1, &viewport);
+            vkCmdSetScissor(commands, 0, 1, &area);
+            record(commands, frame.decodeDraws);
+            vkCmdEndRenderPass(commands);
+            target.fromDecode(commands);
+        }
+        target.fromLighting(commands);
+    });
+    if (Status reset = resources->reset(); !reset) return reset;
+    if (!bound) return bound;
+    if (!submitted) return submitted;
+    auto image = hdr ? g.readback(*context, kGBufferLight) : target.output()->readback(*context);
+    if (!image) return image.error();
+    frame.frame.image = std::move(*image);
+    return Ok{};
+}
+
 Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     State& s = *mState;
     if (scene.camera.path != scene::RenderPath::Deferred) {
@@ -158,193 +359,31 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     if (!target) return target.error();
     const DeferredTargets& targets = **target;
     const bool hdr = scene.camera.hdr;
-    scene::CameraMatrices matrices = scene::cameraMatrices(scene.camera);
-    const BuiltinTextures& builtin = *s.textures;
-    FrameData frameData;
-    const ShaderValues& camera = frameData.values.emplace_back(cameraValues(scene, matrices));
-    RenderedFrame frame;
-
-    // G-buffer pass: every object, SH = the flat ambient (all lights are deferred lights).
-    const scene::ForwardLightAssignment noLights;
-    for (size_t o = 0; o < scene.objects.size(); ++o) {
-        const scene::Object& object = scene.objects[o];
-        std::string what = objectLabel(o, object);
-        const Pack* pack = nullptr;
-        std::optional<ShaderView> shader = s.findShader(object.material.shader, &pack);
-        if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
-        std::optional<PassView> pass = shader->pass(std::string_view("Deferred"));
-        if (!pass)
-            return makeError(ErrorCode::NotFound, what + ": the shader has no Deferred pass");
-        std::vector<std::string> keywords;
-        if (hdr) keywords.push_back(variants::kHdrKeyword);
-        auto variant = pass->lookup(keywords, variants::SelectionPolicy::Closest);
-        if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
-        std::map<std::string, std::string>& textureNames =
-            frameData.materialTextures.emplace_back();
-        ShaderValues& material = frameData.values.emplace_back(materialValues(
-            withPropertyDefaults(object.material, shader->properties()), textureNames));
-        if (Status loaded = s.loadTextureFiles(textureNames); !loaded)
-            return makeError(loaded.error().code, what + ": " + loaded.error().detail);
-        if (!material.find("_StencilNonBackground"))
-            material.set("_StencilNonBackground", kStencilNonBackground);
-        pack::PackRenderState state = forObjectTransform(
-            resolveRenderState(pass->renderState(), material), object.transform.localToWorld());
-        auto pipeline = s.pipeline(pack, *variant, state, Phase::GBuffer, targets, hdr);
-        if (!pipeline)
-            return makeError(pipeline.error().code, what + ": " + pipeline.error().detail);
-        const ShaderValues& objectLayer =
-            frameData.values.emplace_back(objectValues(scene, object, matrices, noLights));
-        Draw draw;
-        draw.pipeline = *pipeline;
-        draw.mesh = &s.meshes.at(object.mesh);
-        draw.layers = {nullptr, &objectLayer, &material, &camera};
-        draw.textures = [&s, &textureNames](
-                            std::string_view name,
-                            pack::ResourceDim dim) -> std::optional<TextureBinding> {
-            auto it = textureNames.find(std::string(name));
-            return s.materialTexture(it == textureNames.end() ? "white" : it->second, dim);
-        };
-        frameData.gbufferDraws.push_back(std::move(draw));
-        frame.variants.push_back(variant->describe());
-    }
+    const scene::CameraMatrices matrices = scene::cameraMatrices(scene.camera);
+    DeferredFrame frame;
+    frame.camera = &frame.storage.values.emplace_back(cameraValues(scene, matrices));
+    if (Status drawn = s.gbufferPhase(scene, matrices, targets, frame); !drawn)
+        return drawn.error();
 
     auto quad = uploadQuad(*s.context, matrices);
     if (!quad) return quad.error();
-    frameData.quad.emplace(std::move(*quad));
-    const ShaderValues& quadLayer = frameData.values.emplace_back(fullScreenQuadValues(matrices));
-    const ShaderValues& lightMaterial = frameData.values.emplace_back(lightPassMaterial(hdr));
+    frame.quad.emplace(std::move(*quad));
+    frame.quadLayer = &frame.storage.values.emplace_back(fullScreenQuadValues(matrices));
+    frame.lightMaterial = &frame.storage.values.emplace_back(lightPassMaterial(hdr));
     const Pack* lightPack = nullptr;
     std::optional<ShaderView> lightShader = s.findShader(s.lightShader, &lightPack);
     if (!lightShader && (!scene.lights.empty() || !hdr)) {
         return makeError(ErrorCode::NotFound,
                          "deferred light shader \"" + s.lightShader + "\": no pack has it");
     }
-    const RenderTarget& g = targets.gbuffer();
-    TextureBinding depth{g.depthSampleView(), s.nearest.get(),
-                         VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
-    TextureBinding gbuffer0{g.colorView(kGBufferDiffuse), s.nearest.get()};
-    TextureBinding gbuffer1{g.colorView(kGBufferSpecular), s.nearest.get()};
-    TextureBinding gbuffer2{g.colorView(kGBufferNormal), s.nearest.get()};
-    if (Status cookies = s.loadCookieFiles(scene.lights); !cookies) return cookies.error();
-    for (size_t l = 0; l < scene.lights.size(); ++l) {
-        const scene::Light& light = scene.lights[l];
-        std::string what = "light " + std::to_string(l) + " (shader \"" + s.lightShader + "\")";
-        std::optional<PassView> pass = lightShader->pass(size_t{0});
-        if (!pass) return makeError(ErrorCode::NotFound, what + ": the shader has no pass 0");
-        variants::LightDescription description;
-        description.type = toVariantLight(light.type);
-        description.cookie = light.hasCookie();
-        description.hdr = hdr;
-        auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
-        if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
-        pack::PackRenderState state = resolveRenderState(pass->renderState(), lightMaterial);
-        const LightVolume volume = chooseLightVolume(light, scene.camera, matrices);
-        applyVolumeState(volume.draw, state);
-        auto pipeline = s.pipeline(lightPack, *variant, state, Phase::Light, targets, hdr);
-        if (!pipeline)
-            return makeError(pipeline.error().code, what + ": " + pipeline.error().detail);
-        const bool asQuad = volume.draw == LightVolumeDraw::FullScreenQuad;
-        const ShaderValues& lightLayer =
-            frameData.values.emplace_back(deferredLightValues(light, asQuad));
-        Draw draw;
-        draw.pipeline = *pipeline;
-        if (asQuad) {
-            draw.mesh = &*frameData.quad;
-            draw.layers = {&lightLayer, &quadLayer, &lightMaterial, &camera};
-        } else {
-            draw.mesh = volume.mesh == &unitSphereVolume() ? &*s.sphereVolume : &*s.pyramidVolume;
-            const ShaderValues& volumeLayer =
-                frameData.values.emplace_back(lightVolumeValues(volume.objectToWorld));
-            draw.layers = {&lightLayer, &volumeLayer, &lightMaterial, &camera};
-        }
-        scene::LightType type = light.type;
-        bool cookie = light.cookie != "none";
-        draw.textures = [&s, &builtin, &light, type, cookie, depth, gbuffer0, gbuffer1, gbuffer2](
-                            std::string_view name,
-                            pack::ResourceDim dim) -> std::optional<TextureBinding> {
-            if (name == "_LightTexture0") {
-                if (auto file = s.cookieFile(light)) return file;
-            }
-            if (name == "_CameraDepthTexture") return depth;
-            if (name == "_CameraGBufferTexture0") return gbuffer0;
-            if (name == "_CameraGBufferTexture1") return gbuffer1;
-            if (name == "_CameraGBufferTexture2") return gbuffer2;
-            if (auto texture = builtin.lightTexture(name, dim, type, cookie, true)) return texture;
-            return builtin.named("white", dim);
-        };
-        frameData.lightDraws.push_back(std::move(draw));
-        frame.variants.push_back(variant->describe());
-    }
-
+    if (Status lit = s.lightPhase(scene, lightShader, lightPack, matrices, targets, frame); !lit)
+        return lit.error();
     if (!hdr) {
-        std::optional<PassView> pass = lightShader->pass(size_t{1});
-        if (!pass)
-            return makeError(ErrorCode::NotFound,
-                             "deferred light shader \"" + s.lightShader + "\" has no pass 1");
-        auto variant = pass->lookup(std::vector<std::string>{}, variants::SelectionPolicy::Closest);
-        if (!variant)
-            return makeError(variant.error().code, "LDR decode: " + variant.error().detail);
-        pack::PackRenderState state = resolveRenderState(pass->renderState(), lightMaterial);
-        // The decoded alpha is −log2(1) = 0 (the light buffer's alpha stays 1): keep the clear
-        // alpha.
-        state.colorMask.value =
-            pack::kColorWriteRed | pack::kColorWriteGreen | pack::kColorWriteBlue;
-        auto pipeline = s.pipeline(lightPack, *variant, state, Phase::Decode, targets, hdr);
-        if (!pipeline)
-            return makeError(pipeline.error().code, "LDR decode: " + pipeline.error().detail);
-        Draw draw;
-        draw.pipeline = *pipeline;
-        draw.mesh = &*frameData.quad;
-        draw.layers = {nullptr, &quadLayer, &lightMaterial, &camera};
-        TextureBinding lightBuffer{g.colorView(kGBufferLight), s.nearest.get()};
-        draw.textures = [&builtin, lightBuffer](
-                            std::string_view name,
-                            pack::ResourceDim dim) -> std::optional<TextureBinding> {
-            if (name == "_LightBuffer") return lightBuffer;
-            return builtin.named("white", dim);
-        };
-        frameData.decodeDraws.push_back(std::move(draw));
-        frame.variants.push_back(variant->describe());
+        Status decoded = s.decodePhase(lightShader, lightPack, targets, frame);
+        if (!decoded) return decoded.error();
     }
-
-    Status bound = Ok{};
-    // Records each pass's draws; after a bind error the later passes stay empty.
-    auto record = [&](VkCommandBuffer commands, const std::vector<Draw>& draws) {
-        if (bound) bound = recordDraws(commands, *s.resources, draws, frame.draws);
-    };
-    Status submitted = s.context->submitAndWait([&](VkCommandBuffer commands) {
-        VkViewport viewport = g.viewport();
-        VkRect2D area = g.area();
-        g.begin(commands, LoadOp::Clear);
-        vkCmdSetViewport(commands, 0, 1, &viewport);
-        vkCmdSetScissor(commands, 0, 1, &area);
-        record(commands, frameData.gbufferDraws);
-        g.end(commands);
-        targets.toLighting(commands);
-        targets.beginLightPass(commands);
-        vkCmdSetViewport(commands, 0, 1, &viewport);
-        vkCmdSetScissor(commands, 0, 1, &area);
-        record(commands, frameData.lightDraws);
-        vkCmdEndRenderPass(commands);
-        if (!hdr) {
-            targets.toDecode(commands);
-            targets.beginDecodePass(commands);
-            vkCmdSetViewport(commands, 0, 1, &viewport);
-            vkCmdSetScissor(commands, 0, 1, &area);
-            record(commands, frameData.decodeDraws);
-            vkCmdEndRenderPass(commands);
-            targets.fromDecode(commands);
-        }
-        targets.fromLighting(commands);
-    });
-    if (Status reset = s.resources->reset(); !reset) return reset.error();
-    if (!bound) return bound.error();
-    if (!submitted) return submitted.error();
-    auto image =
-        hdr ? g.readback(*s.context, kGBufferLight) : targets.output()->readback(*s.context);
-    if (!image) return image.error();
-    frame.image = std::move(*image);
-    return frame;
+    if (Status submitted = s.submit(targets, hdr, frame); !submitted) return submitted.error();
+    return std::move(frame.frame);
 }
 
 void DeferredRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }

@@ -2,6 +2,9 @@
 #include "RendererBase.h"
 
 #include "varc/image/Png.h"
+#include "varc/reader/PassView.h"
+#include "varc/render/RenderStateResolver.h"
+#include "varc/render/SceneValues.h"
 #include "varc/scene/Mesh.h"
 
 namespace varc::runtime {
@@ -51,6 +54,49 @@ std::optional<ShaderView> RendererBase::findShader(const std::string& name,
         }
     }
     return std::nullopt;
+}
+
+Result<ShaderView> RendererBase::objectShader(const std::string& what, const scene::Object& object,
+                                              const Pack** owner) const {
+    std::optional<ShaderView> shader = findShader(object.material.shader, owner);
+    if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
+    return *shader;
+}
+
+Result<ObjectMaterial> RendererBase::objectMaterial(
+    const std::string& what, const scene::Material& material,
+    const std::vector<pack::ShaderProperty>& defaults, FrameStorage& frame,
+    const std::vector<std::pair<std::string, float>>& engineDefaults) {
+    std::map<std::string, std::string>& textureNames = frame.materialTextures.emplace_back();
+    ShaderValues& values = frame.values.emplace_back(
+        materialValues(withPropertyDefaults(material, defaults), textureNames));
+    for (const auto& [name, value] : engineDefaults) {
+        if (!values.find(name)) values.set(name, value);
+    }
+    if (Status loaded = loadTextureFiles(textureNames); !loaded)
+        return makeError(loaded.error().code, what + ": " + loaded.error().detail);
+    return ObjectMaterial{&values, &textureNames};
+}
+
+Result<Draw> RendererBase::objectDraw(const ObjectDrawRequest& request) {
+    const ShaderValues& material = *request.material.values;
+    pack::PackRenderState state = forObjectTransform(
+        resolveRenderState(request.pass->renderState(), material), request.localToWorld);
+    auto created =
+        pipeline(request.pack, *request.variant, state, request.target, request.targetKind);
+    if (!created)
+        return makeError(created.error().code, request.what + ": " + created.error().detail);
+    Draw draw;
+    draw.pipeline = *created;
+    draw.mesh = &meshes.at(request.mesh);
+    draw.layers[2] = &material;
+    draw.textures = [this, textureNames = request.material.textureNames](
+                        std::string_view name,
+                        pack::ResourceDim dim) -> std::optional<TextureBinding> {
+        auto it = textureNames->find(std::string(name));
+        return materialTexture(it == textureNames->end() ? "white" : it->second, dim);
+    };
+    return draw;
 }
 
 Result<const VariantPipeline*> RendererBase::pipeline(const Pack* pack, const VariantView& variant,

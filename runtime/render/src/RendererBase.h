@@ -9,15 +9,19 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "Draw.h"
 #include "GpuMesh.h"
 #include "varc/reader/Pack.h"
+#include "varc/reader/PassView.h"
 #include "varc/reader/ShaderView.h"
+#include "varc/reader/VariantView.h"
 #include "varc/render/BuiltinTextures.h"
 #include "varc/render/DrawResources.h"
-#include "varc/render/ForwardRenderer.h"
+#include "varc/render/Renderer.h"
+#include "varc/render/ShaderValues.h"
 #include "varc/render/VariantPipeline.h"
 #include "varc/scene/Scene.h"
 #include "varc/variants/LightKeywords.h"
@@ -33,6 +37,31 @@ variants::LightType toVariantLight(scene::LightType type);
 // quotes only when the object has one).
 std::string objectLabel(size_t index, const scene::Object& object);
 
+// Storage for what one frame's draws point at. Deques: pointers stay valid as they grow.
+struct FrameStorage {
+    std::deque<ShaderValues> values;
+    std::deque<std::map<std::string, std::string>> materialTextures;  // property -> texture name
+};
+
+// An object's material as its draws bind it (RendererBase::objectMaterial), in FrameStorage.
+struct ObjectMaterial {
+    const ShaderValues* values = nullptr;
+    const std::map<std::string, std::string>* textureNames = nullptr;  // property -> texture
+};
+
+// One object drawn with one variant of one pass: what RendererBase::objectDraw needs.
+struct ObjectDrawRequest {
+    std::string what;  // how errors name the object (objectLabel)
+    const Pack* pack = nullptr;
+    const PassView* pass = nullptr;
+    const VariantView* variant = nullptr;
+    ObjectMaterial material;
+    glm::mat4 localToWorld{1.0f};  // a negative determinant culls the other side
+    scene::MeshKind mesh = scene::MeshKind::Sphere;
+    PipelineTarget target;
+    uint32_t targetKind = 0;  // see RendererBase::pipeline
+};
+
 struct RendererBase {
     VulkanContext* context = nullptr;
     std::vector<const Pack*> packs;
@@ -46,6 +75,26 @@ struct RendererBase {
 
     // The shader called |name| in the first pack that has it (|owner| set to that pack).
     std::optional<ShaderView> findShader(const std::string& name, const Pack** owner) const;
+
+    // The shader of |object| (findShader); the error "<what>: no pack has this shader".
+    Result<ShaderView> objectShader(const std::string& what, const scene::Object& object,
+                                    const Pack** owner) const;
+
+    // The material an object's draws bind: |material|'s values completed with the shader's
+    // Properties |defaults|, then with |engineDefaults| (values the engine supplies when the
+    // material does not set them, e.g. a stencil bit); its PNG textures loaded. Stored in
+    // |frame|. Errors, prefixed with |what|: a texture file that cannot be read.
+    Result<ObjectMaterial> objectMaterial(
+        const std::string& what, const scene::Material& material,
+        const std::vector<pack::ShaderProperty>& defaults, FrameStorage& frame,
+        const std::vector<std::pair<std::string, float>>& engineDefaults = {});
+
+    // The per-object step of every renderer: resolves the pass's render state with the material
+    // and mirrors it for the transform, gets the pipeline, and returns a Draw of the object's
+    // mesh with that pipeline, the material as its material layer (layers[2]) and the material's
+    // textures as its texture lookup (unset textures are white). Errors, prefixed with
+    // |request.what|: pipeline creation.
+    Result<Draw> objectDraw(const ObjectDrawRequest& request);
 
     // The pipeline of |variant| with |state| for |target|, created on first use. Pipelines are
     // reused for any render pass compatible with the one they were made for; |targetKind| tells

@@ -148,8 +148,8 @@ Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(
         const scene::Object& object = scene.objects[o];
         std::string what = objectLabel(o, object);
         DrawGroup candidate;
-        std::optional<ShaderView> shader = findShader(object.material.shader, &candidate.pack);
-        if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
+        auto shader = objectShader(what, object, &candidate.pack);
+        if (!shader) return shader.error();
         candidate.pass = shader->pass(size_t{0});
         if (!candidate.pass)
             return makeError(ErrorCode::NotFound, what + ": the shader has no pass");
@@ -202,55 +202,44 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
 
     const ShaderValues camera = cameraValues(scene, scene::cameraMatrices(scene.camera));
     const ShaderValues lightBuffer = lightBufferValues(scene, visible);
-    std::deque<ShaderValues> values;  // stable storage for the layers the draws point at
-    std::deque<std::map<std::string, std::string>> materialTextures;
+    FrameStorage storage;
     std::vector<Draw> draws;
     RenderedFrame frame;
     for (const DrawGroup& group : *groups) {
         const scene::Object& first = scene.objects[group.objects.front()];
+        const std::string what = objectLabel(group.objects.front(), first);
         const bool instanced = group.objects.size() > 1;
         std::vector<std::string> keywords;
         if (instanced) keywords.push_back(variants::kInstancingKeyword);
         auto variant = group.pass->lookup(keywords, variants::SelectionPolicy::Exact);
-        if (!variant)
-            return makeError(
-                variant.error().code,
-                "object " + std::to_string(group.objects.front()) + ": " + variant.error().detail);
-        std::map<std::string, std::string>& textureNames = materialTextures.emplace_back();
-        const ShaderValues& material = values.emplace_back(materialValues(
-            withPropertyDefaults(first.material, group.propertyDefaults), textureNames));
-        if (Status loaded = s.loadTextureFiles(textureNames); !loaded) {
-            return makeError(
-                loaded.error().code,
-                "object " + std::to_string(group.objects.front()) + ": " + loaded.error().detail);
-        }
-        pack::PackRenderState state =
-            forObjectTransform(resolveRenderState(group.pass->renderState(), material),
-                               first.transform.localToWorld());
-        auto pipeline =
-            s.pipeline(group.pack, *variant, state, {(*target)->renderPass(LoadOp::Clear), true, 1},
-                       scene.camera.hdr ? 1u : 0u);
-        if (!pipeline) return pipeline.error();
-        Draw draw;
-        draw.pipeline = *pipeline;
-        draw.mesh = &s.meshes.at(group.mesh);
-        draw.instances = static_cast<uint32_t>(group.objects.size());
-        const ShaderValues& objects = values.emplace_back(instanced ? instanceValues(scene, group)
-                                                                    : singleObjectValues(first));
-        const ShaderValues& lights = values.emplace_back(drawLightValues(group.lights));
-        draw.layers = {&objects, &lights, &material, &lightBuffer, &camera};
-        draw.textures = [&s, &textureNames](
-                            std::string_view name,
-                            pack::ResourceDim dim) -> std::optional<TextureBinding> {
-            auto it = textureNames.find(std::string(name));
-            return s.materialTexture(it == textureNames.end() ? "white" : it->second, dim);
-        };
-        draws.push_back(std::move(draw));
+        if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
+        auto material = s.objectMaterial(what, first.material, group.propertyDefaults, storage);
+        if (!material) return material.error();
+        auto draw = s.objectDraw({what,
+                                  group.pack,
+                                  &*group.pass,
+                                  &*variant,
+                                  *material,
+                                  first.transform.localToWorld(),
+                                  group.mesh,
+                                  {(*target)->renderPass(LoadOp::Clear), true, 1},
+                                  scene.camera.hdr ? 1u : 0u});
+        if (!draw) return draw.error();
+        draw->instances = static_cast<uint32_t>(group.objects.size());
+        const ShaderValues& objects = storage.values.emplace_back(
+            instanced ? instanceValues(scene, group) : singleObjectValues(first));
+        const ShaderValues& lights = storage.values.emplace_back(drawLightValues(group.lights));
+        draw->layers = {&objects, &lights, material->values, &lightBuffer, &camera};
+        draws.push_back(std::move(*draw));
         frame.variants.push_back(variant->describe());
     }
 
     if (Status drawn = s.drawFrame(**target, draws, frame); !drawn) return drawn.error();
     return frame;
+}
+
+Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene) {
+    return render(scene, SinglePassOptions{});
 }
 
 void SinglePassRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }

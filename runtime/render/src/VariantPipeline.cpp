@@ -2,6 +2,9 @@
 #include "varc/render/VariantPipeline.h"
 
 #include <array>
+#include <span>
+#include <string>
+#include <vector>
 
 #include "varc/reader/ProgramView.h"
 #include "varc/render/RenderStateResolver.h"
@@ -42,6 +45,97 @@ Result<std::vector<UniqueHandle<VkDescriptorSetLayout>>> createSetLayouts(
     return layouts;
 }
 
+// One programmable stage of a pipeline.
+struct ShaderStage {
+    VkShaderStageFlagBits stage;
+    VkShaderModule module;
+    std::string entryPoint;
+};
+
+Result<UniqueHandle<VkPipelineLayout>> createPipelineLayout(
+    VulkanContext& context, const std::vector<UniqueHandle<VkDescriptorSetLayout>>& setLayouts) {
+    std::vector<VkDescriptorSetLayout> rawLayouts;
+    for (const auto& layout : setLayouts) rawLayouts.push_back(layout.get());
+    VkPipelineLayoutCreateInfo layoutInfo{};
+    layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+    layoutInfo.setLayoutCount = static_cast<uint32_t>(rawLayouts.size());
+    layoutInfo.pSetLayouts = rawLayouts.data();
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    if (Status ok = checkVk(vkCreatePipelineLayout(context.device(), &layoutInfo, nullptr, &layout),
+                            "vkCreatePipelineLayout");
+        !ok) {
+        return ok.error();
+    }
+    return UniqueHandle<VkPipelineLayout>(context.device(), layout);
+}
+
+// A triangle-list pipeline with dynamic viewport and scissor, one sample, |state|'s blend on
+// every colour attachment of |target|.
+Result<UniqueHandle<VkPipeline>> createGraphicsPipeline(
+    VulkanContext& context, std::span<const ShaderStage> shaderStages,
+    const VertexInputLayout& vertexInput, VkPipelineLayout layout, const VulkanRenderState& state,
+    const PipelineTarget& target, VkPipelineCache cache) {
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    for (const ShaderStage& stage : shaderStages) {
+        stages.push_back({VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, nullptr, 0,
+                          stage.stage, stage.module, stage.entryPoint.c_str(), nullptr});
+    }
+    VkPipelineVertexInputStateCreateInfo vertexInputInfo{};
+    vertexInputInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+    if (!vertexInput.attributes.empty()) {
+        vertexInputInfo.vertexBindingDescriptionCount = 1;
+        vertexInputInfo.pVertexBindingDescriptions = &vertexInput.binding;
+        vertexInputInfo.vertexAttributeDescriptionCount =
+            static_cast<uint32_t>(vertexInput.attributes.size());
+        vertexInputInfo.pVertexAttributeDescriptions = vertexInput.attributes.data();
+    }
+    VkPipelineInputAssemblyStateCreateInfo assembly{};
+    assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo viewport{};
+    viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+    viewport.viewportCount = 1;
+    viewport.scissorCount = 1;
+    VkPipelineMultisampleStateCreateInfo multisample{};
+    multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    std::vector<VkPipelineColorBlendAttachmentState> attachments(target.colorAttachments,
+                                                                 state.blend);
+    VkPipelineColorBlendStateCreateInfo blend{};
+    blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
+    blend.attachmentCount = static_cast<uint32_t>(attachments.size());
+    blend.pAttachments = attachments.data();
+    std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
+                                                   VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{};
+    dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+    dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
+    dynamic.pDynamicStates = dynamicStates.data();
+
+    VkGraphicsPipelineCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+    info.stageCount = static_cast<uint32_t>(stages.size());
+    info.pStages = stages.data();
+    info.pVertexInputState = &vertexInputInfo;
+    info.pInputAssemblyState = &assembly;
+    info.pViewportState = &viewport;
+    info.pRasterizationState = &state.rasterization;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &state.depthStencil;
+    info.pColorBlendState = &blend;
+    info.pDynamicState = &dynamic;
+    info.layout = layout;
+    info.renderPass = target.renderPass;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    if (Status ok = checkVk(
+            vkCreateGraphicsPipelines(context.device(), cache, 1, &info, nullptr, &pipeline),
+            "vkCreateGraphicsPipelines");
+        !ok) {
+        return ok.error();
+    }
+    return UniqueHandle<VkPipeline>(context.device(), pipeline);
+}
+
 }  // namespace
 
 Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const VariantView& variant,
@@ -78,94 +172,19 @@ Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const Va
     if (!setLayouts) return withContext(result.mDescription, setLayouts.error());
     result.mSetLayouts = std::move(*setLayouts);
 
-    std::vector<VkDescriptorSetLayout> rawLayouts;
-    for (const auto& layout : result.mSetLayouts) rawLayouts.push_back(layout.get());
-    VkPipelineLayoutCreateInfo layoutInfo{};
-    layoutInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
-    layoutInfo.setLayoutCount = static_cast<uint32_t>(rawLayouts.size());
-    layoutInfo.pSetLayouts = rawLayouts.data();
-    VkPipelineLayout layout = VK_NULL_HANDLE;
-    if (Status ok = checkVk(vkCreatePipelineLayout(context.device(), &layoutInfo, nullptr, &layout),
-                            "vkCreatePipelineLayout");
-        !ok) {
-        return withContext(result.mDescription, ok.error());
-    }
-    result.mLayout = UniqueHandle<VkPipelineLayout>(context.device(), layout);
-
-    std::string vertexEntry(vertex->entryPoint()), fragmentEntry(fragment->entryPoint());
-    std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-    stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-                 nullptr,
-                 0,
-                 VK_SHADER_STAGE_VERTEX_BIT,
-                 modules[0].get(),
-                 vertexEntry.c_str(),
-                 nullptr};
-    stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-                 nullptr,
-                 0,
-                 VK_SHADER_STAGE_FRAGMENT_BIT,
-                 modules[1].get(),
-                 fragmentEntry.c_str(),
-                 nullptr};
-
-    VkPipelineVertexInputStateCreateInfo vertexInputInfo{};
-
-    vertexInputInfo.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
-    if (!vertexInput->attributes.empty()) {
-        vertexInputInfo.vertexBindingDescriptionCount = 1;
-        vertexInputInfo.pVertexBindingDescriptions = &vertexInput->binding;
-        vertexInputInfo.vertexAttributeDescriptionCount =
-            static_cast<uint32_t>(vertexInput->attributes.size());
-        vertexInputInfo.pVertexAttributeDescriptions = vertexInput->attributes.data();
-    }
-    VkPipelineInputAssemblyStateCreateInfo assembly{};
-    assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-    VkPipelineViewportStateCreateInfo viewport{};
-    viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
-    viewport.viewportCount = 1;
-    viewport.scissorCount = 1;
-    VkPipelineMultisampleStateCreateInfo multisample{};
-    multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
-    multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-    VulkanRenderState state = toVulkan(resolvedState, target.hasStencil);
-    VkPipelineColorBlendStateCreateInfo blend{};
-    blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
-    std::vector<VkPipelineColorBlendAttachmentState> attachments(target.colorAttachments,
-                                                                 state.blend);
-    blend.attachmentCount = static_cast<uint32_t>(attachments.size());
-    blend.pAttachments = attachments.data();
-    std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
-                                                   VK_DYNAMIC_STATE_SCISSOR};
-    VkPipelineDynamicStateCreateInfo dynamic{};
-    dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-    dynamic.dynamicStateCount = static_cast<uint32_t>(dynamicStates.size());
-    dynamic.pDynamicStates = dynamicStates.data();
-
-    VkGraphicsPipelineCreateInfo info{};
-
-    info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
-    info.stageCount = static_cast<uint32_t>(stages.size());
-    info.pStages = stages.data();
-    info.pVertexInputState = &vertexInputInfo;
-    info.pInputAssemblyState = &assembly;
-    info.pViewportState = &viewport;
-    info.pRasterizationState = &state.rasterization;
-    info.pMultisampleState = &multisample;
-    info.pDepthStencilState = &state.depthStencil;
-    info.pColorBlendState = &blend;
-    info.pDynamicState = &dynamic;
-    info.layout = layout;
-    info.renderPass = target.renderPass;
-    VkPipeline pipeline = VK_NULL_HANDLE;
-    if (Status ok = checkVk(
-            vkCreateGraphicsPipelines(context.device(), cache, 1, &info, nullptr, &pipeline),
-            "vkCreateGraphicsPipelines");
-        !ok) {
-        return withContext(result.mDescription, ok.error());
-    }
-    result.mPipeline = UniqueHandle<VkPipeline>(context.device(), pipeline);
+    auto layout = createPipelineLayout(context, result.mSetLayouts);
+    if (!layout) return withContext(result.mDescription, layout.error());
+    result.mLayout = std::move(*layout);
+    const std::array<ShaderStage, 2> stages = {
+        ShaderStage{VK_SHADER_STAGE_VERTEX_BIT, modules[0].get(),
+                    std::string(vertex->entryPoint())},
+        ShaderStage{VK_SHADER_STAGE_FRAGMENT_BIT, modules[1].get(),
+                    std::string(fragment->entryPoint())}};
+    auto pipeline =
+        createGraphicsPipeline(context, stages, *vertexInput, result.mLayout.get(),
+                               toVulkan(resolvedState, target.hasStencil), target, cache);
+    if (!pipeline) return withContext(result.mDescription, pipeline.error());
+    result.mPipeline = std::move(*pipeline);
     context.nameObject(result.mPipeline, result.mDescription);
     return result;
 }

@@ -16,12 +16,13 @@
 #include <vector>
 
 #include "varc/reader/Pack.h"
-#include "varc/render/ForwardRenderer.h"
+#include "varc/render/Renderer.h"
 #include "varc/scene/Scene.h"
+#include "varc/vulkan/VulkanContext.h"
 
 namespace varc::runtime {
 
-class DeferredRenderer {
+class DeferredRenderer final : public Renderer {
 public:
     // |packs| must outlive the renderer. Objects' shaders need a "Deferred" pass; lights are drawn
     // with |lightShader| (pass 0 = light pass, pass 1 = LDR decode, as varc/DeferredLight).
@@ -31,15 +32,13 @@ public:
     // The frame: HDR = the light buffer (RgbaFloat), LDR = the decoded Rgba8 image whose alpha is
     // the clear alpha (the decode pass writes rgb only: its alpha, −log2(1) = 0, carries nothing).
     // Errors name the object or light: unknown shader, missing pass or variant, Vulkan failures.
-    Result<RenderedFrame> render(const scene::Scene& scene);
+    Result<RenderedFrame> render(const scene::Scene& scene) override;
 
-    // Creates every later pipeline through |cache| (e.g. PipelineCacheFile::handle()), which must
-    // outlive the renderer; VK_NULL_HANDLE (the default) uses none.
-    void usePipelineCache(VkPipelineCache cache);
+    void usePipelineCache(VkPipelineCache cache) override;
 
     DeferredRenderer(DeferredRenderer&&) noexcept;
     DeferredRenderer& operator=(DeferredRenderer&&) noexcept;
-    ~DeferredRenderer();
+    ~DeferredRenderer() override;
 
 private:
     struct State;

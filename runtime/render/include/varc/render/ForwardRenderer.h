@@ -14,19 +14,14 @@
 #include "varc/reader/Pack.h"
 #include "varc/render/BuiltinTextures.h"
 #include "varc/render/DrawResources.h"
+#include "varc/render/Renderer.h"
 #include "varc/render/VariantPipeline.h"
 #include "varc/scene/Scene.h"
 #include "varc/vulkan/Buffer.h"
 
 namespace varc::runtime {
 
-struct RenderedFrame {
-    Image image;                        // Rgba8 (LDR: RGBA8_UNORM) or RgbaFloat (HDR: RGBA16F)
-    std::vector<std::string> variants;  // VariantView::describe() of every draw, in draw order
-    uint32_t draws = 0;
-};
-
-class ForwardRenderer {
+class ForwardRenderer final : public Renderer {
 public:
     // |packs| must outlive the renderer; shaders are found by name in the first pack that has them.
     static Result<ForwardRenderer> create(VulkanContext& context, std::vector<const Pack*> packs);
@@ -34,15 +29,13 @@ public:
     // Errors name the object and shader: an unknown shader, a pass the shader lacks
     // (ForwardBase is required; ForwardAdd only when add lights exist), no variant for the light,
     // pipeline or Vulkan failures.
-    Result<RenderedFrame> render(const scene::Scene& scene);
+    Result<RenderedFrame> render(const scene::Scene& scene) override;
 
-    // Creates every later pipeline through |cache| (e.g. PipelineCacheFile::handle()), which must
-    // outlive the renderer; VK_NULL_HANDLE (the default) uses none.
-    void usePipelineCache(VkPipelineCache cache);
+    void usePipelineCache(VkPipelineCache cache) override;
 
     ForwardRenderer(ForwardRenderer&&) noexcept;
     ForwardRenderer& operator=(ForwardRenderer&&) noexcept;
-    ~ForwardRenderer();
+    ~ForwardRenderer() override;
 
 private:
     struct State;

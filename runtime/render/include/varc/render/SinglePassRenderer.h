@@ -9,8 +9,9 @@
 #include <vector>
 
 #include "varc/reader/Pack.h"
-#include "varc/render/ForwardRenderer.h"
+#include "varc/render/Renderer.h"
 #include "varc/scene/Scene.h"
+#include "varc/vulkan/VulkanContext.h"
 
 namespace varc::runtime {
 
@@ -22,7 +23,7 @@ struct SinglePassOptions {
     bool instancing = true;
 };
 
-class SinglePassRenderer {
+class SinglePassRenderer final : public Renderer {
 public:
     // |packs| must outlive the renderer; shaders are found by name in the first pack that has them.
     static Result<SinglePassRenderer> create(VulkanContext& context,
@@ -31,15 +32,15 @@ public:
     // Draws every object with its shader's first pass, in scene order (batches at the position
     // of their first object). Errors name the object and shader: an unknown shader, a shader
     // without passes, no variant, pipeline or Vulkan failures.
-    Result<RenderedFrame> render(const scene::Scene& scene, const SinglePassOptions& options = {});
+    Result<RenderedFrame> render(const scene::Scene& scene, const SinglePassOptions& options);
+    // render(scene, SinglePassOptions{}).
+    Result<RenderedFrame> render(const scene::Scene& scene) override;
 
-    // Creates every later pipeline through |cache| (e.g. PipelineCacheFile::handle()), which must
-    // outlive the renderer; VK_NULL_HANDLE (the default) uses none.
-    void usePipelineCache(VkPipelineCache cache);
+    void usePipelineCache(VkPipelineCache cache) override;
 
     SinglePassRenderer(SinglePassRenderer&&) noexcept;
     SinglePassRenderer& operator=(SinglePassRenderer&&) noexcept;
-    ~SinglePassRenderer();
+    ~SinglePassRenderer() override;
 
 private:
     struct State;
