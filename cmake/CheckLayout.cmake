@@ -4,6 +4,8 @@
 # Fails (with one line per problem) when
 #   - a library's sources include a header of a library it does not link directly
 #     (`#include "varc/render/..."` needs varc::render; `<vulkan/...>` needs Vulkan::Vulkan);
+#   - a public header (include/) includes a header of a PRIVATE link, or a PUBLIC link is
+#     needed by no public header (PUBLIC only where a header needs it);
 #   - docs/ARCHITECTURE.md's module table disagrees with the links CMake declares;
 #   - a library that must stay light reaches a forbidden dependency through any chain of links
 #     (the reader an engine links never reaches glslang or Vulkan; the CPU reference never
@@ -72,19 +74,36 @@ file(STRINGS "${MANIFEST}" lines)
 set(libraries "")
 foreach(line IN LISTS lines)
     string(REPLACE " " ";" fields "${line}")
-    list(POP_FRONT fields name folder)
+    list(GET fields 0 name)
+    list(GET fields 1 folder)
+    list(GET fields 2 public)
+    list(GET fields 3 private)
+    string(REPLACE "," ";" public "${public}")
+    string(REPLACE "," ";" private "${private}")
     list(APPEND libraries ${name})
     set(folder_${name} "${folder}")
     set(links_${name} "")
-    foreach(item IN LISTS fields)
-        doc_name("${item}" dn)
-        list(APPEND links_${name} "${dn}")
+    set(public_${name} "")
+    foreach(item IN LISTS public)
+        if(NOT item STREQUAL "-")
+            doc_name("${item}" dn)
+            list(APPEND links_${name} "${dn}")
+            list(APPEND public_${name} "${dn}")
+        endif()
+    endforeach()
+    foreach(item IN LISTS private)
+        if(NOT item STREQUAL "-")
+            doc_name("${item}" dn)
+            list(APPEND links_${name} "${dn}")
+        endif()
     endforeach()
     list(REMOVE_DUPLICATES links_${name})
 endforeach()
 
-# 1. Every include is covered by a direct link.
+# 1. Every include is covered by a direct link; public headers only by PUBLIC ones, and every
+#    PUBLIC link is needed by a public header.
 foreach(name IN LISTS libraries)
+    set(needed_publicly "")
     file(GLOB_RECURSE sources "${SOURCE_DIR}/${folder_${name}}/*.h"
                               "${SOURCE_DIR}/${folder_${name}}/*.cpp")
     foreach(source IN LISTS sources)
@@ -95,12 +114,24 @@ foreach(name IN LISTS libraries)
             if(provider STREQUAL "" OR provider STREQUAL name)
                 continue()
             endif()
+            file(RELATIVE_PATH rel "${SOURCE_DIR}" "${source}")
             if(NOT provider IN_LIST links_${name})
-                file(RELATIVE_PATH rel "${SOURCE_DIR}" "${source}")
                 list(APPEND problems
                     "${rel}: varc::${name} includes <${included}> but does not link ${provider}")
+            elseif(rel MATCHES "/include/")
+                list(APPEND needed_publicly "${provider}")
+                if(NOT provider IN_LIST public_${name})
+                    list(APPEND problems
+                        "${rel}: a public header of varc::${name} includes <${included}>, but ${provider} is a PRIVATE link")
+                endif()
             endif()
         endforeach()
+    endforeach()
+    foreach(link IN LISTS public_${name})
+        if(NOT link IN_LIST needed_publicly)
+            list(APPEND problems
+                "varc::${name} links ${link} PUBLIC, but none of its public headers includes it")
+        endif()
     endforeach()
 endforeach()
 
