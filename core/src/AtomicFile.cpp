@@ -2,10 +2,12 @@
 // Writes a file so that readers see either the old contents or the complete new contents.
 #include "varc/core/AtomicFile.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -13,35 +15,81 @@ namespace varc {
 
 namespace {
 
-Error ioError(const std::string& what, const std::string& path) {
-    return makeError(ErrorCode::IoError, what + " '" + path + "': " + std::strerror(errno));
+Error ioError(const std::string& what, const std::string& path, int error) {
+    return makeError(ErrorCode::IoError, what + " '" + path + "': " + std::strerror(error));
 }
 
-// A unique sibling of |path|: same directory, so the rename cannot cross file systems.
+// Writes all of |contents| to |fd|; false with errno set on failure.
+bool writeAll(int fd, std::string_view contents) {
+    while (!contents.empty()) {
+        ssize_t written = ::write(fd, contents.data(), contents.size());
+        if (written < 0 && errno == EINTR) continue;
+        if (written <= 0) return false;
+        contents.remove_prefix(static_cast<size_t>(written));
+    }
+    return true;
+}
+
+// A sibling of |path| no other writer uses: same directory, so the rename cannot cross file
+// systems; the process id and a per-process counter keep two processes, and two threads of one
+// process, from sharing it (O_EXCL makes sure).
 std::string temporaryPathFor(const std::string& path) {
-    return path + ".tmp." + std::to_string(::getpid());
+    static std::atomic<uint64_t> counter{0};
+    return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+}
+
+// Writes into an existing file that is not a regular file (a character device such as
+// /dev/null, a FIFO): varc never replaces or removes those, it only writes to them.
+Status writeInPlace(const std::string& path, std::string_view contents) {
+    int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd < 0) return ioError("cannot open", path, errno);
+    bool written = writeAll(fd, contents);
+    int error = errno;
+    if (::close(fd) != 0 && written) return ioError("cannot write", path, errno);
+    if (!written) return ioError("cannot write", path, error);
+    return Ok{};
+}
+
+// Writes |contents| to a new temporary file next to |path| and renames it over |path|.
+Status replaceRegularFile(const std::string& path, std::string_view contents) {
+    std::string temp = temporaryPathFor(path);
+    int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) return ioError("cannot create", temp, errno);
+    bool written = writeAll(fd, contents) && ::fsync(fd) == 0;
+    int error = errno;
+    if (::close(fd) != 0 && written) {
+        written = false;
+        error = errno;
+    }
+    if (!written) {
+        ::unlink(temp.c_str());
+        return ioError("cannot write", temp, error);
+    }
+    if (::rename(temp.c_str(), path.c_str()) != 0) {
+        error = errno;
+        ::unlink(temp.c_str());
+        return ioError("cannot rename to", path, error);
+    }
+    return Ok{};
 }
 
 }  // namespace
 
 Status writeFileAtomically(const std::string& path, std::string_view contents) {
-    std::string temp = temporaryPathFor(path);
-    std::FILE* file = std::fopen(temp.c_str(), "wb");
-    if (!file) return ioError("cannot create", temp);
-    bool written = std::fwrite(contents.data(), 1, contents.size(), file) == contents.size();
-    written = (std::fflush(file) == 0) && written;
-    written = (::fsync(::fileno(file)) == 0) && written;
-    if (std::fclose(file) != 0 || !written) {
-        Error error = ioError("cannot write", temp);
-        std::remove(temp.c_str());
-        return error;
+    // A symbolic link stays a link: the file it names is replaced.
+    std::error_code ignored;
+    std::string target = path;
+    if (std::filesystem::is_symlink(path, ignored)) {
+        std::filesystem::path resolved = std::filesystem::weakly_canonical(path, ignored);
+        if (!ignored) target = resolved.string();
     }
-    if (std::rename(temp.c_str(), path.c_str()) != 0) {
-        Error error = ioError("cannot rename to", path);
-        std::remove(temp.c_str());
-        return error;
+    struct stat info {};
+    if (::stat(target.c_str(), &info) == 0) {
+        if (S_ISDIR(info.st_mode))
+            return makeError(ErrorCode::IoError, "cannot write '" + path + "': it is a directory");
+        if (!S_ISREG(info.st_mode)) return writeInPlace(target, contents);
     }
-    return Ok{};
+    return replaceRegularFile(target, contents);
 }
 
 }  // namespace varc

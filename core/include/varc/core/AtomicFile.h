@@ -9,9 +9,13 @@
 
 namespace varc {
 
-// Writes |contents| to a temporary file next to |path|, flushes it, then renames it over
-// |path|. On failure the temporary is removed and |path| is untouched; the error names the
-// path and the system's reason.
+// Writes |contents| to a temporary file next to |path| (unique per process and call, created
+// exclusively), flushes it, then renames it over |path|. On failure the temporary is removed and
+// |path| is untouched; the error names the path and the system's reason.
+//
+// Only regular files are ever replaced: when |path| is a character device, FIFO or socket
+// (`-o /dev/null`), |contents| are written into it and it stays what it was; a symbolic link
+// stays a link and the file it names is replaced; a directory is an error.
 Status writeFileAtomically(const std::string& path, std::string_view contents);
 
 }  // namespace varc
