@@ -106,15 +106,25 @@ SceneOutcome renderScene(runtime::Renderer& renderer, const std::string& scenePa
             reference::compareImages(outcome.frame.image, expected->color, expected->classes,
                                      reference::toleranceFor(*scene));
         outcome.passed = outcome.comparison.passed;
+        // An image asked for and not written fails the scene: a run that exits 0 has written
+        // everything it was asked to.
         if (!referencePng.empty()) {
             Status written = runtime::writePng(
                 referencePng, expected->color.toRgba8(scene->camera.hdr ? runtime::Tonemap::Reinhard
                                                                         : runtime::Tonemap::Clamp));
-            if (!written) outcome.error = written.error().detail;
+            if (!written) {
+                outcome.ok = false;
+                outcome.error = written.error().detail;
+                return outcome;
+            }
         }
         if (!diffPng.empty() && outcome.comparison.diff.width() > 0) {
             Status written = runtime::writePng(diffPng, outcome.comparison.diff);
-            if (!written) outcome.error = written.error().detail;
+            if (!written) {
+                outcome.ok = false;
+                outcome.error = written.error().detail;
+                return outcome;
+            }
         }
     }
     outcome.seconds =
