@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // SceneParser: the scene JSON format of issue #5 §5 → Scene, with JSON-pointer error messages.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -55,13 +56,13 @@ public:
 
     bool readPositive(const json& value, const std::string& pointer, float& out) {
         if (!readFloat(value, pointer, out)) return false;
-        if (!(out > 0.0f)) return fail(pointer, "expected a number > 0, got " + value.dump());
+        if (!(out > 0.0f)) return fail(pointer, "expected a number > 0, got " + shortDump(value));
         return true;
     }
 
     bool readVec3(const json& value, const std::string& pointer, glm::vec3& out) {
         if (!value.is_array() || value.size() != 3) {
-            return fail(pointer, "expected an array of 3 numbers, got " + value.dump());
+            return fail(pointer, "expected an array of 3 numbers, got " + shortDump(value));
         }
         for (size_t i = 0; i < 3; ++i) {
             if (!readFloat(value[i], pointer + "/" + std::to_string(i), out[static_cast<int>(i)])) {
@@ -75,7 +76,7 @@ public:
     bool readColor(const json& value, const std::string& pointer, glm::vec4& out) {
         if (!value.is_array() || value.size() < 3 || value.size() > 4) {
             return fail(pointer,
-                        "expected a colour [r, g, b] or [r, g, b, a], got " + value.dump());
+                        "expected a colour [r, g, b] or [r, g, b, a], got " + shortDump(value));
         }
         out = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
         for (size_t i = 0; i < value.size(); ++i) {
@@ -88,7 +89,7 @@ public:
 
     bool readBool(const json& value, const std::string& pointer, bool& out) {
         if (!value.is_boolean())
-            return fail(pointer, "expected true or false, got " + value.dump());
+            return fail(pointer, "expected true or false, got " + shortDump(value));
         out = value.get<bool>();
         return true;
     }
@@ -103,12 +104,12 @@ public:
     bool readInt(const json& value, const std::string& pointer, int64_t lo, int64_t hi,
                  int64_t& out) {
         if (!value.is_number_integer()) {
-            return fail(pointer, "expected an integer, got " + value.dump());
+            return fail(pointer, "expected an integer, got " + shortDump(value));
         }
         out = value.get<int64_t>();
         if (out < lo || out > hi) {
             return fail(pointer, "expected an integer in [" + std::to_string(lo) + ", " +
-                                     std::to_string(hi) + "], got " + value.dump());
+                                     std::to_string(hi) + "], got " + shortDump(value));
         }
         return true;
     }
@@ -121,7 +122,7 @@ public:
         for (const auto& option : options)
             list += (list.empty() ? "" : ", ") + std::string(option.first);
         if (!value.is_string()) {
-            return fail(pointer, "expected one of " + list + ", got " + value.dump());
+            return fail(pointer, "expected one of " + list + ", got " + shortDump(value));
         }
         const std::string text = value.get<std::string>();
         for (const auto& option : options) {
@@ -134,6 +135,12 @@ public:
     }
 
     static std::string typeName(const json& value) { return value.type_name(); }
+
+    // |value| as JSON for a message, cut to 60 characters ("..." marks the cut).
+    static std::string shortDump(const json& value) {
+        std::string text = value.dump();
+        return text.size() <= 60 ? text : text.substr(0, 57) + "...";
+    }
 
 private:
     std::string mPath;
@@ -151,6 +158,13 @@ bool readTransform(Reader& r, const json& value, const std::string& pointer, Tra
     }
     if (value.contains("scale") && !r.readVec3(value["scale"], pointer + "/scale", out.scale)) {
         return false;
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!(std::abs(out.scale[axis]) >= kMinScale)) {
+            return r.fail(pointer + "/scale/" + std::to_string(axis),
+                          "expected a scale of at least 1e-06 in magnitude (0 flattens the "
+                          "object and makes its normals undefined)");
+        }
     }
     return true;
 }
@@ -176,12 +190,17 @@ bool readCamera(Reader& r, const json& value, const std::string& p, Camera& c) {
     if (c.farPlane <= c.nearPlane) return r.fail(p + "/far", "expected far > near");
     int64_t size = 0;
     if (value.contains("width")) {
-        if (!r.readInt(value["width"], p + "/width", 1, 16384, size)) return false;
+        if (!r.readInt(value["width"], p + "/width", 1, kMaxImageSide, size)) return false;
         c.width = static_cast<uint32_t>(size);
     }
     if (value.contains("height")) {
-        if (!r.readInt(value["height"], p + "/height", 1, 16384, size)) return false;
+        if (!r.readInt(value["height"], p + "/height", 1, kMaxImageSide, size)) return false;
         c.height = static_cast<uint32_t>(size);
+    }
+    if (uint64_t{c.width} * c.height > kMaxImagePixels) {
+        return r.fail(p, "the image has " + std::to_string(uint64_t{c.width} * c.height) +
+                             " pixels; at most " + std::to_string(kMaxImagePixels) +
+                             " (4096 x 4096) are allowed");
     }
     if (value.contains("hdr") && !r.readBool(value["hdr"], p + "/hdr", c.hdr)) return false;
     if (value.contains("path") && !r.readEnum<RenderPath>(value["path"], p + "/path",
@@ -228,8 +247,8 @@ bool readProperty(Reader& r, const json& value, const std::string& p, PropertyVa
         out = v;
         return true;
     }
-    return r.fail(
-        p, "expected a number, an array of 1 to 4 numbers or a texture name, got " + value.dump());
+    return r.fail(p, "expected a number, an array of 1 to 4 numbers or a texture name, got " +
+                         Reader::shortDump(value));
 }
 
 bool readMaterial(Reader& r, const json& value, const std::string& p, Material& m) {
@@ -339,9 +358,14 @@ bool readScene(Reader& r, const json& root, Scene& scene) {
             scene.pixelLightCount = static_cast<int>(count);
         }
     }
-    for (const char* key : {"objects", "lights"}) {
-        if (root.contains(key) && !root[key].is_array()) {
-            return r.fail(std::string("/") + key, "expected an array");
+    for (auto [key, limit] :
+         {std::pair{"objects", kMaxSceneObjects}, std::pair{"lights", kMaxSceneLights}}) {
+        if (!root.contains(key)) continue;
+        if (!root[key].is_array()) return r.fail(std::string("/") + key, "expected an array");
+        if (root[key].size() > limit) {
+            return r.fail(std::string("/") + key, std::to_string(root[key].size()) +
+                                                      " entries; at most " + std::to_string(limit) +
+                                                      " are allowed");
         }
     }
     if (root.contains("objects")) {
@@ -362,14 +386,51 @@ bool readScene(Reader& r, const json& root, Scene& scene) {
     return true;
 }
 
+// The deepest [ / { nesting of |text| outside strings. JSON values are printed recursively in
+// error messages, so depth is bounded before anything is parsed.
+int nestingDepth(std::string_view text) {
+    int depth = 0, deepest = 0;
+    bool inString = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (inString) {
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                inString = false;
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            deepest = std::max(deepest, ++depth);
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return deepest;
+}
+
 }  // namespace
 
 Result<Scene> parseScene(std::string_view text, const std::string& path) {
+    if (text.size() > kMaxSceneFileBytes) {
+        return makeError(ErrorCode::InvalidInput,
+                         path + ": /: the file has " + std::to_string(text.size()) +
+                             " bytes; at most " + std::to_string(kMaxSceneFileBytes) +
+                             " are allowed");
+    }
+    if (int depth = nestingDepth(text); depth > kMaxSceneNesting) {
+        return makeError(ErrorCode::InvalidInput,
+                         path + ": /: nested " + std::to_string(depth) + " levels deep; at most " +
+                             std::to_string(kMaxSceneNesting) + " are allowed");
+    }
     json root;
     try {
         root = json::parse(text.begin(), text.end());
     } catch (const json::exception& e) {
-        return makeError(ErrorCode::InvalidInput, path + ": /: invalid JSON: " + e.what());
+        // The parser quotes the token it stopped at, which can be the rest of the file.
+        std::string reason = e.what();
+        if (reason.size() > 200) reason = reason.substr(0, 197) + "...";
+        return makeError(ErrorCode::InvalidInput, path + ": /: invalid JSON: " + reason);
     }
     Reader reader(path);
     Scene scene;

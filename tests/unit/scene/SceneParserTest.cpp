@@ -161,5 +161,85 @@ TEST(SceneParser, ShippedScenesParse) {
     }
 }
 
+// The limits of docs/SECURITY.md: each accepted at the limit and refused one past it.
+std::string sceneWithCamera(uint32_t width, uint32_t height) {
+    return R"({"camera": {"width": )" + std::to_string(width) + R"(, "height": )" +
+           std::to_string(height) + "}}";
+}
+
+TEST(SceneParserLimits, ImageSizeAtTheLimitAndPast) {
+    EXPECT_TRUE(parseScene(sceneWithCamera(4096, 4096), "a.json").ok());
+    EXPECT_TRUE(parseScene(sceneWithCamera(kMaxImageSide, 1), "a.json").ok());
+    EXPECT_NE(errorOf(sceneWithCamera(4096, 4097)).find("at most 16777216"), std::string::npos);
+    EXPECT_NE(errorOf(sceneWithCamera(kMaxImageSide + 1, 1)).find("/camera/width"),
+              std::string::npos);
+}
+
+std::string sceneWithEntries(const char* key, const char* entry, size_t count) {
+    std::string text = std::string("{\"") + key + "\": [";
+    for (size_t i = 0; i < count; ++i) text += (i ? "," : "") + std::string(entry);
+    return text + "]}";
+}
+
+TEST(SceneParserLimits, ObjectAndLightCountsAtTheLimitAndPast) {
+    const char* object = R"({"mesh": "cube"})";
+    const char* light = R"({"type": "point"})";
+    EXPECT_TRUE(parseScene(sceneWithEntries("objects", object, kMaxSceneObjects), "a.json").ok());
+    EXPECT_NE(errorOf(sceneWithEntries("objects", object, kMaxSceneObjects + 1))
+                  .find("/objects: 4097 entries; at most 4096"),
+              std::string::npos);
+    EXPECT_TRUE(parseScene(sceneWithEntries("lights", light, kMaxSceneLights), "a.json").ok());
+    EXPECT_NE(errorOf(sceneWithEntries("lights", light, kMaxSceneLights + 1))
+                  .find("/lights: 1025 entries; at most 1024"),
+              std::string::npos);
+}
+
+TEST(SceneParserLimits, NestingAtTheLimitAndPast) {
+    auto nested = [](int depth) {  // {"camera": [[...]]}: |depth| levels in all
+        return "{\"camera\": " + std::string(static_cast<size_t>(depth - 1), '[') +
+               std::string(static_cast<size_t>(depth - 1), ']') + "}";
+    };
+    std::string atLimit = errorOf(nested(kMaxSceneNesting));
+    EXPECT_EQ(atLimit.find("nested"), std::string::npos) << atLimit;  // refused for its shape
+    EXPECT_NE(atLimit.find("/camera: expected an object"), std::string::npos) << atLimit;
+    EXPECT_NE(errorOf(nested(kMaxSceneNesting + 1)).find("nested 33 levels deep; at most 32"),
+              std::string::npos);
+    // Brackets inside strings do not count.
+    EXPECT_TRUE(
+        parseScene(
+            R"({"objects": [{"mesh": "cube", "name": "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[["}]})",
+            "a.json")
+            .ok());
+}
+
+TEST(SceneParserLimits, FileSizeAtTheLimitAndPast) {
+    std::string padded = "{}" + std::string(kMaxSceneFileBytes - 2, ' ');
+    EXPECT_TRUE(parseScene(padded, "a.json").ok());
+    padded += ' ';
+    EXPECT_NE(errorOf(padded).find("bytes; at most 16777216"), std::string::npos);
+}
+
+TEST(SceneParserLimits, ZeroScaleIsRefusedTinyAndMirroredScalesAreNot) {
+    auto withScale = [](const char* scale) {
+        return std::string(R"({"objects": [{"mesh": "cube", "scale": )") + scale + "}]}";
+    };
+    EXPECT_NE(errorOf(withScale("[1, 0, 1]")).find("/objects/0/scale/1: expected a scale"),
+              std::string::npos);
+    EXPECT_NE(errorOf(withScale("[1, 1, 1e-7]")).find("/objects/0/scale/2"), std::string::npos);
+    EXPECT_TRUE(parseScene(withScale("[1e-6, 1, 1]"), "a.json").ok());
+    EXPECT_TRUE(parseScene(withScale("[-1, 1, 1]"), "a.json").ok());
+}
+
+TEST(SceneParserLimits, LongValuesAreCutInMessages) {
+    std::string wrongType =
+        errorOf(R"({"camera": {"position": ")" + std::string(5000, 'x') + "\"}}");
+    EXPECT_LT(wrongType.size(), 300u) << wrongType;
+    EXPECT_NE(wrongType.find("expected an array of 3 numbers"), std::string::npos);
+    EXPECT_NE(wrongType.find("..."), std::string::npos);
+    std::string syntax = errorOf(R"({"camera": {"position": [)" + std::string(5000, '1') + "]}}");
+    EXPECT_LT(syntax.size(), 300u) << syntax;
+    EXPECT_NE(syntax.find("invalid JSON"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace varc::scene

@@ -86,6 +86,16 @@ struct Scene {
     std::vector<Light> lights;
 };
 
+// What a scene may hold (docs/SECURITY.md): scene files come from anywhere, and each of these
+// bounds the memory or time a render and its CPU reference can take.
+inline constexpr size_t kMaxSceneFileBytes = 16u << 20;     // 16 MiB of JSON
+inline constexpr int kMaxSceneNesting = 32;                 // [ and { levels
+inline constexpr uint32_t kMaxImageSide = 16384;            // camera width, height
+inline constexpr uint64_t kMaxImagePixels = 4096u * 4096u;  // camera width x height
+inline constexpr size_t kMaxSceneObjects = 4096;
+inline constexpr size_t kMaxSceneLights = 1024;
+inline constexpr float kMinScale = 1e-6f;  // |scale| per axis: 0 makes normals NaN
+
 // Parses the scene JSON format of issue #5 §5. Every field is optional (defaults as in the
 // structs above) except each object's "mesh" and each light's "type"; unknown keys are errors.
 // Besides the issue's keys: camera "background" [r,g,b(,a)], light "cookie_size", object
@@ -94,7 +104,7 @@ struct Scene {
 // against the scene file's folder). Every error message starts
 // with "<path>: " and names the JSON pointer, e.g.
 //   "scenes/a.json: /lights/2/type: expected one of directional, point, spot, got 'pointy'".
-// Never throws; errors are ErrorCode::InvalidInput.
+// Limits above are errors that name the limit. Never throws; errors are ErrorCode::InvalidInput.
 // Example: parseScene(R"({"objects":[{"mesh":"sphere"}]})", "a.json") -> one default sphere.
 Result<Scene> parseScene(std::string_view json, const std::string& path);
 
