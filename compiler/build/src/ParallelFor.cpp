@@ -4,10 +4,35 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
+#include <mutex>
 #include <thread>
 #include <vector>
 
 namespace varc::compiler {
+
+namespace {
+
+// The first exception any worker threw; once set, workers claim no more jobs.
+class FirstFailure {
+public:
+    void record(std::exception_ptr failure) {
+        std::lock_guard<std::mutex> lock(mMutex);
+        if (!mFailure) mFailure = std::move(failure);
+        mFailed.store(true);
+    }
+    bool failed() const { return mFailed.load(); }
+    void rethrow() const {
+        if (mFailure) std::rethrow_exception(mFailure);
+    }
+
+private:
+    std::mutex mMutex;
+    std::exception_ptr mFailure;
+    std::atomic<bool> mFailed{false};
+};
+
+}  // namespace
 
 void parallelFor(size_t count, unsigned threads, const std::function<void(size_t)>& job,
                  bool firstAlone) {
@@ -17,8 +42,18 @@ void parallelFor(size_t count, unsigned threads, const std::function<void(size_t
         start = 1;
     }
     std::atomic<size_t> next{start};
+    FirstFailure failure;
+    // A job that throws must not end the process (an exception leaving a std::thread calls
+    // std::terminate): it is caught, the pool stops claiming jobs, and it is rethrown here once
+    // every thread has joined.
     auto worker = [&] {
-        for (size_t i = next.fetch_add(1); i < count; i = next.fetch_add(1)) job(i);
+        try {
+            for (size_t i = next.fetch_add(1); i < count && !failure.failed();
+                 i = next.fetch_add(1))
+                job(i);
+        } catch (...) {
+            failure.record(std::current_exception());
+        }
     };
     size_t helpers = std::min<size_t>(threads > 0 ? threads - 1 : 0, count - std::min(count, start));
     std::vector<std::thread> pool;
@@ -26,6 +61,7 @@ void parallelFor(size_t count, unsigned threads, const std::function<void(size_t
     for (size_t i = 0; i < helpers; ++i) pool.emplace_back(worker);
     worker();
     for (std::thread& thread : pool) thread.join();
+    failure.rethrow();
 }
 
 unsigned defaultThreadCount() { return std::max(1u, std::thread::hardware_concurrency()); }

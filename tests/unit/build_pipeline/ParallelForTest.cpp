@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <stdexcept>
 #include <vector>
 
 #include "varc/build/ParallelFor.h"
@@ -39,6 +40,24 @@ TEST(ParallelFor, HandlesZeroItems) {
     parallelFor(
         0, 4, [&](size_t) { ++calls; }, true);
     EXPECT_EQ(calls, 0);
+}
+
+// A throwing job (glslang can throw; std::bad_alloc can happen anywhere) reaches the caller as
+// an exception, whichever thread ran it, and later jobs are not started.
+TEST(ParallelFor, AJobThatThrowsReachesTheCallerAndStopsTheRest) {
+    for (unsigned threads : {1u, 4u}) {
+        std::atomic<size_t> ran{0};
+        try {
+            parallelFor(10000, threads, [&](size_t i) {
+                ran.fetch_add(1);
+                if (i == 3) throw std::runtime_error("job 3 failed");
+            });
+            ADD_FAILURE() << "no exception with " << threads << " threads";
+        } catch (const std::runtime_error& e) {
+            EXPECT_STREQ(e.what(), "job 3 failed");
+        }
+        EXPECT_LT(ran.load(), 10000u) << threads << " threads";
+    }
 }
 
 }  // namespace

@@ -10,7 +10,9 @@ namespace varc::compiler {
 // Calls |job(i)| once for every i in [0, count), using up to |threads| threads (the caller's
 // thread included). Jobs are claimed in index order; each job writes only its own result slot,
 // so output order never depends on scheduling. With |firstAlone|, job 0 runs to completion
-// before any other starts (glslang builds shared symbol tables on its first use).
+// before any other starts (glslang builds shared symbol tables on its first use). When a job
+// throws, no further jobs start, every thread finishes its current job, and the first exception
+// is rethrown on the caller's thread (never std::terminate).
 void parallelFor(size_t count, unsigned threads, const std::function<void(size_t)>& job,
                  bool firstAlone = false);
 
