@@ -8,10 +8,9 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "varc/core/AtomicFile.h"
+#include "varc/core/FileRead.h"
 
 namespace varc::compiler {
 
@@ -73,12 +72,12 @@ ProgramCacheKey hash128(std::string_view bytes) {
     return {hash.low64, hash.high64};
 }
 
-std::optional<std::string> readFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) return std::nullopt;
-    return bytes;
+// A file's bytes, or nullopt when it cannot be read (a missing, damaged or unreadable entry is
+// a miss, never an error).
+std::optional<std::string> readBytes(const std::string& path) {
+    Result<std::string> bytes = readFile(path);
+    if (!bytes) return std::nullopt;
+    return std::move(*bytes);
 }
 
 // The GNU build ID the linker stamped into the main executable (a hash of its contents), or "".
@@ -117,7 +116,7 @@ std::string buildId() {
 ProgramCacheKey executableHash() {
     std::string id = buildId();
     if (!id.empty()) return hash128("build-id:" + id);
-    std::optional<std::string> bytes = readFile("/proc/self/exe");
+    std::optional<std::string> bytes = readBytes("/proc/self/exe");
     return hash128(bytes ? *bytes : std::string("varc " VARC_VERSION));
 }
 
@@ -173,7 +172,7 @@ std::string ProgramCache::pathOf(const ProgramCacheKey& key, std::string_view ex
 std::optional<std::string> ProgramCache::loadPayload(const ProgramCacheKey& key,
                                                      std::string_view magic,
                                                      std::string_view extension) const {
-    std::optional<std::string> file = readFile(pathOf(key, extension));
+    std::optional<std::string> file = readBytes(pathOf(key, extension));
     if (!file || file->size() < kEntryOverhead) return std::nullopt;
     std::string_view bytes(*file);
     std::string_view body = bytes.substr(0, bytes.size() - 8);

@@ -6,11 +6,10 @@
 
 #include <csetjmp>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <vector>
 
 #include "varc/core/AtomicFile.h"
+#include "varc/core/FileRead.h"
 
 namespace varc::runtime {
 
@@ -124,11 +123,9 @@ Result<Image> decodePng(std::string_view bytes) {
 }
 
 Result<Image> readPng(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) return makeError(ErrorCode::IoError, "cannot open '" + path + "'");
-    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    if (file.bad()) return makeError(ErrorCode::IoError, "cannot read '" + path + "'");
-    Result<Image> image = decodePng(bytes);
+    Result<std::string> bytes = readFile(path);
+    if (!bytes) return bytes.error();
+    Result<Image> image = decodePng(*bytes);
     if (!image) return makeError(image.error().code, path + ": " + image.error().detail);
     return image;
 }

@@ -2,10 +2,9 @@
 #include "varc/render/PipelineCacheFile.h"
 
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
 #include "varc/core/AtomicFile.h"
+#include "varc/core/FileRead.h"
 #include "varc/vulkan/CheckVk.h"
 
 namespace varc::runtime {
@@ -44,11 +43,10 @@ Result<PipelineCacheFile> PipelineCacheFile::open(const VulkanContext& context, 
     file.mContext = &context;
     file.mPath = std::move(path);
     std::vector<std::byte> data;
-    if (std::ifstream in(file.mPath, std::ios::binary); in) {
-        std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
-                                std::istreambuf_iterator<char>());
-        data.resize(bytes.size());
-        std::memcpy(data.data(), bytes.data(), bytes.size());
+    // A missing or unreadable file starts an empty cache (save() reports what it cannot write).
+    if (Result<std::string> bytes = readFile(file.mPath); bytes) {
+        data.resize(bytes->size());
+        std::memcpy(data.data(), bytes->data(), bytes->size());
         file.mRejected = pipelineCacheMismatch(context.properties(), data);
         if (!file.mRejected.empty()) data.clear();
     }

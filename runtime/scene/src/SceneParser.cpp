@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <utility>
 
+#include "varc/core/FileRead.h"
 #include "varc/scene/Scene.h"
 
 namespace varc::scene {
@@ -439,12 +438,13 @@ Result<Scene> parseScene(std::string_view text, const std::string& path) {
 }
 
 Result<Scene> loadScene(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return makeError(ErrorCode::IoError, path + ": cannot read the scene file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return makeError(ErrorCode::IoError, path + ": cannot read the scene file");
-    return parseScene(text.str(), path);
+    // One byte past the limit is read, so parseScene names the limit.
+    Result<std::string> text = readFile(path, kMaxSceneFileBytes + 1);
+    if (!text) {
+        return makeError(ErrorCode::IoError,
+                         path + ": cannot read the scene file (" + text.error().detail + ")");
+    }
+    return parseScene(*text, path);
 }
 
 bool isTextureFile(std::string_view name) {

@@ -3,18 +3,16 @@
 #include "varc/vulkan/ShaderModule.h"
 
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
+#include "varc/core/FileRead.h"
 #include "varc/vulkan/CheckVk.h"
 
 namespace varc::runtime {
 
 Result<std::vector<uint32_t>> readSpirvFile(const std::string& path) {
-    std::ifstream file(path, std::ios::binary);
-    if (!file) return makeError(ErrorCode::IoError, "cannot open '" + path + "'");
-    std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-    if (file.bad()) return makeError(ErrorCode::IoError, "cannot read '" + path + "'");
+    Result<std::string> read = readFile(path);
+    if (!read) return read.error();
+    const std::string& bytes = *read;
     if (bytes.empty() || bytes.size() % 4 != 0) {
         return makeError(ErrorCode::InvalidInput,
                          "'" + path + "' is not SPIR-V: " + std::to_string(bytes.size()) +
