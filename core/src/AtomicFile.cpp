@@ -6,7 +6,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
 #include <atomic>
+#include <csignal>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -28,6 +30,41 @@ bool writeAll(int fd, std::string_view contents) {
         contents.remove_prefix(static_cast<size_t>(written));
     }
     return true;
+}
+
+// The temporaries of writes in progress, for the termination-signal handler. Lock-free slots of
+// plain pointers, so the handler can read them (async-signal-safe); a write that finds every
+// slot taken simply goes untracked.
+constexpr size_t kTrackedTemporaries = 256;
+std::array<std::atomic<const char*>, kTrackedTemporaries> gTemporaries{};
+
+class TrackedTemporary {
+public:
+    explicit TrackedTemporary(const std::string& path) {
+        for (size_t i = 0; i < kTrackedTemporaries; ++i) {
+            const char* expected = nullptr;
+            if (gTemporaries[i].compare_exchange_strong(expected, path.c_str())) {
+                mSlot = i;
+                return;
+            }
+        }
+    }
+    ~TrackedTemporary() {
+        if (mSlot < kTrackedTemporaries) gTemporaries[mSlot].store(nullptr);
+    }
+    TrackedTemporary(const TrackedTemporary&) = delete;
+    TrackedTemporary& operator=(const TrackedTemporary&) = delete;
+
+private:
+    size_t mSlot = kTrackedTemporaries;
+};
+
+void removeTemporariesAndReraise(int signal) {
+    for (std::atomic<const char*>& slot : gTemporaries) {
+        if (const char* path = slot.load()) ::unlink(path);
+    }
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
 }
 
 // A sibling of |path| no other writer uses: same directory, so the rename cannot cross file
@@ -52,7 +89,8 @@ Status writeInPlace(const std::string& path, std::string_view contents) {
 
 // Writes |contents| to a new temporary file next to |path| and renames it over |path|.
 Status replaceRegularFile(const std::string& path, std::string_view contents) {
-    std::string temp = temporaryPathFor(path);
+    const std::string temp = temporaryPathFor(path);
+    TrackedTemporary tracked(temp);
     int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) return ioError("cannot create", temp, errno);
     bool written = writeAll(fd, contents) && ::fsync(fd) == 0;
@@ -74,6 +112,13 @@ Status replaceRegularFile(const std::string& path, std::string_view contents) {
 }
 
 }  // namespace
+
+void removeTemporariesOnTerminationSignals() {
+    struct sigaction action {};
+    action.sa_handler = removeTemporariesAndReraise;
+    sigemptyset(&action.sa_mask);
+    for (int signal : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signal, &action, nullptr);
+}
 
 Status writeFileAtomically(const std::string& path, std::string_view contents) {
     // A symbolic link stays a link: the file it names is replaced.

@@ -4,8 +4,10 @@
 #include <new>
 
 #include "varc/cli/Cli.h"
+#include "varc/core/AtomicFile.h"
 
 int main(int argc, char** argv) {
+    varc::removeTemporariesOnTerminationSignals();
     try {
         return varc::cli::runCli(argc, argv, std::cout, std::cerr);
     } catch (const std::bad_alloc&) {

@@ -18,4 +18,9 @@ namespace varc {
 // stays a link and the file it names is replaced; a directory is an error.
 Status writeFileAtomically(const std::string& path, std::string_view contents);
 
+// For programs (the varc CLI; libraries never install handlers): SIGINT, SIGTERM and SIGHUP
+// first remove the temporaries of writes in progress, then end the process with that signal as
+// before. So an interrupted `varc build` leaves neither a partial output nor a stray temporary.
+void removeTemporariesOnTerminationSignals();
+
 }  // namespace varc
