@@ -153,6 +153,11 @@ void Expansion::handleInclude(const Frame& frame, const LogicalLine& line) {
                (onStack(*id) || mSplices[*id].unconditional)) {
         // Already in the output where every variant sees it: the #include becomes a no-op.
         if (directive.withPragmas && frame.collectPragmas) collectPragmasOnce(*id, *scan);
+    } else if (mStack.size() >= kMaxIncludeDepth) {
+        report(Severity::Error, where,
+               "#include nested too deeply: " + asWritten(directive) + " would be file " +
+                   std::to_string(mStack.size() + 1) + " of one chain; at most " +
+                   std::to_string(kMaxIncludeDepth) + " are allowed");
     } else {
         splice(frame, line, *id, *scan);
         return;

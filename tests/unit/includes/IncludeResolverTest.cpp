@@ -328,5 +328,35 @@ TEST(IncludeResolver, ExpandsTheMyLightingFixtureFromDisk) {
     fs::remove_all(builtin);
 }
 
+// A chain of distinct files (no cycle) is refused past kMaxIncludeDepth files open at once, at
+// the #include that goes one too far; a chain exactly at the limit expands.
+TEST(IncludeResolverLimits, IncludeDepthAtTheLimitAndPast) {
+    auto chain = [](size_t files) {
+        Harness h;
+        // f0.shader includes f1.h, which includes f2.h, ... up to f<files-1>.h.
+        h.file("f0.shader", "#include \"f1.h\"\n");
+        for (size_t i = 1; i < files; ++i) {
+            std::string next = i + 1 < files ? "#include \"f" + std::to_string(i + 1) + ".h\"\n"
+                                             : std::string("last\n");
+            h.file("f" + std::to_string(i) + ".h", next);
+        }
+        return h;
+    };
+    Harness atLimit = chain(kMaxIncludeDepth);
+    auto expanded = atLimit.expandFile("f0.shader");
+    ASSERT_TRUE(expanded.has_value());
+    EXPECT_TRUE(atLimit.diagnostics.diagnostics().empty());
+    EXPECT_NE(expanded->text.find("last"), std::string::npos);
+
+    Harness past = chain(kMaxIncludeDepth + 1);
+    EXPECT_FALSE(past.expandFile("f0.shader").has_value());
+    ASSERT_EQ(past.diagnostics.diagnostics().size(), 1u);
+    const Diagnostic& error = past.diagnostics.diagnostics().front();
+    EXPECT_NE(error.message.find("#include nested too deeply: \"f64.h\" would be file 65"),
+              std::string::npos)
+        << error.message;
+    EXPECT_EQ(error.location.file, past.id("f63.h"));
+}
+
 }  // namespace
 }  // namespace varc::includes
