@@ -67,7 +67,9 @@ LogicalLine LineScanner::scanLine() {
     while (mPos < mText.size() && mText[mPos] != '\n') {
         if (size_t length = continuationLength(mPos)) {
             mPos += length;
-            ++mLine;
+            // A backslash-newline that ends the text joins no further line (found by the
+            // include fuzzer: counting one made lastLine point past the last line).
+            if (mPos < mText.size()) ++mLine;
             continue;
         }
         step(line);

@@ -20,6 +20,19 @@ TEST(LineScanner, JoinsContinuationsIntoOneLogicalLine) {
     EXPECT_EQ(file.physicalLine(3), " 1");
 }
 
+// Found by the include fuzzer: a backslash-newline that ends the file joins nothing, so every
+// logical line stays within the physical lines (physicalLine() checks it).
+TEST(LineScanner, AContinuationAtTheEndOfTheTextJoinsNoFurtherLine) {
+    for (const char* text : {"#define X \\\n", "a\nb \\\r\n", "\\\n"}) {
+        ScannedFile file = LineScanner::scan(text);
+        ASSERT_FALSE(file.lines.empty()) << text;
+        for (const LogicalLine& line : file.lines) {
+            EXPECT_LT(line.lastLine, file.lineStarts.size()) << text;
+            (void)file.physicalLine(line.lastLine);
+        }
+    }
+}
+
 TEST(LineScanner, TellsDirectivesFromCommentsAndCode) {
     ScannedFile file = LineScanner::scan(
         "/* #include \"a\" */\n"           // 0: comment only
