@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "driver/ProgramCompiler.h"
 
+#include <cctype>
 #include <ctime>
 #include <optional>
 #include <string>
@@ -9,9 +10,28 @@
 #include "varc/build/GlslangLogParser.h"
 #include "varc/build/SpirvOptimizer.h"
 #include "varc/build/SpirvReflection.h"
+#include "varc/core/JoinWords.h"
+#include "varc/frontend/EntryPointCheck.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::compiler::detail {
+
+namespace {
+
+// The whitespace-separated words of |text| ("float4\n  x" -> {"float4", "x"}).
+std::vector<std::string> splitWords(std::string_view text) {
+    std::vector<std::string> words;
+    size_t i = 0;
+    while (i < text.size()) {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+        size_t begin = i;
+        while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+        if (i > begin) words.emplace_back(text.substr(begin, i - begin));
+    }
+    return words;
+}
+
+}  // namespace
 
 CompiledSource compileStageProgram(const StageProgram& program, const BuildOptions& options,
                                    const ProgramCache* cache, const includes::SourceMap& sourceMap,
@@ -36,6 +56,20 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
                 result.reflection = std::move(*reflection);
                 return result;
             }
+        }
+    }
+    if (program.language != shaderlab::ProgramLanguage::Glsl) {
+        // glslang's HLSL front end crashes on an unnamed entry-point parameter
+        // (KhronosGroup/glslang#4389); report it the way glslang reports errors instead.
+        if (auto unnamed = findUnnamedEntryParameter(program.text, program.entryPoint)) {
+            std::string written = joinWords(splitWords(unnamed->text));
+            result.diagnostics = parseGlslangLog(
+                "ERROR: " + std::to_string(unnamed->file) + ":" + std::to_string(unnamed->line) +
+                    ": '" + std::string(program.entryPoint) + "' : entry-point parameter " +
+                    std::to_string(unnamed->index) + " ('" + written +
+                    "') has no name; give it one (glslang cannot compile it)\n",
+                sourceMap);
+            return result;
         }
     }
     CompileOutput compiled =
