@@ -8,10 +8,20 @@ function(varc_target_defaults tgt)
     if(VARC_WERROR)
         target_compile_options(${tgt} PRIVATE -Werror)
     endif()
+    if(VARC_BUILD_FUZZERS)
+        # Coverage feedback for libFuzzer in every library a fuzz target reaches.
+        target_compile_options(${tgt} PRIVATE -fsanitize=fuzzer-no-link)
+    endif()
     if(VARC_SANITIZE)
         string(REPLACE ";" "," _san "${VARC_SANITIZE}")
         target_compile_options(${tgt} PRIVATE -fsanitize=${_san} -fno-omit-frame-pointer)
         target_link_options(${tgt} PRIVATE -fsanitize=${_san})
+        if("undefined" IN_LIST VARC_SANITIZE)
+            # UBSan's vptr check needs the type_info of every polymorphic class it sees; Debian
+            # builds glslang without RTTI, so the check cannot link against glslang::TShader.
+            target_compile_options(${tgt} PRIVATE -fno-sanitize=vptr)
+            target_link_options(${tgt} PRIVATE -fno-sanitize=vptr)
+        endif()
     endif()
 endfunction()
 

@@ -16,12 +16,12 @@ namespace varc::includes {
 
 class ScanCache;
 
-// Where `#include "name"` is searched, in order, after the including file's own directory.
 // The most files one #include chain may hold open (the shader itself counts): expansion is
 // recursive, so a generated chain of thousands of files is refused instead of exhausting the
 // stack. Real shaders nest a handful deep.
 inline constexpr size_t kMaxIncludeDepth = 64;
 
+// Where `#include "name"` is searched, in order, after the including file's own directory.
 struct IncludeOptions {
     std::vector<std::string> includeDirs;  // -I directories, in command-line order
     std::string builtinDir;                // varc's built-in include directory ("" = none)
