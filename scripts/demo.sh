@@ -9,7 +9,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${VARC_BUILD_DIR:-$root/build}
 out=${VARC_DEMO_DIR:-$root/demo-out}
 mkdir -p "$out"
-varc="$build/compiler/varc"
+varc="$build/varc"
 cd "$root"
 
 fixtures=../shared/fixtures
