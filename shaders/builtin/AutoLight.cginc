@@ -4,7 +4,7 @@
 // SHADOW_COORDS/TRANSFER_SHADOW/SHADOW_ATTENUATION and the UNITY_SHADOW_* forms, selected by the
 // variant's light keyword (POINT, SPOT, DIRECTIONAL, POINT_COOKIE, DIRECTIONAL_COOKIE) and shadow
 // keyword (SHADOWS_SCREEN, SHADOWS_DEPTH, SHADOWS_CUBE, SHADOWS_SOFT). Attenuation formulas:
-// unity-keywords.md §4.2 and docs/LIGHTING.md §3, §6; textures and matrices: docs/SHADER_ABI.md §5-§6.
+// docs/KEYWORDS.md §9 and docs/LIGHTING.md §3, §6; textures and matrices: docs/SHADER_ABI.md §5-§6.
 // Written for varc.
 #ifndef AUTOLIGHT_INCLUDED
 #define AUTOLIGHT_INCLUDED
@@ -64,7 +64,7 @@
 #define UNITY_TRANSFER_SHADOW(a, coord) TRANSFER_SHADOW(a)
 
 // =============================================================================================
-// Light attenuation per light type (unity-keywords.md §4.2). lc = unity_WorldToLight * worldPos.
+// Light attenuation per light type (docs/LIGHTING.md §3). lc = unity_WorldToLight * worldPos.
 //   POINT              tex2D(_LightTexture0, dot(lc,lc).rr).r                       * shadow
 //   SPOT               (lc.z > 0) * tex2D(_LightTexture0, lc.xy/lc.w + 0.5).w
 //                      * tex2D(_LightTextureB0, dot(lc.xyz,lc.xyz).rr).r            * shadow

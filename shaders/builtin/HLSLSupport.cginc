@@ -25,7 +25,7 @@
 #define UNITY_ALLOWED_MRT_COUNT 8
 #define UNITY_SUPPORT_DEPTH_FETCH 1
 #define UNITY_SAMPLE_FULL_SH_PER_PIXEL 0
-// The falloff lookup stores attenuation in the red channel (unity-keywords.md §4.2).
+// The falloff lookup stores attenuation in the red channel (docs/LIGHTING.md §4).
 #define UNITY_ATTEN_CHANNEL r
 // Vulkan desktop targets branch dynamically and coherently at shader model 3.0 and up.
 #if SHADER_TARGET >= 30

@@ -2,7 +2,7 @@
 // varc built-in: UnityCG.cginc. Unity's common helper library for CG/HLSL programs: transforms,
 // view/light directions, vertex lights (Shade4PointLights), spherical harmonics (ShadeSH9),
 // screen positions and depth, packing, fog and shadow-caster macros. Written for varc from the
-// documented formulas (unity-keywords.md §4-§5, docs/SHADER_ABI.md); not derived from Unity.
+// documented formulas (docs/LIGHTING.md, docs/SHADER_ABI.md); not derived from Unity.
 #ifndef UNITY_CG_INCLUDED
 #define UNITY_CG_INCLUDED
 
@@ -148,7 +148,7 @@ inline float3 ObjSpaceViewDir(in float4 v) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Vertex lights. Formula: unity-keywords.md §5.1 (Shade4PointLights, ShadeVertexLightsFull).
+// Vertex lights. Formula: docs/LIGHTING.md §5 (Shade4PointLights, ShadeVertexLightsFull).
 // ---------------------------------------------------------------------------------------------
 // Diffuse from four point lights given as SoA world positions; atten = 1/(1 + d^2 * a) with
 // a = unity_4LightAtten0 = 25/range^2; N.L clamped at 0; no range cut-off.
@@ -195,7 +195,7 @@ float3 ShadeVertexLights(float4 vertex, float3 normal) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Spherical harmonics. Formula and packing: unity-keywords.md §5.3. normal.w must be 1.
+// Spherical harmonics. Formula and packing: docs/LIGHTING.md §5, docs/SHADER_ABI.md §4.4. normal.w must be 1.
 // ---------------------------------------------------------------------------------------------
 half3 SHEvalLinearL0L1(half4 normal) {
     half3 x;
@@ -304,7 +304,7 @@ inline float UnityDecodeCubeShadowDepth(float4 vals) { return vals.r; }
 
 // ---------------------------------------------------------------------------------------------
 // Shadow casters. Depth maps (SHADOWS_DEPTH) get a constant bias in clip space; cube maps
-// (SHADOWS_CUBE) write (|p - light| + bias) / range (unity-keywords.md §4.3).
+// (SHADOWS_CUBE) write (|p - light| + bias) / range (docs/LIGHTING.md §6).
 // ---------------------------------------------------------------------------------------------
 float4 UnityClipSpaceShadowCasterPos(float4 vertex, float3 normal) {
     float4 wPos = mul(unity_ObjectToWorld, vertex);
@@ -341,7 +341,7 @@ float4 UnityApplyLinearShadowBias(float4 clipPos) {
 #define TRANSFER_SHADOW_CASTER_NORMALOFFSET(o) TRANSFER_SHADOW_CASTER_NOPOS(o, o.pos)
 
 // ---------------------------------------------------------------------------------------------
-// Fog (unity-keywords.md §5.4). The fog coordinate is the eye depth (clip w) in world units.
+// Fog (docs/LIGHTING.md §7). The fog coordinate is the eye depth (clip w) in world units.
 // ---------------------------------------------------------------------------------------------
 #if defined(UNITY_PASS_PREPASSBASE) || defined(UNITY_PASS_DEFERRED) || defined(UNITY_PASS_SHADOWCASTER)
     #undef FOG_LINEAR

@@ -2,7 +2,7 @@
 // varc built-in: UnityDeferredLibrary.cginc. Helpers for deferred light-pass shaders: the light
 // pass inputs (G-buffer depth, _LightPos/_LightDir/_LightColor, falloff and cookie textures), the
 // light-volume vertex program, world position from depth, and per-light attenuation and shadows
-// as in unity-keywords.md §4.4. Conventions: docs/SHADER_ABI.md §4.8, §5; formulas:
+// as in docs/LIGHTING.md §10. Conventions: docs/SHADER_ABI.md §4.8, §5; formulas:
 // docs/LIGHTING.md §3, §6. Written for varc.
 #ifndef UNITY_DEFERRED_LIBRARY_INCLUDED
 #define UNITY_DEFERRED_LIBRARY_INCLUDED
@@ -82,7 +82,7 @@ half UnityDeferredComputeShadow(float3 vec, float fadeDist, float2 uv) {
 }
 
 // World position, screen uv, light direction, attenuation and fade distance of a light-pass pixel
-// (unity-keywords.md §4.4):
+// (docs/LIGHTING.md §10):
 //   SPOT         atten = cookie(uvCookie.xy / uvCookie.w, bias -8).w * (uvCookie.w < 0)
 //                        * falloff(d^2 * _LightPos.w).r * shadow
 //   DIRECTIONAL  atten = shadow (* cookie(lc.xy, bias -8).w for DIRECTIONAL_COOKIE), L = -_LightDir

@@ -56,7 +56,7 @@ CBUFFER_START(UnityPerDraw)
 CBUFFER_END
 
 // ---------------------------------------------------------------------------------------------
-// Per draw, forward base / deferred G-buffer: light probe SH (packing: unity-keywords.md §5.3).
+// Per draw, forward base / deferred G-buffer: light probe SH (packing: docs/SHADER_ABI.md §4.4).
 // ---------------------------------------------------------------------------------------------
 CBUFFER_START(UnityProbes)
     half4 unity_SHAr;
@@ -70,7 +70,7 @@ CBUFFER_START(UnityProbes)
 CBUFFER_END
 
 // ---------------------------------------------------------------------------------------------
-// Per draw, forward base: the four per-vertex point lights (unity-keywords.md §5.1) and the
+// Per draw, forward base: the four per-vertex point lights (docs/LIGHTING.md §5) and the
 // eight-light arrays of the legacy Vertex pass (view space).
 // ---------------------------------------------------------------------------------------------
 CBUFFER_START(UnityVertexLights)

@@ -2,7 +2,7 @@
 // varc built-in: UnityShadowLibrary.cginc. Real-time shadow-map sampling for spot (SHADOWS_DEPTH)
 // and point (SHADOWS_CUBE) lights, soft filtering (SHADOWS_SOFT), and the shadow-distance fade.
 // Conventions (depth ranges, texture contents): docs/SHADER_ABI.md §4.7 and §6; the exact
-// formulas: docs/LIGHTING.md §6. Sources: unity-keywords.md §4.2-§4.4, seed 002 (fade). Written for varc.
+// formulas: docs/LIGHTING.md §6. Keywords: docs/KEYWORDS.md §9. Written for varc.
 #ifndef UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED
 #define UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED
 

@@ -150,7 +150,7 @@ compile_block() {
     done
 }
 
-# multi_compile_lightpass as Unity 5.5 lists it (unity-keywords.md §1.2), x (_ | UNITY_HDR_ON).
+# multi_compile_lightpass as Unity 5.5 lists it (docs/KEYWORDS.md §4), x (_ | UNITY_HDR_ON).
 lightpass=("POINT" "DIRECTIONAL" "SPOT" "POINT_COOKIE" "DIRECTIONAL_COOKIE" "SHADOWS_DEPTH SPOT"
            "DIRECTIONAL SHADOWS_SCREEN" "DIRECTIONAL_COOKIE SHADOWS_SCREEN" "POINT SHADOWS_CUBE"
            "POINT_COOKIE SHADOWS_CUBE" "SHADOWS_DEPTH SHADOWS_SOFT SPOT" "POINT SHADOWS_CUBE SHADOWS_SOFT"

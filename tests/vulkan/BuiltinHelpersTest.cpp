@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Each built-in helper of varc's include library, run on lavapipe over a grid of positions and
 // normals (tests/vulkan/helpers/BuiltinHelpers.shader), against its CPU formula from
-// docs/LIGHTING.md as implemented by varc::reference (issue #5 §6): Shade4PointLights,
+// docs/LIGHTING.md as implemented by varc::reference (docs/LIGHTING.md §9.2): Shade4PointLights,
 // ShadeSH9, UNITY_LIGHT_ATTENUATION per light type, and UNITY_BRDF_PBS.
 #include <gtest/gtest.h>
 

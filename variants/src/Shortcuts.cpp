@@ -26,7 +26,7 @@ ValidityRule excludes(std::string keyword, Names none) {
     return {std::move(keyword), {}, std::move(none), {}};
 }
 
-// Unity 5.5's shadowed light passes (unity-keywords.md §1.3): soft set slowest, shadow kind,
+// Unity 5.5's shadowed light passes (docs/KEYWORDS.md §4): soft set slowest, shadow kind,
 // light type fastest; every shadow keyword needs a light type that can carry it. This order
 // reproduces the observed 13-variant listing exactly.
 Shortcut shadowedLightShortcut(std::string name) {
@@ -39,7 +39,7 @@ Shortcut shadowedLightShortcut(std::string name) {
         needsAnyOf("SHADOWS_CUBE", {"POINT", "POINT_COOKIE"}),
         needsAnyOf("SHADOWS_SOFT", {"SHADOWS_DEPTH", "SHADOWS_CUBE"}),
     };
-    return {std::move(name), std::move(sets), std::move(rules), "unity-keywords.md §1.2, §1.3"};
+    return {std::move(name), std::move(sets), std::move(rules), "docs/KEYWORDS.md §4"};
 }
 
 // fwdbase / fwdbasealpha (§1.3, INFERRED): DIRECTIONAL always on, then on/off sets. The set
@@ -64,7 +64,7 @@ Shortcut forwardBaseShortcut(std::string name, bool withShadows) {
         needsAnyOf("DIRLIGHTMAP_COMBINED", {"LIGHTMAP_ON", "DYNAMICLIGHTMAP_ON"}),
         needsAnyOf("LIGHTMAP_SHADOW_MIXING", std::move(mixingNeeds)),
     };
-    return {std::move(name), std::move(sets), std::move(rules), "unity-keywords.md §1.1, §1.3"};
+    return {std::move(name), std::move(sets), std::move(rules), "docs/KEYWORDS.md §4"};
 }
 
 Shortcut plainShortcut(std::string name, Sets sets, std::string source) {
@@ -73,7 +73,7 @@ Shortcut plainShortcut(std::string name, Sets sets, std::string source) {
 
 std::vector<Shortcut> makeShortcuts() {
     std::vector<Shortcut> table;
-    table.push_back(plainShortcut("fwdadd", {lightTypes()}, "unity-keywords.md §1.2, §1.3"));
+    table.push_back(plainShortcut("fwdadd", {lightTypes()}, "docs/KEYWORDS.md §4"));
     table.push_back(shadowedLightShortcut("fwdadd_fullshadows"));
     table.push_back(shadowedLightShortcut("lightpass"));
     table.push_back(forwardBaseShortcut("fwdbase", true));
@@ -85,21 +85,19 @@ std::vector<Shortcut> makeShortcuts() {
                                       {"", kHdrKeyword},
                                       {"", "SHADOWS_SHADOWMASK"},
                                       {"", "LIGHTPROBE_SH"}},
-                                     "unity-keywords.md §1.1, §1.3");
+                                     "docs/KEYWORDS.md §4");
     prepass.rules.push_back(
         needsAnyOf("DIRLIGHTMAP_COMBINED", {"LIGHTMAP_ON", "DYNAMICLIGHTMAP_ON"}));
     table.push_back(std::move(prepass));
-    table.push_back(plainShortcut("shadowcaster", {{"SHADOWS_DEPTH", "SHADOWS_CUBE"}},
-                                  "unity-keywords.md §1.2, §1.3"));
+    table.push_back(
+        plainShortcut("shadowcaster", {{"SHADOWS_DEPTH", "SHADOWS_CUBE"}}, "docs/KEYWORDS.md §4"));
     table.push_back(plainShortcut("shadowcollector",
                                   {{"", "SHADOWS_SPLIT_SPHERES"}, {"", "SHADOWS_SINGLE_CASCADE"}},
-                                  "unity-keywords.md §1.1, §1.2 (two independent sets)"));
-    table.push_back(plainShortcut("fog", {{"", "FOG_LINEAR", "FOG_EXP", "FOG_EXP2"}},
-                                  "unity-keywords.md §1.1, §1.2"));
+                                  "docs/KEYWORDS.md §4"));
     table.push_back(
-        plainShortcut("instancing", {{"", kInstancingKeyword}}, "unity-keywords.md §1.1"));
-    table.push_back(
-        plainShortcut("particles", {{"", "SOFTPARTICLES_ON"}}, "unity-keywords.md §1.1"));
+        plainShortcut("fog", {{"", "FOG_LINEAR", "FOG_EXP", "FOG_EXP2"}}, "docs/KEYWORDS.md §4"));
+    table.push_back(plainShortcut("instancing", {{"", kInstancingKeyword}}, "docs/KEYWORDS.md §4"));
+    table.push_back(plainShortcut("particles", {{"", "SOFTPARTICLES_ON"}}, "docs/KEYWORDS.md §4"));
     for (Shortcut& shortcut : table) {
         for (ValidityRule& rule : shortcut.rules) rule.origin = shortcut.directive();
     }

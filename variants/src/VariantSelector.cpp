@@ -8,7 +8,7 @@ namespace varc::variants {
 
 namespace {
 
-// How well a variant V fits the request R (unity-keywords.md §3.3): more shared keywords is
+// How well a variant V fits the request R (docs/KEYWORDS.md §8): more shared keywords is
 // better, then fewer extra keywords, then earlier in enumeration order.
 struct Score {
     size_t shared = 0;

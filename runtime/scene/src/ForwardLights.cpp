@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // ForwardLights: Unity's forward light assignment per object and SH from ambient plus lights
-// (docs/LIGHTING.md §5, §9; unity-keywords.md §4.1, §4.2, §5.3).
+// (docs/LIGHTING.md §5, §9; keywords: docs/KEYWORDS.md §9).
 #include "varc/scene/ForwardLights.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// SceneParser: the scene JSON format of issue #5 §5 → Scene, with JSON-pointer error messages.
+// SceneParser: the scene JSON format of docs/SCENES.md → Scene, with JSON-pointer error messages.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// compareImages, with the mutation tests of issue #5 §6: the comparator must fail a reference
-// rendered with a wrong attenuation, a missing add pass or a swapped light type, and pass the
-// identical image and one with ±1 LSB noise.
+// compareImages, with the mutation tests of docs/LIGHTING.md §9.2: the comparator must fail a
+// reference rendered with a wrong attenuation, a missing add pass or a swapped light type, and pass
+// the identical image and one with ±1 LSB noise.
 #include <cmath>
 #include <random>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// parseScene / loadScene: the issue #5 §5 format, defaults, and JSON-pointer error messages.
+// parseScene / loadScene: the docs/SCENES.md format, defaults, and JSON-pointer error messages.
 #include <gtest/gtest.h>
 
 #include "varc/scene/Scene.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// lightKeywords: every light type x cookie x shadow mode per pass kind (unity-keywords.md §4).
+// lightKeywords: every light type x cookie x shadow mode per pass kind (docs/KEYWORDS.md §9).
 #include <gtest/gtest.h>
 
 #include "VariantsTestSupport.h"

@@ -38,7 +38,7 @@ TEST(VariantSelector, ExactMatchWinsUnderEveryPolicy) {
 }
 
 TEST(VariantSelector, NeitherKeywordEnabledPicksTheFirst) {
-    // unity-keywords.md §3.1: "If neither of these two keywords are enabled then the first one".
+    // docs/KEYWORDS.md §8: "neither enabled → the first one", as Unity documents it.
     Fixture f({"multi_compile FANCY_STUFF_OFF FANCY_STUFF_ON"});
     Selection selection = f.select({}, SelectionPolicy::Closest);
     EXPECT_EQ(selection.index, 0u);

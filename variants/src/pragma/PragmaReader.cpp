@@ -237,7 +237,7 @@ void PragmaReader::readSkip(const std::vector<PragmaToken>& tokens) {
 }
 
 // `instancing_options procedural:Fn` anywhere in the block adds PROCEDURAL_INSTANCING_ON to the
-// multi_compile_instancing set (unity-keywords.md §1.1: 3 variants with procedural instancing).
+// multi_compile_instancing set (docs/KEYWORDS.md §4: 3 variants with procedural instancing).
 void PragmaReader::addProceduralInstancing() {
     bool procedural =
         std::any_of(mResult.instancingOptions.begin(), mResult.instancingOptions.end(),

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Which keywords Unity's built-in pipeline enables for a light in a given pass (unity-keywords §4).
+// Which keywords Unity's built-in pipeline enables for a light in a given pass (docs/KEYWORDS.md
+// §9).
 #pragma once
 
 #include <optional>

@@ -11,7 +11,7 @@
 
 namespace varc::variants {
 
-// One shortcut as varc models it (docs/KEYWORDS.md, "Shortcuts"; unity-keywords.md §1).
+// One shortcut as varc models it (docs/KEYWORDS.md §4).
 struct Shortcut {
     std::string name;                            // "fwdadd"; the directive is multi_compile_<name>
     std::vector<std::vector<std::string>> sets;  // declared order; "" = the no-keyword entry

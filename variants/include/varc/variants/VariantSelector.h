@@ -14,7 +14,7 @@ namespace varc::variants {
 
 enum class SelectionPolicy {
     Exact,    // only an exact match; no fallback
-    Closest,  // default: max |V ∩ R|, then min |V \ R|, then earliest (unity-keywords.md §3.3)
+    Closest,  // default: max |V ∩ R|, then min |V \ R|, then earliest (docs/KEYWORDS.md §8)
     First,    // Unity 5.x: exact match, else the first variant
     Strict,   // exact match, else an error listing the nearest variants (Unity 2022 strict)
 };

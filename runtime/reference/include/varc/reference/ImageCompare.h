@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// ImageCompare: compares a GPU render with the CPU reference under the tolerances of issue #5 §6
-// and draws a diff image.
+// ImageCompare: compares a GPU render with the CPU reference under the tolerances of
+// docs/LIGHTING.md §9.2 and draws a diff image.
 #pragma once
 
 #include <array>

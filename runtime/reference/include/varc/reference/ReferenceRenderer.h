@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // ReferenceRenderer: renders a forward Scene on the CPU exactly as the GPU forward renderer should
-// (issue #5 §6): same camera, meshes, rasterisation rules, light assignment and per-pixel
+// (docs/LIGHTING.md §9.2): same camera, meshes, rasterisation rules, light assignment and per-pixel
 // lighting (docs/LIGHTING.md §8, §9), with the colour attachment's quantisation. No Vulkan.
 #pragma once
 

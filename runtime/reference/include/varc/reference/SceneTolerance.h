@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// How close a GPU render of a scene must come to the CPU reference (issue #5 §6).
+// How close a GPU render of a scene must come to the CPU reference (docs/LIGHTING.md §9.2).
 #pragma once
 
 #include "varc/reference/ImageCompare.h"

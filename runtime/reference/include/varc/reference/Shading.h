@@ -39,7 +39,7 @@ struct VertexLights {
     std::array<glm::vec3, 4> colors{};             // unity_LightColor[0..3].rgb
 };
 VertexLights vertexLightsFor(const scene::Scene& scene, const std::vector<int>& lights);
-// LIGHTING.md §5 / unity-keywords.md §5.1.
+// docs/LIGHTING.md §5.
 glm::vec3 shade4PointLights(const VertexLights& lights, const glm::vec3& pos,
                             const glm::vec3& normal);
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Renders a forward Scene with pack variants on Vulkan, with Unity's built-in forward rules
-// (unity-keywords.md §4): per object one ForwardBase draw (main directional light, vertex lights,
-// SH) and one additive ForwardAdd draw per extra pixel light, each with the variant its light
-// selects through the pack's lookup.
+// (docs/KEYWORDS.md §9, docs/LIGHTING.md §9): per object one ForwardBase draw (main directional
+// light, vertex lights, SH) and one additive ForwardAdd draw per extra pixel light, each with the
+// variant its light selects through the pack's lookup.
 #pragma once
 
 #include <map>

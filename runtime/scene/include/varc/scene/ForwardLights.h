@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // ForwardLights: which lights of a scene draw where for one object in forward rendering (Unity's
-// rules, unity-keywords.md §4.1/§4.2; the exact rules are docs/LIGHTING.md §9), and the SH
+// rules, docs/LIGHTING.md §9), and the SH
 // coefficients of the lights that fall through to SH.
 #pragma once
 

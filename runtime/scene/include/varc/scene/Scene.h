@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Scene: the camera, objects, materials and lights of a validation scene (issue #5 §5), in Unity's
-// conventions, and the JSON reader for it.
+// Scene: the camera, objects, materials and lights of a validation scene (docs/SCENES.md), in
+// Unity's conventions, and the JSON reader for it.
 #pragma once
 
 #include <cstdint>
@@ -96,7 +96,7 @@ inline constexpr size_t kMaxSceneObjects = 4096;
 inline constexpr size_t kMaxSceneLights = 1024;
 inline constexpr float kMinScale = 1e-6f;  // |scale| per axis: 0 makes normals NaN
 
-// Parses the scene JSON format of issue #5 §5. Every field is optional (defaults as in the
+// Parses the scene JSON format of docs/SCENES.md. Every field is optional (defaults as in the
 // structs above) except each object's "mesh" and each light's "type"; unknown keys are errors.
 // Besides the issue's keys: camera "background" [r,g,b(,a)], light "cookie_size", object
 // "name". Colours are [r,g,b] or [r,g,b,a]; material properties are numbers, arrays of 1-4
