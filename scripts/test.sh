@@ -13,12 +13,16 @@ if [ "${1:-}" = --sanitize ]; then
     build=${VARC_SANITIZE_BUILD_DIR:-$root/build-san}
     VARC_BUILD_DIR=$build "$root/scripts/build.sh" -DVARC_SANITIZE="address;undefined" \
         -DVARC_BUILD_BENCH=OFF
-    # Errors, not warnings; leaks of third-party libraries (glslang's pools, the Vulkan loader,
-    # Mesa and LLVM inside lavapipe) are suppressed by name in scripts/lsan.supp, ours are not.
+    # Sanitizer reports are errors. Leak detection runs on every test that does not draw; the
+    # tests that draw (label vulkan) run with it off, because lavapipe is unloaded when the
+    # Vulkan instance goes and its leaks then come from a module LeakSanitizer can no longer
+    # name, so they can be neither attributed nor suppressed. Address and undefined-behaviour
+    # checks stay on everywhere.
     export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
-    export LSAN_OPTIONS=suppressions=$root/scripts/lsan.supp:print_suppressions=0
-    (cd "$build" && ctest --output-on-failure -j "$(nproc)")
+    (cd "$build" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+        ctest --output-on-failure -j "$(nproc)" -LE vulkan)
+    (cd "$build" && ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 \
+        ctest --output-on-failure -j "$(nproc)" -L vulkan)
     exec "$root/scripts/fuzz.sh"
 fi
 "$root/scripts/build.sh"
