@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <ostream>
 #include <set>
 
@@ -165,6 +166,39 @@ void savePipelineCache(const std::optional<runtime::PipelineCacheFile>& cache, s
         err << "varc: warning: " << saved.error().detail << "\n";
 }
 
+// What render and validate draw with, alive together: the renderer points at the packs, the
+// context and the cache, so the session lives on the heap and never moves.
+struct RenderSession {
+    std::vector<runtime::Pack> packs;
+    std::optional<runtime::VulkanContext> context;
+    std::optional<runtime::PipelineCacheFile> cache;
+    std::optional<runtime::SceneRenderer> renderer;
+};
+
+// Opens the packs, the Vulkan context, the --pipeline-cache file and the renderer; nullptr after
+// printing why, with |exitCode| set (usage errors for packs and the device, failure otherwise).
+std::unique_ptr<RenderSession> openRenderSession(const Options& options, std::ostream& err,
+                                                 int& exitCode) {
+    auto session = std::make_unique<RenderSession>();
+    exitCode = kExitUsage;
+    auto packs = openPacks(options.packPaths, err);
+    if (!packs) return nullptr;
+    session->packs = std::move(*packs);
+    session->context = makeContext(err);
+    if (!session->context) return nullptr;
+    session->cache = openPipelineCache(options, *session->context, err);
+    auto renderer =
+        createSceneRenderer(*session->context, session->packs,
+                            session->cache ? session->cache->handle() : VK_NULL_HANDLE);
+    if (!renderer) {
+        err << "varc: error: " << renderer.error().detail << "\n";
+        exitCode = kExitFailure;
+        return nullptr;
+    }
+    session->renderer.emplace(std::move(*renderer));
+    return session;
+}
+
 size_t distinctCount(const std::vector<std::string>& names) {
     return std::set<std::string>(names.begin(), names.end()).size();
 }
@@ -172,21 +206,15 @@ size_t distinctCount(const std::vector<std::string>& names) {
 }  // namespace
 
 int runRender(const Options& options, std::ostream& out, std::ostream& err) {
-    auto packs = openPacks(options.packPaths, err);
-    if (!packs) return kExitUsage;
-    auto context = makeContext(err);
-    if (!context) return kExitUsage;
-    std::optional<runtime::PipelineCacheFile> cache = openPipelineCache(options, *context, err);
-    auto renderer = createSceneRenderer(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
-    if (!renderer) {
-        err << "varc: error: " << renderer.error().detail << "\n";
-        return kExitFailure;
-    }
+    int exitCode = kExitOk;
+    std::unique_ptr<RenderSession> session = openRenderSession(options, err, exitCode);
+    if (!session) return exitCode;
     bool compare = !options.referencePath.empty() || !options.diffPath.empty();
-    SceneOutcome outcome = renderScene(*renderer, options.scenePath, compare, options.outputPath,
-                                       options.referencePath, options.diffPath);
+    SceneOutcome outcome =
+        renderScene(*session->renderer, options.scenePath, compare, options.outputPath,
+                    options.referencePath, options.diffPath);
     if (!outcome.error.empty()) err << "varc: error: " << outcome.error << "\n";
-    savePipelineCache(cache, err);
+    savePipelineCache(session->cache, err);
     if (!outcome.ok) return kExitFailure;
     out << "rendered " << options.scenePath << ": " << outcome.frame.draws << " draws, "
         << distinctCount(outcome.frame.variants) << " variants -> " << options.outputPath << "\n";
@@ -216,16 +244,9 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
         err << "varc: error: cannot create '" << outDir << "': " << error.message() << "\n";
         return kExitUsage;
     }
-    auto packs = openPacks(options.packPaths, err);
-    if (!packs) return kExitUsage;
-    auto context = makeContext(err);
-    if (!context) return kExitUsage;
-    std::optional<runtime::PipelineCacheFile> cache = openPipelineCache(options, *context, err);
-    auto renderer = createSceneRenderer(*context, *packs, cache ? cache->handle() : VK_NULL_HANDLE);
-    if (!renderer) {
-        err << "varc: error: " << renderer.error().detail << "\n";
-        return kExitFailure;
-    }
+    int exitCode = kExitOk;
+    std::unique_ptr<RenderSession> session = openRenderSession(options, err, exitCode);
+    if (!session) return exitCode;
     char line[256];
     std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", "scene", "draws",
                   "variants", "max LSB", "mean LSB", "time", "result");
@@ -234,7 +255,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     for (const std::string& scenePath : scenes) {
         std::string stem = std::filesystem::path(scenePath).stem().string();
         std::string base = (std::filesystem::path(outDir) / stem).string();
-        SceneOutcome outcome = renderScene(*renderer, scenePath, true, base + ".png",
+        SceneOutcome outcome = renderScene(*session->renderer, scenePath, true, base + ".png",
                                            base + ".reference.png", base + ".diff.png");
         if (!outcome.ok) {
             ++failures;
@@ -255,12 +276,12 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     }
     out << scenes.size() - static_cast<size_t>(failures) << "/" << scenes.size()
         << " scenes match the reference; PNGs in " << outDir << "\n";
-    savePipelineCache(cache, err);
+    savePipelineCache(session->cache, err);
     // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.
-    if (context->validationMessageCount() > 0) {
-        err << "varc: error: Vulkan validation reported " << context->validationMessageCount()
+    if (session->context->validationMessageCount() > 0) {
+        err << "varc: error: Vulkan validation reported " << session->context->validationMessageCount()
             << " messages:\n"
-            << context->validationReport() << "\n";
+            << session->context->validationReport() << "\n";
         return kExitFailure;
     }
     return failures ? kExitFailure : kExitOk;
