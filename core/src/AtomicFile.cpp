@@ -92,7 +92,10 @@ Status replaceRegularFile(const std::string& path, std::string_view contents) {
     const std::string temp = temporaryPathFor(path);
     TrackedTemporary tracked(temp);
     int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0) return ioError("cannot create", temp, errno);
+    if (fd < 0) {
+        return makeError(ErrorCode::IoError, "cannot write '" + path + "' (its temporary '" + temp +
+                                                 "' cannot be created): " + std::strerror(errno));
+    }
     bool written = writeAll(fd, contents) && ::fsync(fd) == 0;
     int error = errno;
     if (::close(fd) != 0 && written) {
