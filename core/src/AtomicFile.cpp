@@ -93,8 +93,9 @@ Status replaceRegularFile(const std::string& path, std::string_view contents) {
     TrackedTemporary tracked(temp);
     int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd < 0) {
+        const int error = errno;  // before any allocation below
         return makeError(ErrorCode::IoError, "cannot write '" + path + "' (its temporary '" + temp +
-                                                 "' cannot be created): " + std::strerror(errno));
+                                                 "' cannot be created): " + std::strerror(error));
     }
     bool written = writeAll(fd, contents) && ::fsync(fd) == 0;
     int error = errno;
