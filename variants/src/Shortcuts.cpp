@@ -78,6 +78,9 @@ std::vector<Shortcut> makeShortcuts() {
     table.push_back(shadowedLightShortcut("lightpass"));
     table.push_back(forwardBaseShortcut("fwdbase", true));
     table.push_back(forwardBaseShortcut("fwdbasealpha", false));
+    // Absent from Unity's manual, used by shaders that compile in Unity: the base pass only ever
+    // draws the main directional light, whose shadows fwdbase already covers (docs/KEYWORDS.md §4).
+    table.push_back(forwardBaseShortcut("fwdbase_fullshadows", true));
     Shortcut prepass = plainShortcut("prepassfinal",
                                      {{"", "LIGHTMAP_ON"},
                                       {"", "DIRLIGHTMAP_COMBINED"},

@@ -124,6 +124,7 @@ bool Builder::plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sin
                            : job.pass->source.text;
             job.sourceIds.assign(job.keys.size() * job.stages.size(), kNoProgram);
             if (mOptions.shareUnobservedDefines) job.observed.emplace(job.text);
+            job.userDefines.emplace(job.text);
             if (mCache) job.textHash = ProgramCache::hashText(job.text);
             mJobs.push_back(std::move(job));
         }

@@ -116,12 +116,17 @@ bool checkStageInterfaces(const std::vector<LoadedShader>& shaders, const BuildO
     std::set<std::pair<uint32_t, uint32_t>> checked;
     for (const CompiledPass& pass : build.passes) {
         for (const pack::PackVariant& variant : pass.variants) {
-            uint32_t vertex = variant.programs[stageIndex(Stage::Vertex)];
+            // The fragment stage reads what the last stage before rasterisation writes.
+            Stage producer = Stage::Vertex;
+            for (Stage stage : {Stage::Domain, Stage::Geometry}) {
+                if (variant.programs[stageIndex(stage)] != kNoProgram) producer = stage;
+            }
+            uint32_t feeding = variant.programs[stageIndex(producer)];
             uint32_t fragment = variant.programs[stageIndex(Stage::Fragment)];
-            if (vertex == kNoProgram || fragment == kNoProgram ||
-                !checked.insert({vertex, fragment}).second)
+            if (feeding == kNoProgram || fragment == kNoProgram ||
+                !checked.insert({feeding, fragment}).second)
                 continue;
-            const auto& outputs = build.programs[vertex].reflection.outputs;
+            const auto& outputs = build.programs[feeding].reflection.outputs;
             for (const pack::StageVariable& input : build.programs[fragment].reflection.inputs) {
                 bool matched = false;
                 for (const pack::StageVariable& output : outputs) {
@@ -134,7 +139,7 @@ bool checkStageInterfaces(const std::vector<LoadedShader>& shaders, const BuildO
                 sink.error(loaded.pass->program->origin,
                            "fragment input '" + input.name + "' (location " +
                                std::to_string(input.location) + ", " + input.type +
-                               ") is not written by the vertex program in " +
+                               ") is not written by the " + stageName(producer) + " program in " +
                                describePass(shader.ast, *loaded.pass, loaded.index) +
                                ", keywords: " +
                                variants::joinKeywords(loaded.space->table().namesOf(variant.key)));

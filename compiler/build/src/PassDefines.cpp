@@ -79,6 +79,11 @@ std::string makePreamble(const DefineContext& context) {
     if (context.language == shaderlab::ProgramLanguage::Glsl) {
         if (const char* stage = glslStageMacro(context.stage)) define(stage, "1");
     }
+    if (context.language != shaderlab::ProgramLanguage::Glsl) {
+        // glslang parses this HLSL intrinsic and then crashes generating SPIR-V for it; varc's
+        // runtime renders with one sample per pixel (docs/SHADER_ABI.md).
+        define("GetRenderTargetSampleCount()", "(1u)");
+    }
     for (const std::string& keyword : context.keywords) define(keyword, "1");
     return text;
 }

@@ -7,6 +7,7 @@
 #include "state/LegacyCommandSkipper.h"
 #include "state/StencilParser.h"
 #include "state/ValueSyntax.h"
+#include "varc/core/AsciiCase.h"
 
 namespace varc::shaderlab {
 namespace {
@@ -26,6 +27,10 @@ constexpr std::string_view kBlendOps[] = {
 // clang-format on
 constexpr std::string_view kCompareFunctions[] = {
     "Less", "Greater", "LEqual", "GEqual", "Equal", "NotEqual", "Always", "Never", "Disabled"};
+// ZTest also takes Off and On, as Unity accepts them (image effects write `ZTest Off`).
+constexpr std::string_view kDepthCompareFunctions[] = {
+    "Less",  "Greater", "LEqual",   "GEqual", "Equal", "NotEqual",
+    "Always", "Never",  "Disabled", "Off",    "On"};
 constexpr std::string_view kCullModes[] = {"Back", "Front", "Off"};
 constexpr std::string_view kOnOff[] = {"On", "Off"};
 constexpr std::string_view kTrueFalse[] = {"True", "False", "On", "Off"};
@@ -188,8 +193,14 @@ bool RenderStateParser::parseZWrite(RenderState& state) {
     return parseStateValue(mCursor, "ZWrite", kOnOff, false, state.zWrite);
 }
 
+// `ZTest Off` turns the depth test off (Disabled); `ZTest On` is the default test, LEqual.
 bool RenderStateParser::parseZTest(RenderState& state) {
-    return parseStateValue(mCursor, "ZTest", kCompareFunctions, false, state.zTest);
+    if (!parseStateValue(mCursor, "ZTest", kDepthCompareFunctions, false, state.zTest)) {
+        return false;
+    }
+    if (equalsIgnoreAsciiCase(state.zTest.literal, "Off")) state.zTest.literal = "Disabled";
+    if (equalsIgnoreAsciiCase(state.zTest.literal, "On")) state.zTest.literal = "LEqual";
+    return true;
 }
 
 bool RenderStateParser::parseCull(RenderState& state) {

@@ -327,5 +327,27 @@ TEST_F(CompileDriverTest, MissingEntryPragmaIsAnError) {
               std::string::npos);
 }
 
+// Unity's compilers accept a shader that defines its own pass macro (a warning there); glslang
+// would stop at "Macro redefined", so varc's own definition takes the text's replacement.
+TEST_F(CompileDriverTest, AShaderDefiningItsOwnPassMacroBuilds) {
+    std::string shader = replaced(kTwoKeywordShader, "#include \"Common.cginc\"",
+                                  "#define UNITY_PASS_FORWARDBASE\n#include \"Common.cginc\"");
+    auto output = build(shader);
+    ASSERT_TRUE(output) << (mDiagnostics.diagnostics().empty()
+                                ? ""
+                                : mDiagnostics.diagnostics()[0].message);
+    EXPECT_FALSE(mDiagnostics.hasErrors());
+}
+
+// glslang parses GetRenderTargetSampleCount() and then crashes generating SPIR-V for it.
+TEST_F(CompileDriverTest, GetRenderTargetSampleCountIsOneSample) {
+    std::string shader = replaced(kTwoKeywordShader, "return float4(1, 1, 1, 1);",
+                                  "return float4(1, 1, 1, GetRenderTargetSampleCount());");
+    auto output = build(shader);
+    ASSERT_TRUE(output) << (mDiagnostics.diagnostics().empty()
+                                ? ""
+                                : mDiagnostics.diagnostics()[0].message);
+}
+
 }  // namespace
 }  // namespace varc::compiler

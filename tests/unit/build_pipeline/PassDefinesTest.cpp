@@ -38,6 +38,7 @@ TEST(PassDefines, PreambleListsApiTargetPassStageAndKeywordsInOrder) {
               "#define UNITY_VERSION 201940\n"
               "#define UNITY_PASS_FORWARDADD 1\n"
               "#define SHADER_STAGE_FRAGMENT 1\n"
+              "#define GetRenderTargetSampleCount() (1u)\n"
               "#define POINT 1\n"
               "#define SHADOWS_CUBE 1\n");
 }
@@ -48,6 +49,7 @@ TEST(PassDefines, GlslProgramsAlsoGetTheVertexOrFragmentSelector) {
     EXPECT_NE(preamble.find("#define VERTEX 1\n"), std::string::npos);
     EXPECT_EQ(preamble.find("FRAGMENT"), std::string::npos);
     EXPECT_NE(preamble.find("#define SHADER_TARGET 25\n"), std::string::npos);
+    EXPECT_EQ(preamble.find("GetRenderTargetSampleCount"), std::string::npos);
 }
 
 }  // namespace

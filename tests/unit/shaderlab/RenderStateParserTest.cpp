@@ -160,12 +160,18 @@ TEST(RenderStateParser, IgnoresLegacyFixedFunctionCommands) {
     EXPECT_FALSE(state.blend);
 }
 
+// Unity accepts `ZTest Off` (image effects: no depth test) and `ZTest On` (the default test).
+TEST(RenderStateParser, ZTestOffAndOnAreTheSpellingsUnityAccepts) {
+    EXPECT_EQ(passState("ZTest Off").zTest, literal("Disabled"));
+    EXPECT_EQ(passState("ZTest on").zTest, literal("LEqual"));
+}
+
 TEST(RenderStateParser, ReportsInvalidValuesAtTheValue) {
     auto ztest = parsePassBody("ZTest Sometimes");
     EXPECT_FALSE(ztest.shader);
     EXPECT_EQ(ztest.firstMessage(),
               "invalid ZTest value 'Sometimes'; expected Less, Greater, LEqual, GEqual, Equal, "
-              "NotEqual, Always, Never, Disabled");
+              "NotEqual, Always, Never, Disabled, Off, On");
     EXPECT_EQ(ztest.firstLocation(), (SourceLocation{testing::kTestFile, 1, 39}));
     auto blend = parsePassBody("Blend One Two");
     EXPECT_FALSE(blend.shader);

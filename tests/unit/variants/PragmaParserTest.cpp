@@ -104,6 +104,30 @@ TEST(PragmaParser, KeywordRepeatedInSetPointsAtSecondOccurrence) {
     EXPECT_EQ(error.notes[0].location.column, 37u);
 }
 
+// Unity merges a set written again exactly: the count does not change.
+TEST(PragmaParser, AUserSetIdenticalToAShortcutSetIsMergedWithANote) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> merged =
+        parse({"multi_compile_fwdbase", "multi_compile _ VERTEXLIGHT_ON"}, sink);
+    ASSERT_TRUE(merged.has_value());
+    EXPECT_FALSE(sink.hasErrors());
+    ASSERT_EQ(messages(sink, Severity::Note).size(), 1u);
+    EXPECT_NE(messages(sink, Severity::Note)[0].find("merged"), std::string::npos);
+    PassKeywords alone = parseOk({"multi_compile_fwdbase"});
+    ASSERT_EQ(merged->sets.size(), alone.sets.size());
+    for (size_t i = 0; i < alone.sets.size(); ++i) {
+        EXPECT_EQ(merged->sets[i].keywords, alone.sets[i].keywords);
+    }
+}
+
+TEST(PragmaParser, IdenticalUserSetsInAnyOrderAreMerged) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> kw = parse({"multi_compile ___ A B", "multi_compile B _ A"}, sink);
+    ASSERT_TRUE(kw.has_value());
+    ASSERT_EQ(kw->sets.size(), 1u);
+    EXPECT_EQ(kw->sets[0].keywords, (Keywords{"", "A", "B"}));
+}
+
 TEST(PragmaParser, RepeatedSetInAnyOrderIsAnError) {
     Diagnostic error = parseError({"multi_compile A B", "shader_feature B A"});
     EXPECT_NE(error.message.find("duplicate keyword set"), std::string::npos) << error.message;
@@ -128,20 +152,46 @@ TEST(PragmaParser, UserSetSharingAShortcutKeywordIsAnError) {
     EXPECT_EQ(error.location.column, 32u);
 }
 
-TEST(PragmaParser, UnknownShortcutSuggestsTheClosestName) {
-    Diagnostic error = parseError({"multi_compile_fwdadd_fullshadow"}, 13);
-    EXPECT_EQ(error.location.column, 21u);
-    EXPECT_NE(error.message.find("did you mean 'multi_compile_fwdadd_fullshadows'?"),
+// Unity ignores a shortcut it does not know (shaders with `multi_compile_fwdbadd` compile there):
+// a warning with the suggestion, and the pragma declares nothing.
+TEST(PragmaParser, UnknownShortcutIsIgnoredWithAWarningThatSuggestsTheClosestName) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> kw =
+        parsePragmas(pragmaLines({"multi_compile_fwdadd_fullshadow", "multi_compile _ A"}, 13), sink);
+    ASSERT_TRUE(kw.has_value());
+    EXPECT_FALSE(sink.hasErrors());
+    ASSERT_EQ(kw->sets.size(), 1u);
+    EXPECT_EQ(kw->sets[0].keywords, (Keywords{"", "A"}));
+    std::vector<Diagnostic> warnings;
+    for (const Diagnostic& d : sink.diagnostics())
+        if (d.severity == Severity::Warning) warnings.push_back(d);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].location.column, 21u);
+    EXPECT_NE(warnings[0].message.find("is ignored"), std::string::npos) << warnings[0].message;
+    EXPECT_NE(warnings[0].message.find("did you mean 'multi_compile_fwdadd_fullshadows'?"),
               std::string::npos)
-        << error.message;
+        << warnings[0].message;
 }
 
 TEST(PragmaParser, UnknownShortcutFarFromEverythingHasNoSuggestion) {
-    Diagnostic error = parseError({"multi_compile_zzzzzzzzzzzz"});
-    EXPECT_NE(error.message.find("unknown multi_compile shortcut"), std::string::npos);
-    EXPECT_EQ(error.message.find("did you mean"), std::string::npos) << error.message;
+    DiagnosticList sink;
+    ASSERT_TRUE(parse({"multi_compile_zzzzzzzzzzzz"}, sink).has_value());
+    std::vector<std::string> warnings = messages(sink, Severity::Warning);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("unknown multi_compile shortcut"), std::string::npos);
+    EXPECT_EQ(warnings[0].find("did you mean"), std::string::npos) << warnings[0];
 }
 
+TEST(PragmaParser, UnknownShortcutWithOnlyShortcutOptionsIsIgnored) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> kw = parse({"multi_compile_fwdbadd nolightmap"}, sink);
+    ASSERT_TRUE(kw.has_value());
+    EXPECT_TRUE(kw->sets.empty());
+    EXPECT_EQ(messages(sink, Severity::Warning).size(), 1u);
+}
+
+// Keywords after a misspelt directive are keywords the user wants: dropping them silently would
+// lose variants, so this stays an error.
 TEST(PragmaParser, MisspelledSuffixFormSuggestsTheSuffixForm) {
     Diagnostic error = parseError({"multi_compile_fragmnt _ A"});
     EXPECT_NE(error.message.find("did you mean 'multi_compile_fragment'?"), std::string::npos)
@@ -268,7 +318,7 @@ TEST(PragmaParser, ProceduralInstancingAddsAKeywordToTheInstancingSet) {
 
 TEST(PragmaParser, ReportsEveryErrorOfTheBlock) {
     DiagnosticList sink;
-    EXPECT_FALSE(parse({"multi_compile _ A A", "multi_compile_nope", "multi_compile 1X"}, sink));
+    EXPECT_FALSE(parse({"multi_compile _ A A", "multi_compile_nope _ B", "multi_compile 1X"}, sink));
     EXPECT_EQ(sink.errorCount(), 3u);
 }
 

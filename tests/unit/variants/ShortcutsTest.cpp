@@ -66,13 +66,19 @@ TEST(Shortcuts, TableHasEveryShortcut) {
     std::vector<std::string> names;
     for (const Shortcut& shortcut : builtinShortcuts()) names.push_back(shortcut.name);
     EXPECT_EQ(names, (Listing{"fwdadd", "fwdadd_fullshadows", "lightpass", "fwdbase",
-                              "fwdbasealpha", "prepassfinal", "shadowcaster", "shadowcollector",
+                              "fwdbasealpha", "fwdbase_fullshadows", "prepassfinal", "shadowcaster", "shadowcollector",
                               "fog", "instancing", "particles"}));
     ASSERT_NE(findShortcut("fog"), nullptr);
     EXPECT_EQ(findShortcut("fog")->directive(), "multi_compile_fog");
     EXPECT_EQ(findShortcut("multi_compile_fog"), nullptr);
     EXPECT_EQ(findShortcutOption("noshadow")->removes.size(), 4u);
     EXPECT_EQ(findShortcutOption("nothing"), nullptr);
+}
+
+// Not in Unity's manual but compiled by Unity: the base pass's shadows are fwdbase's already.
+TEST(Shortcuts, FwdBaseFullShadowsListsTheSameVariantsAsFwdBase) {
+    EXPECT_EQ(listingOf({"multi_compile_fwdbase_fullshadows"}), listingOf({"multi_compile_fwdbase"}));
+    EXPECT_FALSE(listingOf({"multi_compile_fwdbase_fullshadows"}).empty());
 }
 
 TEST(Shortcuts, FwdAddIsFiveLightTypesInUnityOrder) {

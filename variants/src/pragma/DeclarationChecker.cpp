@@ -63,6 +63,30 @@ void DeclarationChecker::resolveDynamicBranches(std::vector<DeclaredSet>& sets,
     std::erase_if(sets, [](const DeclaredSet& set) { return !hasKeyword(set.decl); });
 }
 
+// Unity accepts a set written again exactly (same keywords in any order, same directive kind,
+// scope and stages), e.g. `multi_compile _ VERTEXLIGHT_ON` beside `multi_compile_fwdbase`, which
+// declares that set itself: the variant count does not change. varc merges it with a note.
+void DeclarationChecker::mergeIdenticalSets(std::vector<DeclaredSet>& sets) {
+    for (size_t i = sets.size(); i-- > 1;) {
+        const KeywordSetDecl& later = sets[i].decl;
+        std::vector<std::string> mine = sortedKeywords(later);
+        for (size_t j = 0; j < i; ++j) {
+            const KeywordSetDecl& first = sets[j].decl;
+            if (first.kind != later.kind || first.local != later.local ||
+                first.stages != later.stages || sortedKeywords(first) != mine)
+                continue;
+            mSink.report({Severity::Note,
+                          sets[i].directiveLocation,
+                          "keyword set '" + displaySet(later) + "' is the same as '" +
+                              displaySet(first) + "' at " + position(sets[j].directiveLocation) +
+                              "; merged, as Unity does",
+                          {{sets[j].directiveLocation, "first declared here"}}});
+            sets.erase(sets.begin() + static_cast<std::ptrdiff_t>(i));
+            break;
+        }
+    }
+}
+
 bool DeclarationChecker::checkUnique(const std::vector<DeclaredSet>& sets) {
     std::vector<bool> repeated(sets.size(), false);
     bool ok = true;

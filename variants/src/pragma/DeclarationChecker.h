@@ -21,6 +21,11 @@ public:
     void resolveDynamicBranches(std::vector<DeclaredSet>& sets,
                                 const std::vector<DeclaredSet>& branches);
 
+    // Drops from |sets| each set identical to an earlier one (same keywords in any order, same
+    // kind, scope and stages) with a note: Unity merges them. Example: `multi_compile_fwdbase`
+    // then `multi_compile _ VERTEXLIGHT_ON` -> one VERTEXLIGHT_ON set.
+    void mergeIdenticalSets(std::vector<DeclaredSet>& sets);
+
     // Reports a set repeated (same keywords in any order) and a keyword declared by two sets,
     // each with a note at the first declaration. Returns false after reporting an error.
     bool checkUnique(const std::vector<DeclaredSet>& sets);

@@ -153,9 +153,31 @@ void PragmaReader::reportUnknownDirective(const PragmaToken& name,
                              didYouMean(name.text, candidates));
 }
 
+// Unity compiles shaders with a misspelt shortcut (`multi_compile_fwdbadd`): the pragma declares
+// no keywords. varc does the same and says so. A misspelt directive followed by anything but
+// shortcut options (`multi_compile_fragmnt _ A`) declares keywords the user wants: ignoring it
+// would silently drop variants, so that stays an error.
+void PragmaReader::readUnknownShortcut(const std::vector<PragmaToken>& tokens) {
+    for (size_t i = 1; i < tokens.size(); ++i) {
+        if (findShortcutOption(tokens[i].text) == nullptr) {
+            return reportUnknownDirective(tokens[0], shortcutDirectives());
+        }
+    }
+    warnUnknownShortcut(tokens[0]);
+}
+
+void PragmaReader::warnUnknownShortcut(const PragmaToken& name) {
+    std::vector<std::string> candidates = shortcutDirectives();
+    std::vector<std::string> more = keywordDirectiveSpellings();
+    candidates.insert(candidates.end(), more.begin(), more.end());
+    mSink.warning(name.location, "unknown multi_compile shortcut '" + std::string(name.text) +
+                                     "' declares no keywords and is ignored, as in Unity" +
+                                     didYouMean(name.text, candidates));
+}
+
 void PragmaReader::readShortcut(const DirectiveForm& form, const std::vector<PragmaToken>& tokens) {
     const Shortcut* shortcut = findShortcut(form.shortcutName);
-    if (shortcut == nullptr) return reportUnknownDirective(tokens[0], shortcutDirectives());
+    if (shortcut == nullptr) return readUnknownShortcut(tokens);
     std::string directive = shortcut->directive();
     auto [seen, inserted] = mShortcutsSeen.emplace(directive, tokens[0].location);
     if (!inserted) {
@@ -254,6 +276,7 @@ std::optional<PassKeywords> PragmaReader::finish() {
     addProceduralInstancing();
     DeclarationChecker checker(mSink);
     checker.resolveDynamicBranches(mSets, mBranches);
+    checker.mergeIdenticalSets(mSets);
     bool unique = checker.checkUnique(mSets);
     unique = checker.checkUnique(mBranches) && unique;
     if (mFailed || !unique) return std::nullopt;

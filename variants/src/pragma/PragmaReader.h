@@ -30,6 +30,8 @@ public:
 private:
     void readKeywordSet(const DirectiveForm& form, const std::vector<PragmaToken>& tokens);
     bool readSetKeywords(const std::vector<PragmaToken>& tokens, DeclaredSet& set);
+    void readUnknownShortcut(const std::vector<PragmaToken>& tokens);
+    void warnUnknownShortcut(const PragmaToken& name);
     void readShortcut(const DirectiveForm& form, const std::vector<PragmaToken>& tokens);
     bool readShortcutOptions(const std::vector<PragmaToken>& tokens, const Shortcut& shortcut,
                              std::vector<const ShortcutOption*>& options);

@@ -58,6 +58,7 @@ std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex) {
     std::string preamble = job.observed
                                ? dropUnobservedDefines(makePreamble(context), *job.observed)
                                : makePreamble(context);
+    if (job.userDefines) preamble = job.userDefines->adopt(preamble);
     if (languageOf(job) == shaderlab::ProgramLanguage::Glsl) {
         preamble += legacyGlslPreamble(job.text, stage);
     }

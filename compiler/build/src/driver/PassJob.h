@@ -14,6 +14,7 @@
 
 #include "varc/build/ObservedDefines.h"
 #include "varc/build/ProgramCache.h"
+#include "varc/build/UserDefines.h"
 #include "varc/core/Diagnostic.h"
 #include "varc/core/Stage.h"
 #include "varc/frontend/ShaderLoader.h"
@@ -35,6 +36,7 @@ struct PassJob {
     std::vector<std::pair<Stage, std::string>> stages;  // (stage, entry point)
     std::string text;  // the expanded source, in the front end's #line convention
     std::optional<ObservedNames> observed;  // the macro names |text| can see; none: keep all
+    std::optional<UserDefines> userDefines;  // the macros |text| defines itself
     ProgramCacheKey textHash;               // of |text|, when a program cache is used
     // sourceIds[variant * stages.size() + stageIndex]
     std::vector<uint32_t> sourceIds;

@@ -1,0 +1,135 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# The compatibility corpus test (issue #10): every third-party `.shader` in ../shared/compat
+# outside surface/ goes through `varc variants` and `varc build` as a user would run them, with
+# the repository's folder as the include root. The results become the table of
+# docs/COMPATIBILITY.md; the test fails when
+#   * varc crashes or hangs on any file (exit status other than 0 or 1, or the time limit), or
+#     prints a glslang message that is not mapped to a file:line;
+#   * a file that the committed table says builds no longer builds;
+#   * anything else in the table changed (a file now builds, a reason changed): the table must
+#     stay true, so rerun with --update and commit docs/COMPATIBILITY.md.
+# Usage: corpus.sh VARC COMPAT_DIR DOC WORK_DIR [--update]
+# The corpus is read in place and never copied into the project.
+set -uo pipefail
+
+varc="$1"
+compat="$2"
+doc="$3"
+work="$4"
+update="${5:-}"
+unset VARC_BUILTIN_INCLUDE_DIR
+
+[ -d "$compat" ] || { echo "FAIL: the compatibility corpus $compat is missing (../shared beside the checkout)"; exit 1; }
+rm -rf "$work"
+mkdir -p "$work/logs"
+compat=$(cd "$compat" && pwd)
+results="$work/results.tsv"
+: >"$results"
+status=0
+
+# One line of reason: the first error as "where: message", where is the line in the shader
+# ("line 12") or the include file and line ("Noise.cginc:4"); no search list, at most 160 chars.
+reasonOf() {
+    local first
+    first=$(grep -m1 -E 'error:' "$1" | sed -e "s|$compat/||g" -e 's/; searched: .*//')
+    [ -n "$first" ] || return 0
+    awk -v shader="$2" '{
+        i = index($0, ": error: ")
+        if (i == 0) { print $0; exit }
+        where = substr($0, 1, i - 1); message = substr($0, i + 9)
+        n = split(where, part, ":")
+        file = part[1]; line = (n >= 2) ? part[2] : ""
+        if (file == shader) where = "line " line
+        else { sub(/.*\//, "", file); where = file (line != "" ? ":" line : "") }
+        print where ": " message
+    }' <<<"$first" | sed -e 's/|/\\|/g' | cut -c1-160
+}
+
+while IFS= read -r -d '' file; do
+    rel=${file#"$compat"/}
+    repo=${rel%%/*}
+    log="$work/logs/$(tr '/ ' '__' <<<"$rel")"
+    timeout 300 "$varc" variants --json -I "$compat/$repo" "$file" >"$log.variants" 2>&1
+    vstatus=$?
+    timeout 600 "$varc" build -j 2 -o "$work/out.svpack" -I "$compat/$repo" "$file" \
+        >"$log.build" 2>&1
+    bstatus=$?
+    passes=$(grep -o '"index":' "$log.variants" | wc -l)
+    variants=$(grep -o '"variants":[0-9]*' "$log.variants" | tail -n 1 | cut -d: -f2)
+    if [ "$vstatus" -gt 1 ] || [ "$bstatus" -gt 1 ]; then
+        echo "FAIL: $rel: varc exited with $vstatus (variants) / $bstatus (build): crash or hang"
+        tail -5 "$log.build"
+        status=1
+    fi
+    # A glslang message without our file:line mapping (ERROR: 0:12: ...) must never reach a user.
+    if grep -q -E '^(ERROR|WARNING): [0-9]+:' "$log.build"; then
+        echo "FAIL: $rel: an unmapped glslang message reached the output"
+        grep -m3 -E '^(ERROR|WARNING): [0-9]+:' "$log.build"
+        status=1
+    fi
+    if [ "$bstatus" -eq 0 ]; then
+        outcome="built"
+        reason=""
+    else
+        outcome="refused"
+        reason=$(reasonOf "$log.build" "$rel")
+        [ -n "$reason" ] || reason=$(reasonOf "$log.variants" "$rel")
+    fi
+    printf '%s|%s|%s|%s|%s\n' "$rel" "$passes" "${variants:-0}" "$outcome" "$reason" >>"$results"
+done < <(find "$compat" -name '*.shader' -not -path "$compat/surface/*" -print0 | LC_ALL=C sort -z)
+
+total=$(wc -l <"$results")
+built=$(grep -c '|built|' "$results")
+table="$work/COMPATIBILITY.md"
+{
+    cat <<EOF
+# Compatibility with real-world shaders
+
+Third-party shaders written for Unity's built-in pipeline (\`../shared/compat/\`: one folder per
+public repository, read in place, never copied). For every \`.shader\` outside \`surface/\`,
+\`varc variants\` and \`varc build\` run with the repository's folder as the include root.
+This page is written by the test \`compat.corpus\` (tests/compat/corpus.sh) and checked by it:
+the test fails when a file that built stops building, when varc crashes, hangs or prints a
+glslang message without its file:line, and when this table is no longer true. After an
+intended change: \`bash tests/compat/corpus.sh build/varc ../shared/compat docs/COMPATIBILITY.md
+build/compat --update\`.
+
+**$built of $total files build every variant.**
+
+| file | passes | variants | result |
+|---|---:|---:|---|
+EOF
+    while IFS='|' read -r rel passes variants outcome reason; do
+        if [ "$outcome" = built ]; then
+            echo "| \`$rel\` | $passes | $variants | built |"
+        else
+            echo "| \`$rel\` | $passes | $variants | refused: $reason |"
+        fi
+    done <"$results"
+} >"$table"
+
+if [ "$update" = --update ]; then
+    cp "$table" "$doc"
+    echo "corpus: $built of $total built; $doc updated"
+    exit $status
+fi
+
+# Regressions first: a file the committed table lists as built must still build.
+while IFS= read -r line; do
+    rel=$(sed -E 's/^\| `([^`]*)`.*/\1/' <<<"$line")
+    if ! grep -q -F "$rel|" "$results" || ! grep -F "$rel|" "$results" | grep -q '|built|$'; then
+        echo "FAIL: $rel built before and no longer builds:"
+        grep -F "$rel|" "$results" | cut -d'|' -f5
+        status=1
+    fi
+done < <(grep -E '\| built \|$' "$doc")
+
+if ! diff -u "$doc" "$table" >"$work/table.diff"; then
+    echo "FAIL: docs/COMPATIBILITY.md is not true any more; the differences:"
+    head -60 "$work/table.diff"
+    echo "(rerun with --update after an intended change)"
+    status=1
+fi
+echo "corpus: $built of $total files built"
+exit $status
