@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The real file system, read through std::filesystem without letting exceptions escape.
+#include <algorithm>
 #include <filesystem>
 
 #include "varc/core/FileRead.h"
@@ -18,6 +19,19 @@ bool DiskFileSystem::isFile(const std::string& path) const {
     if (path.empty()) return false;
     std::error_code error;
     return std::filesystem::is_regular_file(std::filesystem::path(normalizePath(path)), error);
+}
+
+std::vector<std::string> DiskFileSystem::fileNames(const std::string& dir) const {
+    std::vector<std::string> names;
+    std::error_code error;
+    std::filesystem::path folder(dir.empty() ? "." : normalizePath(dir));
+    for (std::filesystem::directory_iterator it(folder, error), end; !error && it != end;
+         it.increment(error)) {
+        std::error_code typeError;
+        if (it->is_regular_file(typeError)) names.push_back(it->path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
 }
 
 }  // namespace varc::includes

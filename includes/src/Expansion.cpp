@@ -136,11 +136,18 @@ void Expansion::handleInclude(const Frame& frame, const LogicalLine& line) {
                "extra tokens at end of #include directive");
     }
     std::vector<std::string> searched;
-    std::optional<std::string> path =
-        mLocator.locate(directive.argument, parentPath(mSourceMap.path(frame.file)), searched);
+    bool caseDiffers = false;
+    std::optional<std::string> path = mLocator.locate(
+        directive.argument, parentPath(mSourceMap.path(frame.file)), searched, &caseDiffers);
     if (!path) {
         reportMissing(frame, line, searched);
         return;
+    }
+    if (caseDiffers) {
+        report(Severity::Warning, where,
+               "include file " + asWritten(directive) + " found as '" + *path +
+                   "', whose name differs in case; this works on case-insensitive file "
+                   "systems only");
     }
     std::optional<FileId> id = load(*path);
     const ScannedFile* scan = id ? &mScans.get(mSourceMap, *id) : nullptr;

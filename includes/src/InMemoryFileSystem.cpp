@@ -19,4 +19,14 @@ bool InMemoryFileSystem::isFile(const std::string& path) const {
     return mFiles.count(normalizePath(path)) > 0;
 }
 
+std::vector<std::string> InMemoryFileSystem::fileNames(const std::string& dir) const {
+    std::string folder = dir.empty() ? "" : normalizePath(dir);
+    if (folder == ".") folder.clear();
+    std::vector<std::string> names;
+    for (const auto& [path, contents] : mFiles) {
+        if (parentPath(path) == folder) names.push_back(path.substr(folder.empty() ? 0 : folder.size() + 1));
+    }
+    return names;  // std::map keeps them sorted
+}
+
 }  // namespace varc::includes

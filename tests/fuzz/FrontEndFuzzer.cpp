@@ -22,6 +22,9 @@ public:
     bool isFile(const std::string& path) const override {
         return memory.isFile(path) || (path.starts_with(VARC_BUILTIN_DIR) && mDisk.isFile(path));
     }
+    std::vector<std::string> fileNames(const std::string& dir) const override {
+        return dir.starts_with(VARC_BUILTIN_DIR) ? mDisk.fileNames(dir) : memory.fileNames(dir);
+    }
 
 private:
     varc::includes::DiskFileSystem mDisk;

@@ -42,6 +42,12 @@ bool parseDefine(std::string_view line, std::string_view& name, std::string_view
            replacement.find("/*") == std::string_view::npos;
 }
 
+// Only the pass macros, and only definitions that say "this pass is defined": a text's
+// `#ifndef SHADER_TARGET` / `#define SHADER_TARGET 25` fallback must not replace the real value.
+bool isAdoptable(std::string_view name, std::string_view replacement) {
+    return name.starts_with("UNITY_PASS_") && (replacement.empty() || replacement == "1");
+}
+
 template <typename Visit>
 void forEachLine(std::string_view text, Visit&& visit) {
     size_t start = 0;
@@ -58,7 +64,7 @@ void forEachLine(std::string_view text, Visit&& visit) {
 UserDefines::UserDefines(std::string_view text) {
     forEachLine(text, [this](std::string_view line) {
         std::string_view name, replacement;
-        if (parseDefine(line, name, replacement)) {
+        if (parseDefine(line, name, replacement) && isAdoptable(name, replacement)) {
             mReplacements.emplace(std::string(name), std::string(replacement));
         }
     });

@@ -42,6 +42,7 @@ includes::IncludeOptions includeOptions(const Options& options) {
     includes::IncludeOptions result;
     result.includeDirs = options.includeDirs;
     result.builtinDir = options.builtinIncludeDir;
+    result.projectRoot = options.projectRoot;
 #ifdef VARC_DEFAULT_BUILTIN_INCLUDE_DIR
     if (result.builtinDir.empty()) result.builtinDir = VARC_DEFAULT_BUILTIN_INCLUDE_DIR;
 #endif

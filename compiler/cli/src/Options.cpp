@@ -31,6 +31,11 @@ void addInputOptions(CLI::App& command, Options& options) {
     command.add_option("-I,--include-dir", options.includeDirs, "Add an include directory")
         ->type_name("DIR");
     command
+        .add_option("--project-root", options.projectRoot,
+                    "Folder that #include \"Assets/...\" paths start from (default: the nearest "
+                    "folder above the shader that has them)")
+        ->type_name("DIR");
+    command
         .add_option("--builtin-include-dir", options.builtinIncludeDir,
                     "Override the built-in include directory")
         ->type_name("DIR");

@@ -17,23 +17,40 @@ TEST(UserDefines, APassMacroTheTextDefinesTakesTheTextsReplacement) {
 }
 
 TEST(UserDefines, SpacingCommentsAndCarriageReturnsAreNotPartOfTheReplacement) {
-    UserDefines defines("  #  define POINT   2   // why not\r\n");
-    EXPECT_EQ(defines.adopt("#define POINT 1\n"), "#define POINT 2\n");
+    UserDefines defines("  #  define UNITY_PASS_FORWARDBASE   1   // why not\r\n");
+    EXPECT_EQ(defines.adopt("#define UNITY_PASS_FORWARDBASE 1\n"),
+              "#define UNITY_PASS_FORWARDBASE 1\n");
 }
 
 TEST(UserDefines, TheFirstDefinitionWins) {
-    UserDefines defines("#define POINT 2\n#undef POINT\n#define POINT 3\n");
-    EXPECT_EQ(defines.adopt("#define POINT 1\n"), "#define POINT 2\n");
+    UserDefines defines(
+        "#define UNITY_PASS_FORWARDBASE\n#undef UNITY_PASS_FORWARDBASE\n"
+        "#define UNITY_PASS_FORWARDBASE 1\n");
+    EXPECT_EQ(defines.adopt("#define UNITY_PASS_FORWARDBASE 1\n"),
+              "#define UNITY_PASS_FORWARDBASE \n");
+}
+
+// A text's fallback for a predefined macro (`#ifndef SHADER_TARGET` / `#define SHADER_TARGET 25`)
+// must not replace the value the driver sets, nor may anything but a pass macro.
+TEST(UserDefines, OnlyPassMacrosSayingDefinedAreAdopted) {
+    UserDefines defines(
+        "#ifndef SHADER_TARGET\n#define SHADER_TARGET 25\n#endif\n#define POINT\n"
+        "#define UNITY_PASS_SHADOWCASTER 2\n");
+    EXPECT_TRUE(defines.empty());
+    EXPECT_EQ(defines.adopt("#define SHADER_TARGET 45\n#define POINT 1\n"),
+              "#define SHADER_TARGET 45\n#define POINT 1\n");
 }
 
 TEST(UserDefines, FunctionLikeAndContinuedMacrosAndOtherLinesAreLeftAlone) {
-    UserDefines defines("#define POINT(x) x\n#define SPOT 1 \\\n + 2\n#ifdef POINT\n");
+    UserDefines defines(
+        "#define UNITY_PASS_META(x) x\n#define UNITY_PASS_DEFERRED \\\n 1\n"
+        "#ifdef UNITY_PASS_FORWARDADD\n");
     EXPECT_TRUE(defines.empty());
     EXPECT_EQ(defines.adopt(kPreamble), kPreamble);
 }
 
 TEST(UserDefines, NamesThatOnlyStartLikeAPreambleMacroDoNotMatch) {
-    UserDefines defines("#define POINTS 4\n#defined POINT 5\n");
+    UserDefines defines("#define UNITY_PASS_FORWARDBASES\n#defined UNITY_PASS_FORWARDBASE\n");
     EXPECT_EQ(defines.adopt(kPreamble), kPreamble);
 }
 

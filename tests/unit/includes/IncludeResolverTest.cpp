@@ -91,6 +91,61 @@ TEST(IncludeResolver, SearchesRelativeToTheIncludingFileNotTheRoot) {
     EXPECT_EQ(expanded->text.find("far\n"), std::string::npos);
 }
 
+// Unity resolves "Assets/..." from the project root: the folder above the shader holding Assets/.
+TEST(IncludeResolver, FindsProjectRootPathsFromTheNearestFolderAboveThatHasThem) {
+    Harness h;
+    h.file("repo/Game/Assets/Shaders/main.shader", "#include \"Assets/Lib/Noise.cginc\"\n")
+        .file("repo/Game/Assets/Lib/Noise.cginc", "noise\n")
+        .file("repo/Assets/Lib/Noise.cginc", "too far\n");
+    auto expanded = h.expandFile("repo/Game/Assets/Shaders/main.shader");
+    ASSERT_TRUE(expanded.has_value());
+    EXPECT_THAT(expanded->dependencies, ElementsAre("repo/Game/Assets/Lib/Noise.cginc"));
+    EXPECT_FALSE(h.diagnostics.hasErrors());
+}
+
+TEST(IncludeResolver, AGivenProjectRootIsTheOnlyPlaceForProjectRootPaths) {
+    Harness h;
+    h.options.projectRoot = "other";
+    h.file("game/Assets/main.shader", "#include \"Assets/Lib/Noise.cginc\"\n")
+        .file("game/Assets/Lib/Noise.cginc", "near\n")
+        .file("other/Assets/Lib/Noise.cginc", "chosen\n");
+    auto expanded = h.expandFile("game/Assets/main.shader");
+    ASSERT_TRUE(expanded.has_value());
+    EXPECT_THAT(expanded->dependencies, ElementsAre("other/Assets/Lib/Noise.cginc"));
+
+    Harness missing;
+    missing.options.projectRoot = "nowhere";
+    missing.file("game/main.shader", "#include \"Assets/x.cginc\"\n");
+    EXPECT_FALSE(missing.expandFile("game/main.shader").has_value());
+    ASSERT_TRUE(missing.diagnostics.hasErrors());
+    EXPECT_NE(missing.diagnostics.diagnostics()[0].message.find("nowhere (project root)"),
+              std::string::npos)
+        << missing.diagnostics.diagnostics()[0].message;
+}
+
+// Projects made on Windows or macOS include "Autolight.cginc" for AutoLight.cginc.
+TEST(IncludeResolver, AFileNameDifferingOnlyInCaseIsFoundWithAWarning) {
+    Harness h;
+    h.builtinDir("builtin");
+    h.file("s/main.shader", "#include \"Autolight.cginc\"\n").file("builtin/AutoLight.cginc", "A\n");
+    auto expanded = h.expandFile("s/main.shader");
+    ASSERT_TRUE(expanded.has_value());
+    EXPECT_THAT(expanded->dependencies, ElementsAre("builtin/AutoLight.cginc"));
+    ASSERT_EQ(h.diagnostics.diagnostics().size(), 1u);
+    EXPECT_EQ(h.diagnostics.diagnostics()[0].severity, Severity::Warning);
+    EXPECT_NE(h.diagnostics.diagnostics()[0].message.find("differs in case"), std::string::npos);
+}
+
+TEST(IncludeResolver, AnExactNameWinsOverOneDifferingInCase) {
+    Harness h;
+    h.builtinDir("builtin");
+    h.file("s/main.shader", "#include \"x.h\"\n").file("s/X.h", "near\n").file("builtin/x.h", "exact\n");
+    auto expanded = h.expandFile("s/main.shader");
+    ASSERT_TRUE(expanded.has_value());
+    EXPECT_THAT(expanded->dependencies, ElementsAre("builtin/x.h"));
+    EXPECT_TRUE(h.diagnostics.diagnostics().empty());
+}
+
 TEST(IncludeResolver, AcceptsSpacesInQuotedAndAngledNames) {
     Harness h;
     h.builtinDir("builtin");
@@ -259,6 +314,9 @@ public:
         return mInner.read(path);
     }
     bool isFile(const std::string& path) const override { return mInner.isFile(path); }
+    std::vector<std::string> fileNames(const std::string& dir) const override {
+        return mInner.fileNames(dir);
+    }
     int reads(const std::string& path) const {
         auto it = mReads.find(path);
         return it == mReads.end() ? 0 : it->second;

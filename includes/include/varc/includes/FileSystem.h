@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace varc::includes {
 
@@ -15,6 +16,9 @@ public:
     // Returns the whole file, or nullopt when |path| is not a readable regular file.
     virtual std::optional<std::string> read(const std::string& path) const = 0;
     virtual bool isFile(const std::string& path) const = 0;
+    // Names of the regular files directly in |dir| ("" is the current directory), sorted; empty
+    // when |dir| cannot be listed.
+    virtual std::vector<std::string> fileNames(const std::string& dir) const = 0;
 };
 
 // The real file system.
@@ -22,6 +26,7 @@ class DiskFileSystem final : public FileSystem {
 public:
     std::optional<std::string> read(const std::string& path) const override;
     bool isFile(const std::string& path) const override;
+    std::vector<std::string> fileNames(const std::string& dir) const override;
 };
 
 // Files held in memory, for tests. Example:
@@ -32,6 +37,7 @@ public:
     InMemoryFileSystem& add(const std::string& path, std::string contents);
     std::optional<std::string> read(const std::string& path) const override;
     bool isFile(const std::string& path) const override;
+    std::vector<std::string> fileNames(const std::string& dir) const override;
 
 private:
     std::map<std::string, std::string> mFiles;  // keyed by normalised path

@@ -25,6 +25,9 @@ inline constexpr size_t kMaxIncludeDepth = 64;
 struct IncludeOptions {
     std::vector<std::string> includeDirs;  // -I directories, in command-line order
     std::string builtinDir;                // varc's built-in include directory ("" = none)
+    // Where `#include "Assets/..."` and `"Packages/..."` (paths written from a Unity project's
+    // root) are found; "" = the nearest ancestor of the including file that has them.
+    std::string projectRoot;
 };
 
 // A piece of source to expand: text that lives at |origin| (a whole file, or a CGPROGRAM

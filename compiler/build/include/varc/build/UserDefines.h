@@ -12,10 +12,11 @@ namespace varc::compiler {
 
 class UserDefines {
 public:
-    // Collects each `#define NAME replacement` line of |text| (object-like macros only; the
-    // first definition of a name wins; `//` comments and trailing blanks are not part of the
-    // replacement). Example: "#define UNITY_PASS_FORWARDBASE\n" defines UNITY_PASS_FORWARDBASE
-    // as "".
+    // Collects each `#define UNITY_PASS_<NAME>` line of |text| whose replacement is empty or 1
+    // (the first definition of a name wins; `//` comments and trailing blanks are not part of
+    // the replacement). Only those: other predefined macros (SHADER_TARGET, keywords) keep
+    // varc's value, since a text's `#ifndef X` / `#define X default` must not override it.
+    // Example: "#define UNITY_PASS_FORWARDBASE\n" defines UNITY_PASS_FORWARDBASE as "".
     explicit UserDefines(std::string_view text);
 
     // |preamble| with every `#define NAME value` line whose NAME the text defines itself

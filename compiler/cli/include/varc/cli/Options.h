@@ -22,6 +22,7 @@ struct Options {
     Command command = Command::None;
     std::vector<std::string> inputs;       // files, or directories searched for *.shader
     std::vector<std::string> includeDirs;  // -I
+    std::string projectRoot;               // --project-root ("" = found from each shader)
     std::string builtinIncludeDir;         // --builtin-include-dir or VARC_BUILTIN_INCLUDE_DIR
     bool json = false;                     // --json
     bool list = false;                     // --list
