@@ -12,6 +12,7 @@
 #include "varc/build/SpirvReflection.h"
 #include "varc/core/JoinWords.h"
 #include "varc/frontend/EntryPointCheck.h"
+#include "varc/frontend/HlslRewrites.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::compiler::detail {
@@ -29,6 +30,15 @@ std::vector<std::string> splitWords(std::string_view text) {
         if (i > begin) words.emplace_back(text.substr(begin, i - begin));
     }
     return words;
+}
+
+// Whether glslang refused |program| for a construct Unity's HLSL compilers accept and
+// rewriteHlslForGlslang makes explicit. Only such programs are rewritten, so every program
+// glslang accepts as written compiles exactly as before.
+bool needsHlslRewrite(const StageProgram& program, const std::string& log) {
+    return program.language != shaderlab::ProgramLanguage::Glsl &&
+           (log.find("condition must be a scalar integer expression") != std::string::npos ||
+            log.find("can't modify a uniform") != std::string::npos);
 }
 
 }  // namespace
@@ -74,6 +84,14 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
     }
     CompileOutput compiled =
         compileProgram({program.text, "", program.language, program.stage, program.entryPoint});
+    if (!compiled.ok && needsHlslRewrite(program, compiled.log)) {
+        std::string rewritten = rewriteHlslForGlslang(program.text);
+        if (rewritten != program.text) {
+            CompileOutput retried = compileProgram(
+                {rewritten, "", program.language, program.stage, program.entryPoint});
+            if (retried.ok) compiled = std::move(retried);
+        }
+    }
     result.diagnostics = parseGlslangLog(compiled.log, sourceMap);
     if (!compiled.ok) return result;
     SpirvResult optimized = optimizeSpirv(compiled.spirv, options.optimization);

@@ -1,0 +1,262 @@
+// SPDX-License-Identifier: Apache-2.0
+// Source rewrites that let glslang's HLSL front end accept what Unity's HLSL compilers accept.
+#include "varc/frontend/HlslRewrites.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "pruner/ShaderTokenizer.h"
+
+namespace varc::compiler {
+
+namespace {
+
+using pruner::Token;
+using pruner::TokenKind;
+
+// Text inserted at an offset of the original text; applied from the back.
+struct Insertion {
+    size_t offset = 0;
+    std::string text;
+    bool operator<(const Insertion& other) const { return offset < other.offset; }
+};
+
+struct Replacement {
+    size_t offset = 0, length = 0;
+    std::string text;
+};
+
+bool isPunct(const Token& token, char c) {
+    return token.kind == TokenKind::Punct && token.text.size() == 1 && token.text[0] == c;
+}
+
+class Rewriter {
+public:
+    explicit Rewriter(const pruner::ShaderTokenizer& tokens)
+        : mTokenizer(tokens), mTokens(tokens.tokens()) {}
+
+    std::string rewrite(std::string_view text) {
+        markDeclarationBodies();
+        castSwitchConditions();
+        copyWrittenUniforms();
+        if (mInsertions.empty() && mReplacements.empty()) return std::string(text);
+        for (const Insertion& insertion : mInsertions) {
+            mReplacements.push_back({insertion.offset, 0, insertion.text});
+        }
+        std::stable_sort(mReplacements.begin(), mReplacements.end(),
+                         [](const Replacement& a, const Replacement& b) { return a.offset > b.offset; });
+        std::string result(text);
+        for (const Replacement& r : mReplacements) result.replace(r.offset, r.length, r.text);
+        return result;
+    }
+
+private:
+    size_t offsetOf(size_t i) const { return mTokenizer.offsetOf(mTokens[i]); }
+    size_t endOf(size_t i) const { return offsetOf(i) + mTokens[i].text.size(); }
+    bool adjacent(size_t a, size_t b) const { return endOf(a) == offsetOf(b); }
+    bool is(size_t i, char c) const { return i < mTokens.size() && isPunct(mTokens[i], c); }
+    bool isWord(size_t i, std::string_view word) const {
+        return i < mTokens.size() && mTokens[i].kind == TokenKind::Identifier &&
+               mTokens[i].text == word;
+    }
+
+    // The index of the token closing the bracket opened at |open|, or npos.
+    size_t matching(size_t open) const {
+        char opener = mTokens[open].text[0];
+        char closer = opener == '(' ? ')' : opener == '[' ? ']' : '}';
+        int depth = 0;
+        for (size_t i = open; i < mTokens.size(); ++i) {
+            if (is(i, opener)) ++depth;
+            if (is(i, closer) && --depth == 0) return i;
+        }
+        return std::string::npos;
+    }
+
+    // Brace depth of every token, and whether it lies in a struct or cbuffer body, where names
+    // are members rather than uses.
+    void markDeclarationBodies() {
+        mDepth.assign(mTokens.size(), 0);
+        mInDeclarationBody.assign(mTokens.size(), false);
+        std::vector<bool> bodyStack;
+        bool pendingBody = false;
+        int depth = 0;
+        for (size_t i = 0; i < mTokens.size(); ++i) {
+            if (isWord(i, "struct") || isWord(i, "cbuffer") || isWord(i, "tbuffer")) {
+                pendingBody = true;
+            }
+            if (is(i, ';') || is(i, '(')) pendingBody = false;
+            if (is(i, '{')) {
+                bodyStack.push_back(pendingBody || (!bodyStack.empty() && bodyStack.back()));
+                pendingBody = false;
+                ++depth;
+            }
+            mDepth[i] = depth;
+            mInDeclarationBody[i] = !bodyStack.empty() && bodyStack.back();
+            if (is(i, '}') && depth > 0) {
+                --depth;
+                bodyStack.pop_back();
+            }
+        }
+    }
+
+    void castSwitchConditions() {
+        for (size_t i = 0; i + 1 < mTokens.size(); ++i) {
+            if (!isWord(i, "switch") || !is(i + 1, '(')) continue;
+            size_t close = matching(i + 1);
+            if (close == std::string::npos || close + 1 >= mTokens.size() || !is(close + 1, '{')) {
+                continue;
+            }
+            size_t bodyEnd = matching(close + 1);
+            if (bodyEnd == std::string::npos || hasUnsignedCase(close + 1, bodyEnd)) continue;
+            mInsertions.push_back({endOf(i + 1), "(int)("});
+            mInsertions.push_back({offsetOf(close), ")"});
+        }
+    }
+
+    bool hasUnsignedCase(size_t begin, size_t end) const {
+        for (size_t i = begin; i + 1 < end; ++i) {
+            if (!isWord(i, "case") || mTokens[i + 1].kind != TokenKind::Number) continue;
+            char last = mTokens[i + 1].text.back();
+            if (last == 'u' || last == 'U') return true;
+        }
+        return false;
+    }
+
+    // A ';' at file scope, or a brace opening or closing a file-scope body (mDepth counts the
+    // brace itself as inside).
+    bool endsTopLevelStatement(size_t i) const {
+        return (is(i, ';') && mDepth[i] == 0) || ((is(i, '{') || is(i, '}')) && mDepth[i] == 1);
+    }
+
+    // A loose uniform declarator at file scope: `[uniform] Type name {, name};`.
+    struct Declarator {
+        size_t nameToken = 0;
+        size_t statementEnd = 0;  // the ';'
+        std::string type;
+    };
+
+    std::vector<Declarator> looseUniforms() const {
+        static const std::set<std::string_view> kNotUniform = {
+            "static", "const",   "struct",   "typedef", "cbuffer", "tbuffer", "groupshared",
+            "extern", "return",  "namespace", "class",  "interface", "in", "out", "inout"};
+        std::vector<Declarator> found;
+        size_t start = 0;
+        for (size_t i = 0; i < mTokens.size(); ++i) {
+            if (!endsTopLevelStatement(i)) continue;
+            if (is(i, ';') && i > start) collectDeclarators(start, i, kNotUniform, found);
+            start = i + 1;
+        }
+        return found;
+    }
+
+    void collectDeclarators(size_t begin, size_t end, const std::set<std::string_view>& excluded,
+                            std::vector<Declarator>& found) const {
+        for (size_t i = begin; i < end; ++i) {
+            if (is(i, '(') || is(i, '=') || is(i, '[') || is(i, '<') || is(i, ':')) return;
+            if (mTokens[i].kind == TokenKind::Identifier && excluded.count(mTokens[i].text)) return;
+            if (mDepth[i] != 0) return;
+        }
+        size_t typeBegin = isWord(begin, "uniform") ? begin + 1 : begin;
+        // Type tokens run up to the first name followed by ',' or ';'.
+        size_t first = typeBegin + 1;
+        if (first >= end || mTokens[typeBegin].kind != TokenKind::Identifier) return;
+        while (first < end && !(mTokens[first].kind == TokenKind::Identifier &&
+                                (is(first + 1, ',') || first + 1 == end))) {
+            ++first;
+        }
+        if (first >= end) return;
+        std::string type(mTokenizer.code().substr(offsetOf(typeBegin),
+                                                  endOf(first - 1) - offsetOf(typeBegin)));
+        if (type.rfind("sampler", 0) == 0 || type.rfind("Texture", 0) == 0 ||
+            type.rfind("SamplerState", 0) == 0 || type.rfind("SamplerComparisonState", 0) == 0 ||
+            type.find("Buffer") != std::string::npos) {
+            return;  // resources are not $Global members
+        }
+        for (size_t i = first; i < end; i += 2) {
+            if (mTokens[i].kind != TokenKind::Identifier) return;
+            found.push_back({i, end, type});
+            if (i + 1 < end && !is(i + 1, ',')) return;
+        }
+    }
+
+    // Whether the use of a name at |i| writes it: `x = `, `x op= `, `x.yz = `, `x[i] = `,
+    // `x++`, `++x`.
+    bool isWrite(size_t i) const {
+        if (i >= 2 && (is(i - 1, '+') || is(i - 1, '-')) && is(i - 2, mTokens[i - 1].text[0]) &&
+            adjacent(i - 2, i - 1)) {
+            return true;
+        }
+        size_t j = i + 1;
+        while (j < mTokens.size()) {
+            if (is(j, '.') && j + 1 < mTokens.size() &&
+                mTokens[j + 1].kind == TokenKind::Identifier) {
+                j += 2;
+            } else if (is(j, '[')) {
+                size_t close = matching(j);
+                if (close == std::string::npos) return false;
+                j = close + 1;
+            } else {
+                break;
+            }
+        }
+        if (j >= mTokens.size() || mTokens[j].kind != TokenKind::Punct) return false;
+        char c = mTokens[j].text[0];
+        bool next = j + 1 < mTokens.size() && adjacent(j, j + 1);
+        if (c == '=') return !(next && is(j + 1, '='));
+        if ((c == '+' || c == '-') && next && is(j + 1, c)) return true;
+        if (std::string_view("+-*/%&|^").find(c) != std::string_view::npos) {
+            return next && is(j + 1, '=');
+        }
+        if ((c == '<' || c == '>') && next && is(j + 1, c)) {
+            return j + 2 < mTokens.size() && adjacent(j + 1, j + 2) && is(j + 2, '=');
+        }
+        return false;
+    }
+
+    bool isUse(size_t i, std::string_view name) const {
+        return mTokens[i].kind == TokenKind::Identifier && mTokens[i].text == name &&
+               !mInDeclarationBody[i] && !(i > 0 && is(i - 1, '.'));
+    }
+
+    void copyWrittenUniforms() {
+        for (const Declarator& uniform : looseUniforms()) {
+            std::string_view name = mTokens[uniform.nameToken].text;
+            bool written = false;
+            for (size_t i = 0; i < mTokens.size() && !written; ++i) {
+                written = mDepth[i] > 0 && isUse(i, name) && isWrite(i);
+            }
+            if (!written) continue;
+            std::string copy = std::string(name) + "_varcCopy";
+            mInsertions.push_back({endOf(uniform.statementEnd), " static " + uniform.type + " " +
+                                                                     copy + " = " +
+                                                                     std::string(name) + ";"});
+            size_t statementBegin = uniform.nameToken;
+            while (statementBegin > 0 && !endsTopLevelStatement(statementBegin - 1)) {
+                --statementBegin;
+            }
+            for (size_t i = 0; i < mTokens.size(); ++i) {
+                if (i >= statementBegin && i <= uniform.statementEnd) continue;
+                if (isUse(i, name)) mReplacements.push_back({offsetOf(i), name.size(), copy});
+            }
+        }
+    }
+
+    const pruner::ShaderTokenizer& mTokenizer;
+    const std::vector<Token>& mTokens;
+    std::vector<int> mDepth;
+    std::vector<bool> mInDeclarationBody;
+    std::vector<Insertion> mInsertions;
+    std::vector<Replacement> mReplacements;
+};
+
+}  // namespace
+
+std::string rewriteHlslForGlslang(std::string_view text) {
+    pruner::ShaderTokenizer tokenizer;
+    if (!tokenizer.tokenize(text)) return std::string(text);
+    return Rewriter(tokenizer).rewrite(text);
+}
+
+}  // namespace varc::compiler

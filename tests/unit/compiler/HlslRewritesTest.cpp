@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: Apache-2.0
+// rewriteHlslForGlslang: switch conditions cast to int, written loose uniforms given a copy.
+#include "varc/frontend/HlslRewrites.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace varc::compiler {
+namespace {
+
+size_t lineCount(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+
+TEST(HlslRewrites, ASwitchConditionIsConvertedToInt) {
+    std::string text = "float4 f(float x : TEXCOORD0) : SV_Target {\n"
+                       "    switch (x * 2) { case 1: return 1; default: return 0; }\n}\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "float4 f(float x : TEXCOORD0) : SV_Target {\n"
+              "    switch ((int)(x * 2)) { case 1: return 1; default: return 0; }\n}\n");
+}
+
+TEST(HlslRewrites, ASwitchWithUnsignedCasesIsLeftAlone) {
+    std::string text = "uint f(uint x) { switch (x) { case 1u: return 1u; } return 0u; }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text), text);
+}
+
+TEST(HlslRewrites, AWrittenLooseUniformGetsAPerInvocationCopy) {
+    std::string text =
+        "#line 1 0\n"
+        "uniform float _Speed;\n"
+        "float4 _Color;\n"
+        "float twice() { _Speed *= 2; return _Speed; }\n"
+        "float4 f() : SV_Target { _Color.a = twice(); return _Color; }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "#line 1 0\n"
+              "uniform float _Speed; static float _Speed_varcCopy = _Speed;\n"
+              "float4 _Color; static float4 _Color_varcCopy = _Color;\n"
+              "float twice() { _Speed_varcCopy *= 2; return _Speed_varcCopy; }\n"
+              "float4 f() : SV_Target { _Color_varcCopy.a = twice(); return _Color_varcCopy; }\n");
+}
+
+TEST(HlslRewrites, EveryFormOfWriteIsSeenAndReadsAreNot) {
+    for (std::string write : {"_A = 1;", "_A += 1;", "_A <<= 1;", "_A++;", "--_A;", "_A.x = 1;",
+                              "_A[0] = 1;", "_A.xy[0] |= 1;"}) {
+        std::string text = "float4 _A;\nvoid f() { " + write + " }\n";
+        EXPECT_NE(rewriteHlslForGlslang(text).find("_A_varcCopy"), std::string::npos) << write;
+    }
+    for (std::string read : {"float b = _A.x;", "bool b = _A == 1;", "bool b = _A <= 1;",
+                             "float b = _A - -1;", "float b = _A << 1;", "s._A = 1;"}) {
+        std::string text = "float4 _A;\nstruct S { float _A; };\nvoid f(S s) { " + read + " }\n";
+        EXPECT_EQ(rewriteHlslForGlslang(text), text) << read;
+    }
+}
+
+TEST(HlslRewrites, MembersStaticsConstantsArraysAndResourcesAreNotCopied) {
+    std::string text =
+        "struct V { float _A; };\n"
+        "cbuffer C { float _B; };\n"
+        "static float _C;\n"
+        "const float _D = 1;\n"
+        "float _E[4];\n"
+        "sampler2D _F;\n"
+        "void f(V v) { v._A = 1; _C = 2; _E[0] = 3; }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text), text);
+}
+
+TEST(HlslRewrites, SeveralDeclaratorsAndParametersOfTheSameNameStayConsistent) {
+    std::string text = "float _A, _B;\nfloat g(float _A) { _A = 1; return _A + _B; }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "float _A, _B; static float _A_varcCopy = _A;\n"
+              "float g(float _A_varcCopy) { _A_varcCopy = 1; return _A_varcCopy + _B; }\n");
+}
+
+TEST(HlslRewrites, NoLineIsAddedOrRemoved) {
+    std::string text = "float _T;\n\nfloat4 f() : SV_Target {\n _T = 2;\n switch (_T) {\n"
+                       " default: break;\n }\n return _T;\n}\n";
+    std::string rewritten = rewriteHlslForGlslang(text);
+    EXPECT_NE(rewritten, text);
+    EXPECT_EQ(lineCount(rewritten), lineCount(text));
+}
+
+TEST(HlslRewrites, TextThatCannotBeTokenisedIsReturnedAsIs) {
+    std::string text = "float _A; void f() { _A = 1; } /* unterminated";
+    EXPECT_EQ(rewriteHlslForGlslang(text), text);
+}
+
+}  // namespace
+}  // namespace varc::compiler
