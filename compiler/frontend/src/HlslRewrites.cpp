@@ -41,6 +41,7 @@ public:
         markDeclarationBodies();
         castSwitchConditions();
         copyWrittenUniforms();
+        spellOutMatrixSwizzles();
         if (mInsertions.empty() && mReplacements.empty()) return std::string(text);
         for (const Insertion& insertion : mInsertions) {
             mReplacements.push_back({insertion.offset, 0, insertion.text});
@@ -80,21 +81,28 @@ private:
         mDepth.assign(mTokens.size(), 0);
         mInDeclarationBody.assign(mTokens.size(), false);
         std::vector<bool> bodyStack;
-        bool pendingBody = false;
+        bool pendingBody = false, pendingCbuffer = false;
+        size_t cbufferOpen = std::string::npos;
         int depth = 0;
         for (size_t i = 0; i < mTokens.size(); ++i) {
             if (isWord(i, "struct") || isWord(i, "cbuffer") || isWord(i, "tbuffer")) {
                 pendingBody = true;
+                pendingCbuffer = isWord(i, "cbuffer") && depth == 0;
             }
-            if (is(i, ';') || is(i, '(')) pendingBody = false;
+            if (is(i, ';') || is(i, '(')) pendingBody = pendingCbuffer = false;
             if (is(i, '{')) {
                 bodyStack.push_back(pendingBody || (!bodyStack.empty() && bodyStack.back()));
-                pendingBody = false;
+                if (pendingCbuffer) cbufferOpen = i;
+                pendingBody = pendingCbuffer = false;
                 ++depth;
             }
             mDepth[i] = depth;
             mInDeclarationBody[i] = !bodyStack.empty() && bodyStack.back();
             if (is(i, '}') && depth > 0) {
+                if (depth == 1 && cbufferOpen != std::string::npos) {
+                    mCbufferBodies.push_back({cbufferOpen, i});
+                    cbufferOpen = std::string::npos;
+                }
                 --depth;
                 bodyStack.pop_back();
             }
@@ -115,6 +123,45 @@ private:
         }
     }
 
+    // `M._m20_m21_m22` -> `float3(M[2][0], M[2][1], M[2][2])` and `M._11_22` ->
+    // `float2(M[0][0], M[1][1])` (zero- and one-based element names; row, then column), for a
+    // matrix named by one identifier. Single elements (`M._m03`) glslang reads itself.
+    void spellOutMatrixSwizzles() {
+        for (size_t i = 2; i < mTokens.size(); ++i) {
+            if (mTokens[i].kind != TokenKind::Identifier || !is(i - 1, '.') ||
+                mTokens[i - 2].kind != TokenKind::Identifier || (i >= 3 && is(i - 3, '.'))) {
+                continue;
+            }
+            std::vector<std::pair<int, int>> elements = matrixElements(mTokens[i].text);
+            if (elements.size() < 2) continue;
+            std::string matrix(mTokens[i - 2].text);
+            std::string text = "float" + std::to_string(elements.size()) + "(";
+            for (size_t e = 0; e < elements.size(); ++e) {
+                text += (e ? ", " : "") + matrix + "[" + std::to_string(elements[e].first) + "][" +
+                        std::to_string(elements[e].second) + "]";
+            }
+            mReplacements.push_back({offsetOf(i - 2), endOf(i) - offsetOf(i - 2), text + ")"});
+        }
+    }
+
+    // "_m20_m21" -> {(2,0), (2,1)}; "_11_22" -> {(0,0), (1,1)}; anything else -> {}.
+    static std::vector<std::pair<int, int>> matrixElements(std::string_view name) {
+        std::vector<std::pair<int, int>> elements;
+        size_t i = 0;
+        while (i < name.size() && elements.size() < 4) {
+            if (name[i] != '_') return {};
+            bool zeroBased = i + 1 < name.size() && name[i + 1] == 'm';
+            size_t digits = i + (zeroBased ? 2 : 1);
+            if (digits + 2 > name.size()) return {};
+            int row = name[digits] - (zeroBased ? '0' : '1');
+            int column = name[digits + 1] - (zeroBased ? '0' : '1');
+            if (row < 0 || row > 3 || column < 0 || column > 3) return {};
+            elements.emplace_back(row, column);
+            i = digits + 2;
+        }
+        return i == name.size() ? elements : std::vector<std::pair<int, int>>{};
+    }
+
     bool hasUnsignedCase(size_t begin, size_t end) const {
         for (size_t i = begin; i + 1 < end; ++i) {
             if (!isWord(i, "case") || mTokens[i + 1].kind != TokenKind::Number) continue;
@@ -130,10 +177,11 @@ private:
         return (is(i, ';') && mDepth[i] == 0) || ((is(i, '{') || is(i, '}')) && mDepth[i] == 1);
     }
 
-    // A loose uniform declarator at file scope: `[uniform] Type name {, name};`.
+    // A uniform declarator: `[uniform] Type name {, name};` at file scope or in a cbuffer.
     struct Declarator {
         size_t nameToken = 0;
-        size_t statementEnd = 0;  // the ';'
+        size_t statementBegin = 0, statementEnd = 0;  // first token and the ';'
+        size_t copyAfter = 0;  // the token after which the copy is declared
         std::string type;
     };
 
@@ -145,18 +193,30 @@ private:
         size_t start = 0;
         for (size_t i = 0; i < mTokens.size(); ++i) {
             if (!endsTopLevelStatement(i)) continue;
-            if (is(i, ';') && i > start) collectDeclarators(start, i, kNotUniform, found);
+            if (is(i, ';') && i > start) collectDeclarators(start, i, 0, i, kNotUniform, found);
             start = i + 1;
+        }
+        // cbuffer members: Unity declares its built-ins (_LightColor0, ...) as loose globals,
+        // which shaders may write; varc's library groups them in cbuffers.
+        for (const auto& [open, close] : mCbufferBodies) {
+            size_t copyAfter = is(close + 1, ';') ? close + 1 : close;
+            size_t begin = open + 1;
+            for (size_t i = open + 1; i < close; ++i) {
+                if (!is(i, ';') || mDepth[i] != 1) continue;
+                if (i > begin) collectDeclarators(begin, i, 1, copyAfter, kNotUniform, found);
+                begin = i + 1;
+            }
         }
         return found;
     }
 
-    void collectDeclarators(size_t begin, size_t end, const std::set<std::string_view>& excluded,
+    void collectDeclarators(size_t begin, size_t end, int depth, size_t copyAfter,
+                            const std::set<std::string_view>& excluded,
                             std::vector<Declarator>& found) const {
         for (size_t i = begin; i < end; ++i) {
             if (is(i, '(') || is(i, '=') || is(i, '[') || is(i, '<') || is(i, ':')) return;
             if (mTokens[i].kind == TokenKind::Identifier && excluded.count(mTokens[i].text)) return;
-            if (mDepth[i] != 0) return;
+            if (mDepth[i] != depth) return;
         }
         size_t typeBegin = isWord(begin, "uniform") ? begin + 1 : begin;
         // Type tokens run up to the first name followed by ',' or ';'.
@@ -176,7 +236,7 @@ private:
         }
         for (size_t i = first; i < end; i += 2) {
             if (mTokens[i].kind != TokenKind::Identifier) return;
-            found.push_back({i, end, type});
+            found.push_back({i, begin, end, copyAfter, type});
             if (i + 1 < end && !is(i + 1, ',')) return;
         }
     }
@@ -229,15 +289,11 @@ private:
             }
             if (!written) continue;
             std::string copy = std::string(name) + "_varcCopy";
-            mInsertions.push_back({endOf(uniform.statementEnd), " static " + uniform.type + " " +
-                                                                     copy + " = " +
-                                                                     std::string(name) + ";"});
-            size_t statementBegin = uniform.nameToken;
-            while (statementBegin > 0 && !endsTopLevelStatement(statementBegin - 1)) {
-                --statementBegin;
-            }
+            mInsertions.push_back({endOf(uniform.copyAfter), " static " + uniform.type + " " +
+                                                                   copy + " = " +
+                                                                   std::string(name) + ";"});
             for (size_t i = 0; i < mTokens.size(); ++i) {
-                if (i >= statementBegin && i <= uniform.statementEnd) continue;
+                if (i >= uniform.statementBegin && i <= uniform.statementEnd) continue;
                 if (isUse(i, name)) mReplacements.push_back({offsetOf(i), name.size(), copy});
             }
         }
@@ -247,6 +303,8 @@ private:
     const std::vector<Token>& mTokens;
     std::vector<int> mDepth;
     std::vector<bool> mInDeclarationBody;
+    std::vector<std::pair<size_t, size_t>> mCbufferBodies;  // file-scope cbuffer '{' and '}'
+
     std::vector<Insertion> mInsertions;
     std::vector<Replacement> mReplacements;
 };

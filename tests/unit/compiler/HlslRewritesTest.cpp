@@ -64,11 +64,32 @@ TEST(HlslRewrites, MembersStaticsConstantsArraysAndResourcesAreNotCopied) {
     EXPECT_EQ(rewriteHlslForGlslang(text), text);
 }
 
+TEST(HlslRewrites, AWrittenCbufferMemberGetsACopyAfterTheBlock) {
+    std::string text = "cbuffer UnityLighting {\n float4 _LightColor0;\n float4 _Other;\n};\n"
+                       "float4 f() : SV_Target { _LightColor0 *= 0.5; return _LightColor0; }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "cbuffer UnityLighting {\n float4 _LightColor0;\n float4 _Other;\n}; static float4 "
+              "_LightColor0_varcCopy = _LightColor0;\n"
+              "float4 f() : SV_Target { _LightColor0_varcCopy *= 0.5; return "
+              "_LightColor0_varcCopy; }\n");
+}
+
 TEST(HlslRewrites, SeveralDeclaratorsAndParametersOfTheSameNameStayConsistent) {
     std::string text = "float _A, _B;\nfloat g(float _A) { _A = 1; return _A + _B; }\n";
     EXPECT_EQ(rewriteHlslForGlslang(text),
               "float _A, _B; static float _A_varcCopy = _A;\n"
               "float g(float _A_varcCopy) { _A_varcCopy = 1; return _A_varcCopy + _B; }\n");
+}
+
+TEST(HlslRewrites, MatrixSwizzlesOfSeveralElementsAreSpelledOut) {
+    std::string text = "float4x4 unity_MatrixV;\nfloat3 f() { return unity_MatrixV._m20_m21_m22 +"
+                       " unity_MatrixV._11_22_33 + unity_MatrixV._m03; }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "float4x4 unity_MatrixV;\nfloat3 f() { return float3(unity_MatrixV[2][0], "
+              "unity_MatrixV[2][1], unity_MatrixV[2][2]) + float3(unity_MatrixV[0][0], "
+              "unity_MatrixV[1][1], unity_MatrixV[2][2]) + unity_MatrixV._m03; }\n");
+    std::string notSwizzles = "float4 f(S s) { return s.m._m00_m11.xxxx + v._m44_m00 + v._xy; }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(notSwizzles), notSwizzles);
 }
 
 TEST(HlslRewrites, NoLineIsAddedOrRemoved) {

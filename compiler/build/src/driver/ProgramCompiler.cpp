@@ -38,7 +38,8 @@ std::vector<std::string> splitWords(std::string_view text) {
 bool needsHlslRewrite(const StageProgram& program, const std::string& log) {
     return program.language != shaderlab::ProgramLanguage::Glsl &&
            (log.find("condition must be a scalar integer expression") != std::string::npos ||
-            log.find("can't modify a uniform") != std::string::npos);
+            log.find("can't modify a uniform") != std::string::npos ||
+            log.find("Missing functionality: matrix swizzle") != std::string::npos);
 }
 
 }  // namespace
@@ -89,7 +90,9 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
         if (rewritten != program.text) {
             CompileOutput retried = compileProgram(
                 {rewritten, "", program.language, program.stage, program.entryPoint});
-            if (retried.ok) compiled = std::move(retried);
+            // Either way the rewritten program's outcome is the one to report: its errors are
+            // the ones left once the constructs Unity accepts are accepted.
+            compiled = std::move(retried);
         }
     }
     result.diagnostics = parseGlslangLog(compiled.log, sourceMap);

@@ -8,18 +8,24 @@
 namespace varc::compiler {
 
 // Rewrites a preprocessed HLSL program (no macros left, `#line` directives allowed) so glslang
-// compiles two constructs that the DirectX compilers accept and glslang refuses:
+// compiles constructs that the DirectX compilers accept and glslang refuses:
 //
 //  * `switch` on a non-integer: `switch (f)` -> `switch ((int)(f))`, the conversion the DirectX
 //    compilers apply. A switch whose case labels carry a `u` suffix is left alone (its
 //    condition is unsigned already).
-//  * A loose uniform (a non-static, non-const global outside any cbuffer) written by the code:
-//    DirectX treats such a global as a per-invocation copy initialised from the uniform. The
-//    rewrite makes that copy explicit: after the declaration `float _Speed;` comes
+//  * A uniform written by the code: a non-static, non-const global, or a member of a file-scope
+//    cbuffer (Unity declares its built-ins such as _LightColor0 as loose globals; varc's library
+//    groups them in cbuffers). DirectX treats a written global as a per-invocation copy
+//    initialised from the uniform. The rewrite makes that copy explicit: after the declaration
+//    `float _Speed;` (after the cbuffer's closing brace for a member) comes
 //    ` static float _Speed_varcCopy = _Speed;` on the same line, and every other use of the name
 //    (outside struct and cbuffer bodies, not after a `.`) is renamed to the copy. The uniform
 //    keeps its name, so reflection and binding by name are unchanged. Arrays and declarations
 //    with initialisers are left alone.
+//
+//  * Matrix swizzles of several elements, which glslang does not implement:
+//    `M._m20_m21_m22` -> `float3(M[2][0], M[2][1], M[2][2])` (also the one-based `M._11_22`),
+//    for a matrix named by one identifier.
 //
 // No line is added or removed, so every `#line` mapping still holds. Returns |text| unchanged
 // when there is nothing to rewrite or the text cannot be tokenised.
