@@ -62,10 +62,11 @@ while IFS= read -r -d '' file; do
         tail -5 "$log.build"
         status=1
     fi
-    # A glslang message without our file:line mapping (ERROR: 0:12: ...) must never reach a user.
-    if grep -q -E '^(ERROR|WARNING): [0-9]+:' "$log.build"; then
-        echo "FAIL: $rel: an unmapped glslang message reached the output"
-        grep -m3 -E '^(ERROR|WARNING): [0-9]+:' "$log.build"
+    # A glslang message without our file:line mapping (ERROR: 0:12: ...), or an error that
+    # names no file and line at all, must never reach a user.
+    if grep -q -E '^(ERROR|WARNING): [0-9]+:|^varc: (error|warning):' "$log.build"; then
+        echo "FAIL: $rel: a message without its file:line reached the output"
+        grep -m3 -E '^(ERROR|WARNING): [0-9]+:|^varc: (error|warning):' "$log.build"
         status=1
     fi
     if [ "$bstatus" -eq 0 ]; then

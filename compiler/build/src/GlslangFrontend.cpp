@@ -118,7 +118,10 @@ CompileOutput compileProgram(const FrontendInput& input) {
     glslang::GlslangToSpv(*program.getIntermediate(toGlslangStage(input.stage)), output.spirv,
                           &logger, &options);
     output.log = logger.getAllMessages();
-    output.ok = !output.spirv.empty();
+    // glslang still emits a module when SPIR-V generation meets something it does not implement
+    // (a matrix swizzle); that module is wrong, so it is a failure.
+    output.ok = !output.spirv.empty() &&
+                output.log.find("Missing functionality") == std::string::npos;
     return output;
 }
 

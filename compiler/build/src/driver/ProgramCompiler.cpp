@@ -96,6 +96,11 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
         }
     }
     result.diagnostics = parseGlslangLog(compiled.log, sourceMap);
+    // glslang's link and "missing functionality" messages name no line: they belong to the
+    // program, so they point at its block (and get the stage and keywords note like the rest).
+    for (Diagnostic& diagnostic : result.diagnostics) {
+        if (!diagnostic.location.isKnown()) diagnostic.location = program.origin;
+    }
     if (!compiled.ok) return result;
     SpirvResult optimized = optimizeSpirv(compiled.spirv, options.optimization);
     if (!optimized.ok) return fail("SPIR-V optimisation failed: " + optimized.message);
