@@ -2,6 +2,8 @@
 // Loads a .shader file: ShaderLab parse, include expansion and keyword model for every pass.
 #include "varc/frontend/ShaderLoader.h"
 
+#include <algorithm>
+
 #include "varc/core/SaturatingMath.h"
 #include "varc/shaderlab/ShaderLabParser.h"
 #include "varc/variants/PragmaParser.h"
@@ -29,8 +31,26 @@ private:
     std::string mDescription;
 };
 
-std::vector<includes::SourceText> passRoots(const shaderlab::Pass& pass) {
+// Unity's CGPROGRAM blocks see HLSLSupport.cginc and UnityShaderVariables.cginc without
+// including them (HLSLPROGRAM and GLSLPROGRAM blocks do not): shaders use `fixed4` or `_Time`
+// with no #include. varc splices them first, from its built-in folder, as a file of its own.
+constexpr std::string_view kImplicitCgIncludes =
+    "#include \"HLSLSupport.cginc\"\n#include \"UnityShaderVariables.cginc\"\n";
+
+// The registered file holding kImplicitCgIncludes, beside the built-in includes so they are
+// found first; kNoFile without a built-in folder.
+FileId implicitCgIncludesFile(const includes::IncludeOptions& options,
+                              includes::SourceMap& sourceMap) {
+    if (options.builtinDir.empty()) return kNoFile;
+    std::string path = includes::joinPath(options.builtinDir, "<CGPROGRAM implicit includes>");
+    if (std::optional<FileId> known = sourceMap.find(path)) return *known;
+    return sourceMap.addFile(path, std::string(kImplicitCgIncludes));
+}
+
+std::vector<includes::SourceText> passRoots(const shaderlab::Pass& pass, FileId implicitCg,
+                                            const includes::SourceMap& sourceMap) {
     std::vector<includes::SourceText> roots;
+    if (implicitCg != kNoFile) roots.push_back({sourceMap.contents(implicitCg), {implicitCg, 1, 1}});
     for (const shaderlab::ProgramBlock& block : pass.includeBlocks) {
         roots.push_back({block.text, block.origin});
     }
@@ -38,8 +58,77 @@ std::vector<includes::SourceText> passRoots(const shaderlab::Pass& pass) {
     return roots;
 }
 
-bool loadPass(LoadedPass& loaded, includes::IncludeResolver& resolver, DiagnosticSink& sink) {
-    auto expanded = resolver.expand(passRoots(*loaded.pass), sink);
+// Whether |expanded| already spliced both files Unity includes implicitly into CG programs.
+bool includesImplicitCgFiles(const includes::ExpandedSource& expanded) {
+    auto has = [&expanded](std::string_view name) {
+        return std::any_of(expanded.dependencies.begin(), expanded.dependencies.end(),
+                           [name](const std::string& path) { return path.ends_with(name); });
+    };
+    return has("/HLSLSupport.cginc") && has("/UnityShaderVariables.cginc");
+}
+
+// Whether |roots| hold code (anything but blank lines, comments and preprocessor directives)
+// before their first #include. Example: "#pragma vertex v\n#include \"UnityCG.cginc\"\nfixed4 c;"
+// -> false; "fixed4 c;\n#include \"UnityCG.cginc\"" -> true.
+bool codeBeforeFirstInclude(const std::vector<includes::SourceText>& roots) {
+    bool inComment = false;
+    for (const includes::SourceText& root : roots) {
+        std::string_view text = root.text;
+        while (!text.empty()) {
+            size_t end = text.find('\n');
+            std::string_view line = text.substr(0, end);
+            text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+            size_t first = line.find_first_not_of(" \t\r\f\v");
+            if (first == std::string_view::npos) continue;
+            line.remove_prefix(first);
+            if (inComment) {
+                size_t close = line.find("*/");
+                if (close == std::string_view::npos) continue;
+                inComment = false;
+                line.remove_prefix(close + 2);
+                first = line.find_first_not_of(" \t\r\f\v");
+                if (first == std::string_view::npos) continue;
+                line.remove_prefix(first);
+            }
+            if (line.starts_with("//")) continue;
+            if (line.starts_with("/*")) {
+                inComment = line.find("*/", 2) == std::string_view::npos;
+                continue;
+            }
+            if (!line.starts_with("#")) return true;
+            line.remove_prefix(1);
+            line.remove_prefix(std::min(line.find_first_not_of(" \t"), line.size()));
+            if (line.starts_with("include")) return false;
+        }
+    }
+    return false;
+}
+
+// The pass's program expanded. Unity splices HLSLSupport.cginc and UnityShaderVariables.cginc
+// before every CG program. Most programs include both themselves (through UnityCG.cginc) before
+// any code, and are expanded as written: nothing changes for them. One that does not, or that
+// has code before its first #include, is expanded again with both spliced first.
+std::optional<includes::ExpandedSource> expandPass(const shaderlab::Pass& pass,
+                                                   includes::IncludeResolver& resolver,
+                                                   const includes::IncludeOptions& options,
+                                                   includes::SourceMap& sourceMap,
+                                                   DiagnosticSink& sink) {
+    bool cg = pass.program->language == shaderlab::ProgramLanguage::Cg && !options.builtinDir.empty();
+    DiagnosticList firstTry;
+    auto expanded = resolver.expand(passRoots(pass, kNoFile, sourceMap), cg ? firstTry : sink);
+    if (!cg || (expanded && includesImplicitCgFiles(*expanded) &&
+                !codeBeforeFirstInclude(passRoots(pass, kNoFile, sourceMap)))) {
+        for (const Diagnostic& diagnostic : firstTry.diagnostics()) sink.report(diagnostic);
+        return expanded;
+    }
+    FileId implicitCg = implicitCgIncludesFile(options, sourceMap);
+    return resolver.expand(passRoots(pass, implicitCg, sourceMap), sink);
+}
+
+bool loadPass(LoadedPass& loaded, includes::IncludeResolver& resolver,
+              const includes::IncludeOptions& options, includes::SourceMap& sourceMap,
+              DiagnosticSink& sink) {
+    auto expanded = expandPass(*loaded.pass, resolver, options, sourceMap, sink);
     if (!expanded) return false;
     loaded.source = std::move(*expanded);
     auto keywords = variants::parsePragmas(loaded.source.pragmas, sink);
@@ -97,7 +186,7 @@ std::optional<LoadedShader> loadShader(const std::string& path,
             loaded.pass = &pass;
             PassContextSink passSink(sink, pass.location,
                                      describePass(shader.ast, pass, passIndex));
-            if (loadPass(loaded, resolver, passSink)) {
+            if (loadPass(loaded, resolver, includeOptions, sourceMap, passSink)) {
                 shader.passes.push_back(std::move(loaded));
             } else {
                 ok = false;

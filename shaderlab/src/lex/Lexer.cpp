@@ -46,11 +46,25 @@ bool Lexer::skipTrivia() {
             while (mPos < mText.size() && mText[mPos] != '\n') ++mPos;
         } else if (c == '/' && at(mPos + 1) == '*') {
             if (!skipBlockComment()) return false;
+        } else if (c == '#' && mText.substr(mPos, 8) == "#warning") {
+            skipWarningLine();
         } else {
             break;
         }
     }
     return true;
+}
+
+// Unity's shader upgrader writes `#warning Upgrade NOTE: ...` lines into .shader files, outside
+// any program; Unity shows them and compiles the shader. varc reports them as warnings.
+void Lexer::skipWarningLine() {
+    size_t end = mText.find('\n', mPos);
+    if (end == std::string_view::npos) end = mText.size();
+    std::string_view message = mText.substr(mPos + 8, end - mPos - 8);
+    while (!message.empty() && isSpace(message.front())) message.remove_prefix(1);
+    while (!message.empty() && isSpace(message.back())) message.remove_suffix(1);
+    mSink.warning(mLines.locationOf(mPos), "#warning " + std::string(message));
+    mPos = end;
 }
 
 bool Lexer::skipBlockComment() {

@@ -46,6 +46,7 @@ public:
 private:
     bool skipTrivia();
     bool skipBlockComment();
+    void skipWarningLine();
     Token lexString();
     Token lexNumberOrWord();
     Token lexWord(size_t begin);

@@ -146,6 +146,16 @@ TEST(IncludeResolver, AnExactNameWinsOverOneDifferingInCase) {
     EXPECT_TRUE(h.diagnostics.diagnostics().empty());
 }
 
+TEST(IncludeResolver, AByteOrderMarkStartingAnIncludeFileIsNotPartOfTheText) {
+    Harness h;
+    h.file("a.shader", lines({"#include \"b.cginc\"", "a2"}))
+        .file("b.cginc", "\xEF\xBB\xBF" + lines({"float b;", "float c;"}));
+    auto expanded = h.expandFile("a.shader");
+    ASSERT_TRUE(expanded.has_value());
+    EXPECT_EQ(expanded->text,
+              lines({"#line 1 0", "#line 1 1", "float b;", "float c;", "#line 2 0", "a2"}));
+}
+
 TEST(IncludeResolver, AcceptsSpacesInQuotedAndAngledNames) {
     Harness h;
     h.builtinDir("builtin");

@@ -82,6 +82,18 @@ TEST(Lexer, SkipsUtf8ByteOrderMark) {
     EXPECT_EQ(lexed.tokens[0].location.column, 4u);
 }
 
+// Unity's upgrader writes `#warning Upgrade NOTE: ...` lines above `Shader`.
+TEST(Lexer, AWarningLineIsReportedAndSkipped) {
+    std::string text = "// note\n#warning Upgrade NOTE: unity_Scale was removed\r\nShader";
+    Lexed lexed = lexAll(text);
+    ASSERT_EQ(texts(lexed), (Texts{"Shader", ""}));
+    ASSERT_EQ(lexed.diagnostics.diagnostics().size(), 1u);
+    const Diagnostic& warning = lexed.diagnostics.diagnostics()[0];
+    EXPECT_EQ(warning.severity, Severity::Warning);
+    EXPECT_EQ(warning.message, "#warning Upgrade NOTE: unity_Scale was removed");
+    EXPECT_EQ(warning.location, (SourceLocation{kFile, 2, 1}));
+}
+
 TEST(Lexer, ReportsUnterminatedStringAtOpeningQuote) {
     std::string text = "Name \"abc\n\"";
     Lexed lexed = lexAll(text);
