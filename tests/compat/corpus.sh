@@ -80,6 +80,21 @@ while IFS= read -r -d '' file; do
     printf '%s|%s|%s|%s|%s\n' "$rel" "$passes" "${variants:-0}" "$outcome" "$reason" >>"$results"
 done < <(find "$compat" -name '*.shader' -not -path "$compat/surface/*" -print0 | LC_ALL=C sort -z)
 
+# Surface shaders (surface/) are not supported: each must be refused at its `#pragma surface`
+# with the sentence that says so, never with a parse error from further in.
+surfaces=0
+while IFS= read -r -d '' file; do
+    rel=${file#"$compat"/}
+    surfaces=$((surfaces + 1))
+    log="$work/logs/$(tr '/ ' '__' <<<"$rel").surface"
+    timeout 300 "$varc" variants "$file" >"$log" 2>&1
+    if ! grep -q "error: surface shaders ('#pragma surface') are not supported" "$log"; then
+        echo "FAIL: $rel: a surface shader not refused as one:"
+        head -3 "$log"
+        status=1
+    fi
+done < <(find "$compat/surface" -name '*.shader' -print0 2>/dev/null | LC_ALL=C sort -z)
+
 total=$(wc -l <"$results")
 built=$(grep -c '|built|' "$results")
 table="$work/COMPATIBILITY.md"
@@ -96,7 +111,8 @@ glslang message without its file:line, and when this table is no longer true. Af
 intended change: \`bash tests/compat/corpus.sh build/varc ../shared/compat docs/COMPATIBILITY.md
 build/compat --update\`.
 
-**$built of $total files build every variant.**
+**$built of $total files build every variant.** The $surfaces surface shaders in \`surface/\`
+(\`#pragma surface\`) are each refused at that pragma: surface shaders are not supported.
 
 | file | passes | variants | result |
 |---|---:|---:|---|

@@ -102,6 +102,24 @@ TEST(ShaderLabParser, RejectsProgramBlockOutsideAPass) {
     EXPECT_EQ(outcome.firstLocation(), (SourceLocation{testing::kTestFile, 1, 26}));
 }
 
+// A program directly in a SubShader with `#pragma surface` is a surface shader: refused at the
+// pragma with what to do instead.
+TEST(ShaderLabParser, RefusesASurfaceShaderAtItsPragma) {
+    auto outcome = parse(trimMargin(R"(
+        |Shader "A" { SubShader {
+        |    CGPROGRAM
+        |      #  pragma surface surf Lambert
+        |    ENDCG
+        |} }
+    )"));
+    EXPECT_FALSE(outcome.shader);
+    EXPECT_EQ(outcome.firstMessage().rfind("surface shaders ('#pragma surface') are not supported", 0),
+              0u)
+        << outcome.firstMessage();
+    EXPECT_EQ(outcome.firstLocation(), (SourceLocation{testing::kTestFile, 3, 7}));
+    EXPECT_EQ(outcome.diagnostics.errorCount(), 1u);
+}
+
 TEST(ShaderLabParser, CollectsIncludeBlocksInScopeInFileOrder) {
     auto outcome = parse(trimMargin(R"(
         |Shader "A" {
