@@ -116,4 +116,13 @@
 #define UNITY_DECLARE_SCREENSPACE_SHADOWMAP(tex) sampler2D tex
 #define UNITY_SAMPLE_SCREEN_SHADOW(tex, uv) tex2Dproj(tex, UNITY_PROJ_COORD(uv)).r
 
+// Tessellation attributes under Unity's spellings (`[UNITY_domain("tri")]`), and the pixel
+// position input (`UNITY_VPOS_TYPE vpos : VPOS`): the fragment's SV_Position on modern APIs.
+#define UNITY_domain domain
+#define UNITY_partitioning partitioning
+#define UNITY_outputtopology outputtopology
+#define UNITY_patchconstantfunc patchconstantfunc
+#define UNITY_outputcontrolpoints outputcontrolpoints
+#define VPOS SV_Position
+
 #endif // HLSL_SUPPORT_INCLUDED

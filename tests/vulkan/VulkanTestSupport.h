@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,10 +35,15 @@ protected:
     VulkanContext& context() { return *mContext; }
     // While true, validation messages are recorded but do not fail the test.
     void expectMessages(bool expected) { mExpectMessages = expected; }
+    // Messages with this id (e.g. "UNASSIGNED-CoreValidation-Shader-OutputNotConsumed") do not
+    // fail the test; every other message still does.
+    void tolerate(std::string idName) { mTolerated.insert(std::move(idName)); }
 
     // Declared first so it is destroyed last; tests keep their Vulkan objects in locals.
     std::optional<VulkanContext> mContext;
     bool mExpectMessages = false;
+    std::set<std::string> mTolerated;
+    size_t mToleratedCount = 0;
 };
 
 // A VulkanTest that also opens the library pack, which the vulkan.build_packs test builds from

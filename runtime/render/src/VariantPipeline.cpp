@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "varc/render/VariantPipeline.h"
 
+#include <algorithm>
 #include <array>
 #include <span>
 #include <string>
@@ -69,8 +70,12 @@ Result<UniqueHandle<VkPipelineLayout>> createPipelineLayout(
     return UniqueHandle<VkPipelineLayout>(context.device(), layout);
 }
 
-// A triangle-list pipeline with dynamic viewport and scissor, one sample, |state|'s blend on
-// every colour attachment of |target|.
+// Unity draws meshes as triangles, so a tessellated mesh arrives in patches of three control
+// points (the hull program's InputPatch<..., 3>).
+constexpr uint32_t kPatchControlPoints = 3;
+
+// A triangle-list pipeline (patches of three points with tessellation) with dynamic viewport
+// and scissor, one sample, |state|'s blend on every colour attachment of |target|.
 Result<UniqueHandle<VkPipeline>> createGraphicsPipeline(
     VulkanContext& context, std::span<const ShaderStage> shaderStages,
     const VertexInputLayout& vertexInput, VkPipelineLayout layout, const VulkanRenderState& state,
@@ -89,9 +94,16 @@ Result<UniqueHandle<VkPipeline>> createGraphicsPipeline(
             static_cast<uint32_t>(vertexInput.attributes.size());
         vertexInputInfo.pVertexAttributeDescriptions = vertexInput.attributes.data();
     }
+    bool tessellated = std::any_of(shaderStages.begin(), shaderStages.end(), [](const auto& s) {
+        return s.stage == VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT;
+    });
     VkPipelineInputAssemblyStateCreateInfo assembly{};
     assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
-    assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    assembly.topology =
+        tessellated ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineTessellationStateCreateInfo tessellation{};
+    tessellation.sType = VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO;
+    tessellation.patchControlPoints = kPatchControlPoints;
     VkPipelineViewportStateCreateInfo viewport{};
     viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
     viewport.viewportCount = 1;
@@ -118,6 +130,7 @@ Result<UniqueHandle<VkPipeline>> createGraphicsPipeline(
     info.pStages = stages.data();
     info.pVertexInputState = &vertexInputInfo;
     info.pInputAssemblyState = &assembly;
+    info.pTessellationState = tessellated ? &tessellation : nullptr;
     info.pViewportState = &viewport;
     info.pRasterizationState = &state.rasterization;
     info.pMultisampleState = &multisample;
@@ -138,35 +151,60 @@ Result<UniqueHandle<VkPipeline>> createGraphicsPipeline(
 
 }  // namespace
 
+namespace {
+
+// The Vulkan stage of each pack stage, in pipeline order.
+constexpr std::array<std::pair<Stage, VkShaderStageFlagBits>, 5> kPipelineStages = {{
+    {Stage::Vertex, VK_SHADER_STAGE_VERTEX_BIT},
+    {Stage::Hull, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT},
+    {Stage::Domain, VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT},
+    {Stage::Geometry, VK_SHADER_STAGE_GEOMETRY_BIT},
+    {Stage::Fragment, VK_SHADER_STAGE_FRAGMENT_BIT},
+}};
+
+}  // namespace
+
 Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const VariantView& variant,
                                                 const pack::PackRenderState& resolvedState,
                                                 const PipelineTarget& target,
                                                 VkPipelineCache cache) {
     VariantPipeline result;
     result.mDescription = variant.describe();
-    std::optional<ProgramView> vertex = variant.program(Stage::Vertex);
-    std::optional<ProgramView> fragment = variant.program(Stage::Fragment);
-    if (!vertex || !fragment) {
+    std::vector<std::pair<VkShaderStageFlagBits, ProgramView>> programs;
+    for (const auto& [stage, vulkanStage] : kPipelineStages) {
+        if (std::optional<ProgramView> program = variant.program(stage)) {
+            programs.emplace_back(vulkanStage, *program);
+        }
+    }
+    if (!variant.program(Stage::Vertex) || !variant.program(Stage::Fragment)) {
         return makeError(ErrorCode::InvalidInput,
                          result.mDescription + ": needs a vertex and a fragment program");
     }
-    pack::ProgramReflection vertexReflection = vertex->reflection();
-    pack::ProgramReflection fragmentReflection = fragment->reflection();
-    auto slots = collectDescriptorSlots({{VK_SHADER_STAGE_VERTEX_BIT, &vertexReflection},
-                                         {VK_SHADER_STAGE_FRAGMENT_BIT, &fragmentReflection}});
+    if (variant.program(Stage::Hull).has_value() != variant.program(Stage::Domain).has_value()) {
+        return makeError(ErrorCode::InvalidInput,
+                         result.mDescription + ": needs both a hull and a domain program");
+    }
+    std::vector<pack::ProgramReflection> reflections;
+    for (const auto& [vulkanStage, program] : programs) reflections.push_back(program.reflection());
+    std::vector<StageReflection> stageReflections;
+    for (size_t i = 0; i < programs.size(); ++i) {
+        stageReflections.push_back({programs[i].first, &reflections[i]});
+    }
+    auto slots = collectDescriptorSlots(stageReflections);
     if (!slots) return withContext(result.mDescription, slots.error());
     result.mSlots = std::move(*slots);
-    auto vertexInput = vertexInputLayout(vertexReflection.vertexInputs);
+    auto vertexInput = vertexInputLayout(reflections.front().vertexInputs);
     if (!vertexInput) return withContext(result.mDescription, vertexInput.error());
 
-    std::array<UniqueHandle<VkShaderModule>, 2> modules;
-    std::array<ProgramView, 2> programs = {*vertex, *fragment};
-    for (size_t i = 0; i < 2; ++i) {
-        auto spirv = programs[i].spirv();
+    std::vector<UniqueHandle<VkShaderModule>> modules;
+    std::vector<ShaderStage> stages;
+    for (const auto& [vulkanStage, program] : programs) {
+        auto spirv = program.spirv();
         if (!spirv) return withContext(result.mDescription, spirv.error());
-        auto module = createShaderModule(context, *spirv, programs[i].describe());
+        auto module = createShaderModule(context, *spirv, program.describe());
         if (!module) return withContext(result.mDescription, module.error());
-        modules[i] = std::move(*module);
+        stages.push_back({vulkanStage, module->get(), std::string(program.entryPoint())});
+        modules.push_back(std::move(*module));
     }
     auto setLayouts = createSetLayouts(context, result.mSlots);
     if (!setLayouts) return withContext(result.mDescription, setLayouts.error());
@@ -175,11 +213,6 @@ Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const Va
     auto layout = createPipelineLayout(context, result.mSetLayouts);
     if (!layout) return withContext(result.mDescription, layout.error());
     result.mLayout = std::move(*layout);
-    const std::array<ShaderStage, 2> stages = {
-        ShaderStage{VK_SHADER_STAGE_VERTEX_BIT, modules[0].get(),
-                    std::string(vertex->entryPoint())},
-        ShaderStage{VK_SHADER_STAGE_FRAGMENT_BIT, modules[1].get(),
-                    std::string(fragment->entryPoint())}};
     auto pipeline =
         createGraphicsPipeline(context, stages, *vertexInput, result.mLayout.get(),
                                toVulkan(resolvedState, target.hasStencil), target, cache);

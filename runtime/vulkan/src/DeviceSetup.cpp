@@ -78,6 +78,8 @@ VkPhysicalDeviceFeatures wantedFeatures(VkPhysicalDevice device) {
     wanted.imageCubeArray = supported.imageCubeArray;
     wanted.shaderClipDistance = supported.shaderClipDistance;
     wanted.fragmentStoresAndAtomics = supported.fragmentStoresAndAtomics;
+    wanted.geometryShader = supported.geometryShader;          // #pragma geometry
+    wanted.tessellationShader = supported.tessellationShader;  // #pragma hull / domain
     return wanted;
 }
 

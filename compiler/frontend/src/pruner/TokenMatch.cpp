@@ -46,6 +46,11 @@ size_t skipAttributes(const std::vector<Token>& tokens, size_t begin, size_t end
 void collectReferences(const std::vector<Token>& tokens, size_t begin, size_t end,
                        std::vector<std::string_view>& out) {
     for (size_t i = begin; i < end; ++i) {
+        // HLSL attributes name functions in strings: [patchconstantfunc("PatchConstants")].
+        if (tokens[i].kind == TokenKind::String && tokens[i].text.size() > 2) {
+            out.push_back(tokens[i].text.substr(1, tokens[i].text.size() - 2));
+            continue;
+        }
         if (tokens[i].kind != TokenKind::Identifier) continue;
         if (i > 0 && isPunct(tokens[i - 1], '.')) continue;
         out.push_back(tokens[i].text);

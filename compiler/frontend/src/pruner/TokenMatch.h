@@ -36,7 +36,8 @@ std::optional<size_t> findClosingBracket(const std::vector<Token>& tokens, size_
 // group such as `[numthreads(8, 8, 1)]` or `[unroll]`.
 size_t skipAttributes(const std::vector<Token>& tokens, size_t begin, size_t end);
 
-// Identifiers in [|begin|, |end|) except member names after `.`, appended to |out|.
+// Identifiers in [|begin|, |end|) except member names after `.`, and the contents of string
+// literals (HLSL attributes name functions in strings), appended to |out|.
 void collectReferences(const std::vector<Token>& tokens, size_t begin, size_t end,
                        std::vector<std::string_view>& out);
 
