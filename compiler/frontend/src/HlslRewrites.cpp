@@ -3,7 +3,9 @@
 #include "varc/frontend/HlslRewrites.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -32,6 +34,35 @@ bool isPunct(const Token& token, char c) {
     return token.kind == TokenKind::Punct && token.text.size() == 1 && token.text[0] == c;
 }
 
+bool isIdentifierChar(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+// The literal at the start of |text| ("0x1376312589U + 1" -> "0x1376312589U"), or "".
+std::string_view hexLiteralAt(std::string_view text) {
+    if (text.size() < 3 || text[0] != '0' || (text[1] != 'x' && text[1] != 'X')) return {};
+    size_t end = 2;
+    while (end < text.size() && isIdentifierChar(text[end])) ++end;
+    return text.substr(0, end);
+}
+
+// The DirectX compilers keep the low 32 bits of a hexadecimal literal too wide for its type
+// (with a warning); glslang stops. "0x1376312589U" -> "0x76312589U"; nullopt when |literal|
+// is not a hexadecimal literal of more than 32 significant bits.
+std::optional<std::string> truncatedHexLiteral(std::string_view literal) {
+    if (hexLiteralAt(literal).size() != literal.size()) return std::nullopt;
+    size_t digitsEnd = 2;
+    while (digitsEnd < literal.size() &&
+           std::isxdigit(static_cast<unsigned char>(literal[digitsEnd]))) {
+        ++digitsEnd;
+    }
+    std::string_view digits = literal.substr(2, digitsEnd - 2);
+    while (digits.size() > 1 && digits.front() == '0') digits.remove_prefix(1);
+    if (digits.size() <= 8) return std::nullopt;
+    return std::string(literal.substr(0, 2)) + std::string(digits.substr(digits.size() - 8)) +
+           std::string(literal.substr(digitsEnd));
+}
+
 class Rewriter {
 public:
     explicit Rewriter(const pruner::ShaderTokenizer& tokens)
@@ -42,6 +73,19 @@ public:
         castSwitchConditions();
         copyWrittenUniforms();
         spellOutMatrixSwizzles();
+        truncateWideHexLiterals();
+        dropEmptyMemberDeclarations();
+        return apply(text);
+    }
+
+    // Only the front-face parameters (see fixFrontFaceParameterTypes).
+    std::string rewriteFrontFaceTypes(std::string_view text) {
+        makeFrontFaceParametersBool();
+        return apply(text);
+    }
+
+private:
+    std::string apply(std::string_view text) {
         if (mInsertions.empty() && mReplacements.empty()) return std::string(text);
         for (const Insertion& insertion : mInsertions) {
             mReplacements.push_back({insertion.offset, 0, insertion.text});
@@ -53,7 +97,6 @@ public:
         return result;
     }
 
-private:
     size_t offsetOf(size_t i) const { return mTokenizer.offsetOf(mTokens[i]); }
     size_t endOf(size_t i) const { return offsetOf(i) + mTokens[i].text.size(); }
     bool adjacent(size_t a, size_t b) const { return endOf(a) == offsetOf(b); }
@@ -160,6 +203,40 @@ private:
             i = digits + 2;
         }
         return i == name.size() ? elements : std::vector<std::pair<int, int>>{};
+    }
+
+    // `0x1376312589U` -> `0x76312589U` (see truncatedHexLiteral).
+    void truncateWideHexLiterals() {
+        for (size_t i = 0; i < mTokens.size(); ++i) {
+            if (mTokens[i].kind != TokenKind::Number) continue;
+            if (auto kept = truncatedHexLiteral(mTokens[i].text)) {
+                mReplacements.push_back({offsetOf(i), mTokens[i].text.size(), *kept});
+            }
+        }
+    }
+
+    // Declaration macros that expand to nothing leave empty declarations (`float a;;`, `{ ;`)
+    // in structs, cbuffers and at file scope, which the DirectX compilers skip and glslang
+    // refuses. (A `;` after a file-scope `}` ends a struct or cbuffer and stays.)
+    void dropEmptyMemberDeclarations() {
+        for (size_t i = 1; i < mTokens.size(); ++i) {
+            if (!is(i, ';')) continue;
+            bool inBody = mInDeclarationBody[i] && mDepth[i] > 0;
+            bool empty = inBody ? (is(i - 1, ';') || is(i - 1, '{'))
+                                : (mDepth[i] == 0 && is(i - 1, ';'));
+            if (empty) mReplacements.push_back({offsetOf(i), 1, " "});
+        }
+    }
+
+    // `uint facing : SV_IsFrontFace` -> `bool facing : SV_IsFrontFace`: Vulkan's FrontFacing is a
+    // bool, and glslang passes any other type through into invalid SPIR-V.
+    void makeFrontFaceParametersBool() {
+        for (size_t i = 3; i < mTokens.size(); ++i) {
+            if (mTokens[i].text != "SV_IsFrontFace" || !is(i - 1, ':')) continue;
+            size_t type = i - 3;
+            if (mTokens[type].kind != TokenKind::Identifier || mTokens[type].text == "bool") continue;
+            mReplacements.push_back({offsetOf(type), mTokens[type].text.size(), "bool"});
+        }
     }
 
     bool hasUnsignedCase(size_t begin, size_t end) const {
@@ -315,6 +392,31 @@ std::string rewriteHlslForGlslang(std::string_view text) {
     pruner::ShaderTokenizer tokenizer;
     if (!tokenizer.tokenize(text)) return std::string(text);
     return Rewriter(tokenizer).rewrite(text);
+}
+
+std::string truncateWideHexLiterals(std::string_view text) {
+    std::string result;
+    result.reserve(text.size());
+    size_t i = 0;
+    while (i < text.size()) {
+        std::string_view literal =
+            (i == 0 || !isIdentifierChar(text[i - 1])) ? hexLiteralAt(text.substr(i)) : "";
+        if (literal.empty()) {
+            result += text[i++];
+            continue;
+        }
+        std::optional<std::string> kept = truncatedHexLiteral(literal);
+        result += kept ? *kept : std::string(literal);
+        i += literal.size();
+    }
+    return result;
+}
+
+std::string fixFrontFaceParameterTypes(std::string_view text) {
+    if (text.find("SV_IsFrontFace") == std::string_view::npos) return std::string(text);
+    pruner::ShaderTokenizer tokenizer;
+    if (!tokenizer.tokenize(text)) return std::string(text);
+    return Rewriter(tokenizer).rewriteFrontFaceTypes(text);
 }
 
 }  // namespace varc::compiler

@@ -92,6 +92,33 @@ TEST(HlslRewrites, MatrixSwizzlesOfSeveralElementsAreSpelledOut) {
     EXPECT_EQ(rewriteHlslForGlslang(notSwizzles), notSwizzles);
 }
 
+TEST(HlslRewrites, HexLiteralsWiderThan32BitsKeepTheirLow32Bits) {
+    std::string text = "uint h(uint n) { return n * 0x1376312589U + 0x0000FFFFFFFF + 0x7fffffffu; }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "uint h(uint n) { return n * 0x76312589U + 0x0000FFFFFFFF + 0x7fffffffu; }\n");
+}
+
+TEST(HlslRewrites, WideHexLiteralsAreCutBeforePreprocessingToo) {
+    EXPECT_EQ(truncateWideHexLiterals("#define K 0x1376312589U\nuint a = K + x0x123456789 + 0xFFu;"),
+              "#define K 0x76312589U\nuint a = K + x0x123456789 + 0xFFu;");
+}
+
+TEST(HlslRewrites, EmptyMemberDeclarationsAreDropped) {
+    std::string text = "cbuffer C {\n float a;\n ;\n float b;; };\nstruct S { ; float c; };\n"
+                       "float g;\n ;\nfloat f() { ; return 0; }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "cbuffer C {\n float a;\n  \n float b;  };\nstruct S {   float c; };\n"
+              "float g;\n  \nfloat f() { ; return 0; }\n");
+}
+
+TEST(HlslRewrites, FrontFaceParametersBecomeBool) {
+    EXPECT_EQ(fixFrontFaceParameterTypes(
+                  "float4 f(uint facing : SV_IsFrontFace) : SV_Target { return facing; }"),
+              "float4 f(bool facing : SV_IsFrontFace) : SV_Target { return facing; }");
+    std::string untouched = "float4 f(bool b : SV_IsFrontFace, float v : VFACE) : SV_Target;";
+    EXPECT_EQ(fixFrontFaceParameterTypes(untouched), untouched);
+}
+
 TEST(HlslRewrites, NoLineIsAddedOrRemoved) {
     std::string text = "float _T;\n\nfloat4 f() : SV_Target {\n _T = 2;\n switch (_T) {\n"
                        " default: break;\n }\n return _T;\n}\n";

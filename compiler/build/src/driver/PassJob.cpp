@@ -8,6 +8,7 @@
 #include "varc/build/GlslangFrontend.h"
 #include "varc/build/GlslangLogParser.h"
 #include "varc/build/PassDefines.h"
+#include "varc/frontend/HlslRewrites.h"
 #include "varc/frontend/StagePruner.h"
 #include "varc/variants/KeywordList.h"
 #include "varc/variants/PassKeywords.h"
@@ -85,6 +86,12 @@ ItemKey itemKeyOf(const std::string& preprocessKey, Stage stage, const std::stri
 StageResult preprocessStage(const PassJob& job, Stage stage, const std::string& entry,
                             const std::string& preamble, const includes::SourceMap& sourceMap) {
     PreprocessOutput pre = preprocessProgram({job.text, preamble, languageOf(job), stage, entry});
+    if (!pre.ok && languageOf(job) != shaderlab::ProgramLanguage::Glsl &&
+        pre.log.find("hexadecimal literal too big") != std::string::npos) {
+        // The DirectX compilers keep the low 32 bits of such a literal; so does varc.
+        pre = preprocessProgram(
+            {truncateWideHexLiterals(job.text), preamble, languageOf(job), stage, entry});
+    }
     StageResult result;
     result.diagnostics = parseGlslangLog(pre.log, sourceMap);
     result.ok = pre.ok;

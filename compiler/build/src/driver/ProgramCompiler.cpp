@@ -39,7 +39,9 @@ bool needsHlslRewrite(const StageProgram& program, const std::string& log) {
     return program.language != shaderlab::ProgramLanguage::Glsl &&
            (log.find("condition must be a scalar integer expression") != std::string::npos ||
             log.find("can't modify a uniform") != std::string::npos ||
-            log.find("Missing functionality: matrix swizzle") != std::string::npos);
+            log.find("Missing functionality: matrix swizzle") != std::string::npos ||
+            log.find("hexadecimal literal too big") != std::string::npos ||
+            log.find("'member type' : Expected") != std::string::npos);
 }
 
 }  // namespace
@@ -83,11 +85,14 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
             return result;
         }
     }
+    std::string text = program.language == shaderlab::ProgramLanguage::Glsl
+                           ? std::string(program.text)
+                           : fixFrontFaceParameterTypes(program.text);
     CompileOutput compiled =
-        compileProgram({program.text, "", program.language, program.stage, program.entryPoint});
+        compileProgram({text, "", program.language, program.stage, program.entryPoint});
     if (!compiled.ok && needsHlslRewrite(program, compiled.log)) {
-        std::string rewritten = rewriteHlslForGlslang(program.text);
-        if (rewritten != program.text) {
+        std::string rewritten = rewriteHlslForGlslang(text);
+        if (rewritten != text) {
             CompileOutput retried = compileProgram(
                 {rewritten, "", program.language, program.stage, program.entryPoint});
             // Either way the rewritten program's outcome is the one to report: its errors are

@@ -27,11 +27,27 @@ namespace varc::compiler {
 //    `M._m20_m21_m22` -> `float3(M[2][0], M[2][1], M[2][2])` (also the one-based `M._11_22`),
 //    for a matrix named by one identifier.
 //
+//  * Hexadecimal literals wider than 32 bits keep their low 32 bits, as the DirectX compilers
+//    do: `0x1376312589U` -> `0x76312589U`.
+//  * Empty member declarations (a lone `;` in a struct or cbuffer, often a macro that expanded
+//    to nothing) are removed.
+//
 // No line is added or removed, so every `#line` mapping still holds. Returns |text| unchanged
 // when there is nothing to rewrite or the text cannot be tokenised.
 // Example: "float _T;\nfloat4 f() : SV_Target { _T *= 2; switch (_T) { default: break; }
 // return _T; }" -> "float _T; static float _T_varcCopy = _T;\nfloat4 f() : SV_Target {
 // _T_varcCopy *= 2; switch ((int)(_T_varcCopy)) { default: break; } return _T_varcCopy; }".
 std::string rewriteHlslForGlslang(std::string_view text);
+
+// |text| with each hexadecimal literal wider than 32 bits cut to its low 32 bits, anywhere
+// (directives and comments included): for text before preprocessing, where glslang's
+// preprocessor already refuses such a literal. "x = 0x1376312589U;" -> "x = 0x76312589U;".
+std::string truncateWideHexLiterals(std::string_view text);
+
+// |text| with every `T name : SV_IsFrontFace` parameter of a type other than bool declared bool
+// (`uint facing : SV_IsFrontFace`, accepted by the DirectX compilers): Vulkan's FrontFacing
+// built-in is a bool and glslang would emit invalid SPIR-V. Text without SV_IsFrontFace is
+// returned unchanged.
+std::string fixFrontFaceParameterTypes(std::string_view text);
 
 }  // namespace varc::compiler
