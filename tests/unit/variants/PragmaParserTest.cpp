@@ -128,6 +128,19 @@ TEST(PragmaParser, IdenticalUserSetsInAnyOrderAreMerged) {
     EXPECT_EQ(kw->sets[0].keywords, (Keywords{"", "A", "B"}));
 }
 
+TEST(PragmaParser, ASemicolonAfterTheLastKeywordIsIgnoredWithAWarning) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> kw = parse({"multi_compile TEST_1 TEST_2;"}, sink);
+    ASSERT_TRUE(kw.has_value());
+    ASSERT_EQ(kw->sets.size(), 1u);
+    EXPECT_EQ(kw->sets[0].keywords, (Keywords{"TEST_1", "TEST_2"}));
+    ASSERT_EQ(messages(sink, Severity::Warning).size(), 1u);
+    EXPECT_NE(messages(sink, Severity::Warning)[0].find("';' after keyword 'TEST_2'"),
+              std::string::npos);
+    DiagnosticList bad;
+    EXPECT_FALSE(parse({"multi_compile A ;"}, bad).has_value());
+}
+
 TEST(PragmaParser, RepeatedSetInAnyOrderIsAnError) {
     Diagnostic error = parseError({"multi_compile A B", "shader_feature B A"});
     EXPECT_NE(error.message.find("duplicate keyword set"), std::string::npos) << error.message;

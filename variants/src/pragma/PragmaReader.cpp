@@ -116,6 +116,13 @@ bool PragmaReader::readSetKeywords(const std::vector<PragmaToken>& tokens, Decla
     for (size_t i = 1; i < tokens.size(); ++i) {
         const PragmaToken& token = tokens[i];
         std::string keyword = isAllUnderscores(token.text) ? "" : std::string(token.text);
+        // `#pragma multi_compile A B;` (C habit): the ';' is no part of the name.
+        if (keyword.size() > 1 && keyword.back() == ';' &&
+            isIdentifier(std::string_view(keyword).substr(0, keyword.size() - 1))) {
+            keyword.pop_back();
+            mSink.warning(token.location,
+                          "';' after keyword '" + keyword + "' is not part of its name; ignored");
+        }
         if (!keyword.empty() && !isIdentifier(keyword)) {
             error(token.location, "invalid keyword name '" + keyword +
                                       "': keywords must be identifiers ([A-Za-z_][A-Za-z0-9_]*)");

@@ -3,12 +3,15 @@
 
 #include <xxhash.h>
 
+#include <algorithm>
+
 #include "varc/build/CompileDriver.h"
 #include "varc/build/GlslLegacyPreamble.h"
 #include "varc/build/GlslangFrontend.h"
 #include "varc/build/GlslangLogParser.h"
 #include "varc/build/PassDefines.h"
 #include "varc/frontend/HlslRewrites.h"
+#include "varc/frontend/MacroRedefinitions.h"
 #include "varc/frontend/StagePruner.h"
 #include "varc/variants/KeywordList.h"
 #include "varc/variants/PassKeywords.h"
@@ -85,15 +88,43 @@ ItemKey itemKeyOf(const std::string& preprocessKey, Stage stage, const std::stri
 
 StageResult preprocessStage(const PassJob& job, Stage stage, const std::string& entry,
                             const std::string& preamble, const includes::SourceMap& sourceMap) {
-    PreprocessOutput pre = preprocessProgram({job.text, preamble, languageOf(job), stage, entry});
-    if (!pre.ok && languageOf(job) != shaderlab::ProgramLanguage::Glsl &&
-        pre.log.find("hexadecimal literal too big") != std::string::npos) {
+    bool hlsl = languageOf(job) != shaderlab::ProgramLanguage::Glsl;
+    std::string text = job.text;
+    PreprocessOutput pre = preprocessProgram({text, preamble, languageOf(job), stage, entry});
+    if (!pre.ok && hlsl && pre.log.find("hexadecimal literal too big") != std::string::npos) {
         // The DirectX compilers keep the low 32 bits of such a literal; so does varc.
-        pre = preprocessProgram(
-            {truncateWideHexLiterals(job.text), preamble, languageOf(job), stage, entry});
+        text = truncateWideHexLiterals(text);
+        pre = preprocessProgram({text, preamble, languageOf(job), stage, entry});
+    }
+    // Unity's HLSL compilers warn about a macro redefined with another value and take the new
+    // one; glslang stops. varc warns and #undefs before each redefinition (bounded: each round
+    // names at least one macro not handled before).
+    std::vector<Diagnostic> redefinitions;
+    std::vector<std::string> names;
+    for (int round = 0; round < 16 && !pre.ok && hlsl; ++round) {
+        std::vector<std::string> found = redefinedMacros(pre.log);
+        size_t before = names.size();
+        for (std::string& name : found) {
+            if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+        }
+        if (names.size() == before) break;
+        for (Diagnostic& diagnostic : parseGlslangLog(pre.log, sourceMap)) {
+            std::vector<std::string> named = redefinedMacros(diagnostic.message);
+            if (named.empty()) continue;
+            diagnostic.severity = Severity::Warning;
+            diagnostic.message = "macro '" + named.front() +
+                                 "' redefined with a different value; the later definition "
+                                 "wins, as with Unity's HLSL compilers";
+            redefinitions.push_back(std::move(diagnostic));
+        }
+        pre = preprocessProgram({undefineBeforeRedefinitions(text, names), preamble,
+                                 languageOf(job), stage, entry});
     }
     StageResult result;
-    result.diagnostics = parseGlslangLog(pre.log, sourceMap);
+    result.diagnostics = std::move(redefinitions);
+    for (Diagnostic& diagnostic : parseGlslangLog(pre.log, sourceMap)) {
+        result.diagnostics.push_back(std::move(diagnostic));
+    }
     result.ok = pre.ok;
     result.text = std::move(pre.text);
     return result;
