@@ -27,6 +27,7 @@
 #include "varc/build/ParallelFor.h"
 #include "varc/build/ProgramCache.h"
 #include "varc/build/StageEffects.h"
+#include "varc/core/JoinWords.h"
 
 namespace varc::compiler {
 
@@ -105,10 +106,33 @@ private:
     mutable std::string mCacheError;  // the first failure to store an entry
 };
 
+// Unity compiles a program only for the renderers its `#pragma only_renderers` names and not
+// for those `#pragma exclude_renderers` names; varc's renderer is Vulkan ("vulkan"). A pass
+// that is not for Vulkan is left out of the build (and the pack) with a note.
+bool compiledForVulkan(const LoadedShader& shader, const LoadedPass& pass, DiagnosticSink& sink) {
+    const variants::PassKeywords& keywords = pass.keywords;
+    auto names = [](const std::vector<std::string>& list, std::string_view renderer) {
+        return std::find(list.begin(), list.end(), renderer) != list.end();
+    };
+    bool excluded = names(keywords.excludeRenderers, "vulkan") ||
+                    (!keywords.onlyRenderers.empty() && !names(keywords.onlyRenderers, "vulkan"));
+    if (!excluded) return true;
+    std::string pragma = names(keywords.excludeRenderers, "vulkan")
+                             ? "#pragma exclude_renderers " + joinWords(keywords.excludeRenderers)
+                             : "#pragma only_renderers " + joinWords(keywords.onlyRenderers);
+    sink.report({Severity::Note,
+                 pass.pass->program->origin,
+                 describePass(shader.ast, *pass.pass, pass.index) + " is not compiled: its '" +
+                     pragma + "' leaves out Vulkan, as Unity leaves it out of Vulkan builds",
+                 {}});
+    return false;
+}
+
 bool Builder::plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sink) {
     bool ok = true;
     for (size_t s = 0; s < shaders.size(); ++s) {
         for (size_t p = 0; p < shaders[s].passes.size(); ++p) {
+            if (!compiledForVulkan(shaders[s], shaders[s].passes[p], sink)) continue;
             PassJob job;
             job.shaderIndex = s;
             job.passIndex = p;
