@@ -6,6 +6,7 @@
 
 #include <cctype>
 #include <cstdlib>
+#include <utility>
 
 namespace varc::compiler {
 
@@ -39,12 +40,35 @@ constexpr LegacyBuiltin kBuiltins[] = {
     {"gl_FragColor", "out vec4 varc_FragColor;", stageBit(Stage::Fragment)},
 };
 
+// Texture functions of GLSL before 1.30, which Vulkan GLSL reads as types (texture2D is a
+// separate-image type there): each becomes its generic overload.
+constexpr std::pair<const char*, const char*> kLegacyTextureFunctions[] = {
+    {"texture2D", "texture"},         {"texture2DProj", "textureProj"},
+    {"texture2DLod", "textureLod"},   {"texture2DProjLod", "textureProjLod"},
+    {"textureCube", "texture"},       {"textureCubeLod", "textureLod"},
+    {"texture3D", "texture"},         {"texture3DLod", "textureLod"},
+};
+
 bool mentions(std::string_view source, std::string_view name) {
     for (size_t at = source.find(name); at != std::string_view::npos; at = source.find(name, at + 1)) {
         size_t end = at + name.size();
         char next = end < source.size() ? source[end] : ' ';
         bool identifierContinues = std::isalnum(static_cast<unsigned char>(next)) || next == '_';
         if (!identifierContinues) return true;
+    }
+    return false;
+}
+
+// Whether |source| calls |function|: the name as a whole identifier followed by '('.
+bool calls(std::string_view source, std::string_view function) {
+    for (size_t at = source.find(function); at != std::string_view::npos;
+         at = source.find(function, at + 1)) {
+        if (at > 0 && (std::isalnum(static_cast<unsigned char>(source[at - 1])) ||
+                       source[at - 1] == '_')) {
+            continue;
+        }
+        size_t next = source.find_first_not_of(" \t", at + function.size());
+        if (next != std::string_view::npos && source[next] == '(') return true;
     }
     return false;
 }
@@ -104,6 +128,11 @@ std::string legacyGlslPreamble(std::string_view source, Stage stage) {
         std::string name = builtin.name;
         text += std::string(builtin.declaration) + "\n";
         text += "#define " + name + " varc_" + name.substr(3) + "\n";
+    }
+    for (const auto& [legacy, generic] : kLegacyTextureFunctions) {
+        if (calls(source, legacy)) {
+            text += "#define " + std::string(legacy) + " " + generic + "\n";
+        }
     }
     if (stage == Stage::Vertex) text += "#define varying out\n";
     if (stage == Stage::Fragment) text += "#define varying in\n";

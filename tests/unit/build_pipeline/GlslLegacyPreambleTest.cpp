@@ -44,5 +44,18 @@ TEST(GlslLineConvention, KeepsDirectivesFromVersion330) {
     EXPECT_EQ(toGlslLineConvention("#version 150\n#line 2 1\n"), "#version 150\n#line 1 1\n");
 }
 
+// Vulkan GLSL reads texture2D as a type; a legacy program calls it as a function.
+TEST(GlslLegacyPreamble, LegacyTextureFunctionsBecomeTheGenericOnes) {
+    std::string preamble = legacyGlslPreamble(
+        "uniform sampler2D s; void main() { c = texture2D (s, uv) + textureCube(k, d); }",
+        Stage::Fragment);
+    EXPECT_NE(preamble.find("#define texture2D texture\n"), std::string::npos);
+    EXPECT_NE(preamble.find("#define textureCube texture\n"), std::string::npos);
+    EXPECT_EQ(preamble.find("texture2DLod"), std::string::npos);
+    EXPECT_EQ(legacyGlslPreamble("uniform texture2D t; vec4 my_texture2D(vec2 uv);", Stage::Fragment)
+                  .find("texture2D"),
+              std::string::npos);
+}
+
 }  // namespace
 }  // namespace varc::compiler
