@@ -125,4 +125,17 @@
 #define UNITY_outputcontrolpoints outputcontrolpoints
 #define VPOS SV_Position
 
+// More texture macros (all still combined image samplers; the "sampler" argument is ignored).
+#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) tex2Dlod(tex, float4(coord, 0, lod))
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, coord, lod) texCUBElod(tex, float4(coord, lod))
+#define UNITY_SAMPLE_TEX2D_BIAS(tex, coord, bias) tex2Dbias(tex, float4(coord, 0, bias))
+#define UNITY_SAMPLE_TEXCUBE_BIAS(tex, coord, bias) texCUBEbias(tex, float4(coord, bias))
+#define UNITY_PASS_TEX2D(tex) tex
+#define UNITY_PASS_TEXCUBE(tex) tex
+#define UNITY_ARGS_TEX2D(tex) sampler2D tex
+#define UNITY_ARGS_TEXCUBE(tex) samplerCUBE tex
+// Screen-space textures (grab passes, camera targets): plain 2D textures in mono rendering.
+#define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex
+#define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) tex2D(tex, uv)
+
 #endif // HLSL_SUPPORT_INCLUDED

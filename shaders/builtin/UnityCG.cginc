@@ -389,4 +389,95 @@ v2f_img vert_img(appdata_img v) {
     return o;
 }
 
+// =============================================================================================
+// Additions for third-party shaders. Everything below only adds names; nothing above uses it.
+// =============================================================================================
+
+// Light-type helpers of the forward passes: set when the variant renders a directional light.
+#if defined(POINT) || defined(SPOT) || defined(DIRECTIONAL) || defined(POINT_COOKIE) || defined(DIRECTIONAL_COOKIE)
+#define USING_LIGHT_MULTI_COMPILE
+#endif
+#if defined(DIRECTIONAL) || defined(DIRECTIONAL_COOKIE)
+#define USING_DIRECTIONAL_LIGHT
+#endif
+
+// Alpha of opaque passes: forced to 1 (the framebuffer alpha stays meaningful).
+#define UNITY_OPAQUE_ALPHA(outputAlpha) outputAlpha = 1.0
+
+// A view-space vector (e.g. an extruded normal) projected to clip space without translation:
+// the upper-left 2x2 / 3x3 of UNITY_MATRIX_P. Used for screen-constant outline widths.
+inline float2 TransformViewToProjection(float2 v) { return mul((float2x2)UNITY_MATRIX_P, v); }
+inline float3 TransformViewToProjection(float3 v) { return mul((float3x3)UNITY_MATRIX_P, v); }
+
+// Pixel snapping for 2D sprites: round the clip position to the pixel grid of _ScreenParams.
+inline float4 UnityPixelSnap(float4 pos) {
+    float2 hpc = _ScreenParams.xy * 0.5f;
+    float2 pixelPos = round((pos.xy / pos.w) * hpc);
+    pos.xy = pixelPos / hpc * pos.w;
+    return pos;
+}
+
+// ---------------------------------------------------------------------------------------------
+// View-space normals packed in two channels by stereographic projection (the format of Unity's
+// _CameraDepthNormalsTexture: xy = normal, zw = EncodeFloatRG(Linear01Depth)).
+// Encode: p = n.xy / (n.z + 1) / K * 0.5 + 0.5 with K = 1.7777 (covers normals facing up to
+// ~2.3 rad from the viewer). Decode inverts the projection.
+// ---------------------------------------------------------------------------------------------
+#define VARC_STEREO_NORMAL_SCALE 1.7777
+inline float2 EncodeViewNormalStereo(float3 n) {
+    float2 p = n.xy / (n.z + 1.0);
+    p /= VARC_STEREO_NORMAL_SCALE;
+    return p * 0.5 + 0.5;
+}
+inline float3 DecodeViewNormalStereo(float4 enc4) {
+    float3 q = float3(enc4.xy * (2.0 * VARC_STEREO_NORMAL_SCALE) - VARC_STEREO_NORMAL_SCALE, 1.0);
+    float g = 2.0 / dot(q, q);
+    return float3(g * q.xy, g - 1.0);
+}
+inline float4 EncodeDepthNormal(float depth, float3 normal) {
+    return float4(EncodeViewNormalStereo(normal), EncodeFloatRG(depth));
+}
+inline void DecodeDepthNormal(float4 enc, out float depth, out float3 normal) {
+    depth = DecodeFloatRG(enc.zw);
+    normal = DecodeViewNormalStereo(enc);
+}
+
+// ---------------------------------------------------------------------------------------------
+// HDR-encoded textures (reflection probes). decodeInstructions = (scale, exponent, -, useAlpha):
+// rgb * scale * a^exponent when useAlpha = 1 (RGBM-style), rgb * scale when useAlpha = 0.
+// varc's runtime binds float cubes with (1, 1, 0, 0), which decodes to rgb (SHADER_ABI.md §6).
+// ---------------------------------------------------------------------------------------------
+inline half3 DecodeHDR(half4 data, half4 decodeInstructions) {
+    half alpha = decodeInstructions.w * (data.a - 1.0) + 1.0;   // w = 1: alpha is used
+    return (decodeInstructions.x * pow(abs(alpha), decodeInstructions.y)) * data.rgb;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lightmaps (declared in UnityShaderVariables.cginc; SHADER_ABI.md §4.13). varc's lightmaps are
+// linear HDR colour (UNITY_LIGHTMAP_FULL_HDR): decoding is the identity on rgb.
+// ---------------------------------------------------------------------------------------------
+#define UNITY_LIGHTMAP_FULL_HDR 1
+inline half3 DecodeLightmap(fixed4 color) { return color.rgb; }
+inline half3 DecodeLightmap(fixed4 color, half4 decodeInstructions) { return color.rgb; }
+inline half3 DecodeRealtimeLightmap(fixed4 color) { return color.rgb; }
+// Directional lightmaps: dirTex.xyz = dominant direction * 0.5 + 0.5, w = its rebalancing factor;
+// the half-Lambert term against the normal scales the colour.
+inline half3 DecodeDirectionalLightmap(half3 color, fixed4 dirTex, half3 normalWorld) {
+    half halfLambert = dot(normalWorld, dirTex.xyz - 0.5) + 0.5;
+    return color * halfLambert / max(1e-4h, dirTex.w);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Stereo rendering. varc renders one eye per pass (no UNITY_SINGLE_PASS_STEREO, no stereo
+// instancing): every screen-space adjustment is the identity and unity_StereoEyeIndex is 0.
+// ---------------------------------------------------------------------------------------------
+inline float2 UnityStereoScreenSpaceUVAdjust(float2 uv, float4 scaleAndOffset) { return uv; }
+inline float4 UnityStereoScreenSpaceUVAdjust(float4 uv, float4 scaleAndOffset) { return uv; }
+inline float2 UnityStereoTransformScreenSpaceTex(float2 uv) { return uv; }
+inline float4 UnityStereoTransformScreenSpaceTex(float4 uv) { return uv; }
+inline float2 UnityStereoClamp(float2 uv) { return uv; }
+#define UnityStereoClampScaleOffset(uv, scaleAndOffset) (uv)
+#define TRANSFORM_TEX_STEREO(tex, name) TRANSFORM_TEX(tex, name)
+#define UNITY_DECLARE_SCREENSPACE_SHADOWMAP_STEREO(tex) UNITY_DECLARE_SCREENSPACE_SHADOWMAP(tex)
+
 #endif // UNITY_CG_INCLUDED

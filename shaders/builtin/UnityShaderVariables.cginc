@@ -138,4 +138,68 @@ CBUFFER_END
 // varc stores the full ambient colour in glstate_lightmodel_ambient (SHADER_ABI.md §4.1).
 #define UNITY_LIGHTMODEL_AMBIENT (glstate_lightmodel_ambient)
 
+// =============================================================================================
+// Additions for third-party shaders. Each group is its own block, so a program that uses none of
+// its names keeps exactly the blocks above (unused declarations are pruned).
+// =============================================================================================
+
+// ---------------------------------------------------------------------------------------------
+// Reflection probes (SHADER_ABI.md §4.13): the two probes blended for this draw. BoxMin.w is
+// probe 0's blend weight (1 with a single probe); ProbePosition.w > 0 turns on box projection.
+// ---------------------------------------------------------------------------------------------
+UNITY_DECLARE_TEXCUBE(unity_SpecCube0);
+UNITY_DECLARE_TEXCUBE_NOSAMPLER(unity_SpecCube1);
+CBUFFER_START(UnityReflectionProbes)
+    float4 unity_SpecCube0_BoxMax;       // box max (world), w unused
+    float4 unity_SpecCube0_BoxMin;       // box min (world), w = blend weight of probe 0
+    float4 unity_SpecCube0_ProbePosition; // probe centre (world), w = 1 box projection, 0 infinite
+    half4 unity_SpecCube0_HDR;           // DecodeHDR instructions, (1, 1, 0, 0) for float cubes
+    float4 unity_SpecCube1_BoxMax;
+    float4 unity_SpecCube1_BoxMin;
+    float4 unity_SpecCube1_ProbePosition;
+    half4 unity_SpecCube1_HDR;
+CBUFFER_END
+// Reflection-probe features the GI code may use (Unity sets these per graphics tier).
+#ifndef UNITY_SPECCUBE_BOX_PROJECTION
+#define UNITY_SPECCUBE_BOX_PROJECTION 1
+#endif
+#ifndef UNITY_SPECCUBE_BLENDING
+#define UNITY_SPECCUBE_BLENDING 1
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Lightmaps (SHADER_ABI.md §4.13): baked (LIGHTMAP_ON) and realtime (DYNAMICLIGHTMAP_ON) maps,
+// their directional companions, the baked shadow mask, and their uv scale/offsets.
+// ---------------------------------------------------------------------------------------------
+UNITY_DECLARE_TEX2D(unity_Lightmap);
+UNITY_DECLARE_TEX2D_NOSAMPLER(unity_LightmapInd);
+UNITY_DECLARE_TEX2D(unity_ShadowMask);
+UNITY_DECLARE_TEX2D(unity_DynamicLightmap);
+UNITY_DECLARE_TEX2D_NOSAMPLER(unity_DynamicDirectionality);
+UNITY_DECLARE_TEX2D_NOSAMPLER(unity_DynamicNormal);
+CBUFFER_START(UnityLightmaps)
+    float4 unity_LightmapST;             // uv1 * xy + zw -> unity_Lightmap uv
+    float4 unity_DynamicLightmapST;      // uv2 * xy + zw -> unity_DynamicLightmap uv
+    half4 unity_Lightmap_HDR;            // decode instructions (varc: (1, 1, 0, 0), unused)
+    half4 unity_DynamicLightmap_HDR;
+CBUFFER_END
+
+// ---------------------------------------------------------------------------------------------
+// Stereo: varc renders one eye per pass; the eye index is the constant 0.
+// ---------------------------------------------------------------------------------------------
+static const int unity_StereoEyeIndex = 0;
+
+// ---------------------------------------------------------------------------------------------
+// More legacy names.
+// ---------------------------------------------------------------------------------------------
+#define unity_MatrixMVP UNITY_MATRIX_MVP
+#define unity_MatrixMV UNITY_MATRIX_MV
+#define unity_MatrixTMV UNITY_MATRIX_T_MV
+#define unity_MatrixITMV UNITY_MATRIX_IT_MV
+// Unity 4 names of the first four vertex-light colours.
+#define unity_LightColor0 unity_LightColor[0]
+#define unity_LightColor1 unity_LightColor[1]
+#define unity_LightColor2 unity_LightColor[2]
+#define unity_LightColor3 unity_LightColor[3]
+
 #endif // UNITY_SHADER_VARIABLES_INCLUDED
