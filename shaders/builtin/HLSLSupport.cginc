@@ -138,4 +138,10 @@
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) tex2D(tex, uv)
 
+// Semi-transparent shadow casters dither against the 3D texture _DitherMaskLOD (SHADER_ABI.md §6).
+#define UNITY_USE_DITHER_MASK_FOR_ALPHABLENDED_SHADOWS 1
+
+// The pixel-position input semantic: VPOS is the fragment's window position (gl_FragCoord).
+#define VPOS SV_POSITION
+
 #endif // HLSL_SUPPORT_INCLUDED

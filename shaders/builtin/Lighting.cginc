@@ -8,6 +8,7 @@
 
 #include "UnityLightingCommon.cginc"
 #include "UnityCG.cginc"
+#include "UnityGlobalIllumination.cginc" // UnityGIInput, UnityGlobalIllumination (added for third-party shaders)
 
 struct SurfaceOutput {
     fixed3 Albedo;
@@ -47,6 +48,14 @@ inline fixed4 LightingBlinnPhong(SurfaceOutput s, half3 viewDir, UnityGI gi) {
     fixed4 c = UnityBlinnPhongLight(s, viewDir, gi.light);
     c.rgb += s.Albedo * gi.indirect.diffuse;
     return c;
+}
+
+// GI hooks of the legacy models (surface-shader style): gather GI for the surface normal.
+inline void LightingLambert_GI(SurfaceOutput s, UnityGIInput data, inout UnityGI gi) {
+    gi = UnityGlobalIllumination(data, 1.0, s.Normal);
+}
+inline void LightingBlinnPhong_GI(SurfaceOutput s, UnityGIInput data, inout UnityGI gi) {
+    gi = UnityGlobalIllumination(data, 1.0, s.Normal);
 }
 
 #endif // LIGHTING_INCLUDED

@@ -26,4 +26,20 @@ struct UnityGI {
     UnityIndirect indirect;
 };
 
+// Everything the global-illumination functions (UnityGlobalIllumination.cginc) need to know
+// about the surface point: the main light, position, view direction, attenuation, the ambient
+// already gathered per vertex, the two reflection probes and the lightmap uvs.
+struct UnityGIInput {
+    UnityLight light;      // the pixel light; color is multiplied by atten in UnityGI_Base
+    float3 worldPos;
+    half3 worldViewDir;    // unit vector from the surface towards the camera
+    half atten;            // light attenuation * shadow
+    half3 ambient;         // per-vertex SH / vertex lights (ShadeSHPerVertex)
+    float4 lightmapUV;     // xy = baked lightmap uv, zw = realtime lightmap uv
+    float4 boxMin[2];      // probe boxes; boxMin[0].w = blend weight of probe 0
+    float4 boxMax[2];
+    float4 probePosition[2]; // w > 0: box projection
+    float4 probeHDR[2];    // DecodeHDR instructions of each probe
+};
+
 #endif // UNITY_LIGHTING_COMMON_INCLUDED

@@ -13,6 +13,7 @@
 #include "UnityStandardUtils.cginc"
 #include "UnityStandardBRDF.cginc"
 #include "UnityShadowLibrary.cginc"
+#include "UnityGlobalIllumination.cginc" // added for third-party shaders
 
 // UNITY_BRDF_PBS(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir, light, gi)
 // A shader may #define UNITY_BRDF_PBS itself before including this file. The scalar arguments
@@ -65,6 +66,17 @@ inline half4 LightingStandardSpecular(SurfaceOutputStandardSpecular s, float3 vi
     half4 c = UNITY_BRDF_PBS(s.Albedo, s.Specular, oneMinusReflectivity, s.Smoothness, s.Normal, viewDir, gi.light, gi.indirect);
     c.a = outputAlpha;
     return c;
+}
+
+// GI hooks of the Standard models (surface-shader style): diffuse GI plus the reflection probes
+// sampled with the surface's smoothness.
+inline void LightingStandard_GI(SurfaceOutputStandard s, UnityGIInput data, inout UnityGI gi) {
+    Unity_GlossyEnvironmentData g = UnityGlossyEnvironmentSetup(s.Smoothness, data.worldViewDir, s.Normal, lerp(unity_ColorSpaceDielectricSpec.rgb, s.Albedo, s.Metallic));
+    gi = UnityGlobalIllumination(data, s.Occlusion, s.Normal, g);
+}
+inline void LightingStandardSpecular_GI(SurfaceOutputStandardSpecular s, UnityGIInput data, inout UnityGI gi) {
+    Unity_GlossyEnvironmentData g = UnityGlossyEnvironmentSetup(s.Smoothness, data.worldViewDir, s.Normal, s.Specular);
+    gi = UnityGlobalIllumination(data, s.Occlusion, s.Normal, g);
 }
 
 #endif // UNITY_PBS_LIGHTING_INCLUDED

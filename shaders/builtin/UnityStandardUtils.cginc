@@ -55,4 +55,37 @@ half3 BlendNormals(half3 n1, half3 n2) {
     return normalize(half3(n1.xy + n2.xy, n1.z * n2.z));
 }
 
+// ---------------------------------------------------------------------------------------------
+// Additions for third-party shaders.
+// ---------------------------------------------------------------------------------------------
+// Box-projected reflection lookup: the reflected ray from worldPos is intersected with the
+// probe's axis-aligned box [boxMin, boxMax] and the lookup direction becomes (hit - centre).
+// cubemapCenter.w <= 0 (an infinitely distant probe) leaves the direction unchanged.
+inline float3 BoxProjectedCubemapDirection(float3 worldRefl, float3 worldPos, float4 cubemapCenter, float4 boxMin, float4 boxMax) {
+    UNITY_BRANCH
+    if (cubemapCenter.w > 0.0) {
+        float3 dir = normalize(worldRefl);
+        float3 tMax = (boxMax.xyz - worldPos) / dir;
+        float3 tMin = (boxMin.xyz - worldPos) / dir;
+        float3 tExit = float3(dir.x > 0.0 ? tMax.x : tMin.x, dir.y > 0.0 ? tMax.y : tMin.y, dir.z > 0.0 ? tMax.z : tMin.z);
+        float t = min(min(tExit.x, tExit.y), tExit.z);
+        worldRefl = (worldPos - cubemapCenter.xyz) + dir * t;
+    }
+    return worldRefl;
+}
+
+// Normal maps are plain RGB in varc, so the RG/AG variant is UnpackScaleNormal.
+half3 UnpackScaleNormalRGorAG(half4 packednormal, half bumpScale) { return UnpackScaleNormal(packednormal, bumpScale); }
+
+// lerp(1, b, t) for colours and scalars (occlusion and detail strength of the Standard shader).
+inline half3 LerpWhiteTo(half3 b, half t) { return half3(1.0 - t, 1.0 - t, 1.0 - t) + b * t; }
+inline half LerpOneTo(half b, half t) { return (1.0 - t) + b * t; }
+
+// HLSL truncates a vector argument to a scalar parameter; glslang does not. Some shaders pass a
+// float3 metallic (all components equal): these overloads take its first component.
+inline half3 DiffuseAndSpecularFromMetallic(half3 albedo, half3 metallic, out half3 specColor, out half oneMinusReflectivity) {
+    return DiffuseAndSpecularFromMetallic(albedo, metallic.x, specColor, oneMinusReflectivity);
+}
+inline half OneMinusReflectivityFromMetallic(half3 metallic) { return OneMinusReflectivityFromMetallic(metallic.x); }
+
 #endif // UNITY_STANDARD_UTILS_INCLUDED
