@@ -88,4 +88,14 @@ inline half3 DiffuseAndSpecularFromMetallic(half3 albedo, half3 metallic, out ha
 }
 inline half OneMinusReflectivityFromMetallic(half3 metallic) { return OneMinusReflectivityFromMetallic(metallic.x); }
 
+// Single-step parallax offset: the height h (0..1) is centred on the surface (h * height -
+// height / 2) and moved along the tangent-space view direction, whose z is biased by 0.42 to
+// limit the shift at grazing angles.
+inline float2 ParallaxOffset1Step(half h, half height, half3 viewDir) {
+    h = h * height - height / 2.0;
+    half3 v = normalize(viewDir);
+    v.z += 0.42;
+    return h * (v.xy / v.z);
+}
+
 #endif // UNITY_STANDARD_UTILS_INCLUDED

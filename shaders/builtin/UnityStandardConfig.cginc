@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: Apache-2.0
+// varc built-in: UnityStandardConfig.cginc. Configuration switches of the Standard shader family.
+// varc ships one quality level: the full per-pixel path with the BRDF of UnityStandardBRDF.cginc.
+// Written for varc.
+#ifndef UNITY_STANDARD_CONFIG_INCLUDED
+#define UNITY_STANDARD_CONFIG_INCLUDED
+
+// No "simple" (mobile) variant of the Standard shader.
+#ifndef UNITY_STANDARD_SIMPLE
+#define UNITY_STANDARD_SIMPLE 0
+#endif
+// GGX specular (the only BRDF varc has).
+#ifndef UNITY_BRDF_GGX
+#define UNITY_BRDF_GGX 1
+#endif
+// Detail normal maps are blended when _DETAIL_* is on.
+#ifndef UNITY_ENABLE_DETAIL_NORMALMAP
+#define UNITY_ENABLE_DETAIL_NORMALMAP 1
+#endif
+// The fragment program always receives the world position.
+#ifndef UNITY_REQUIRE_FRAG_WORLDPOS
+#define UNITY_REQUIRE_FRAG_WORLDPOS 1
+#endif
+
+#endif // UNITY_STANDARD_CONFIG_INCLUDED
