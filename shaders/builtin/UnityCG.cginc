@@ -480,4 +480,9 @@ inline float2 UnityStereoClamp(float2 uv) { return uv; }
 #define TRANSFORM_TEX_STEREO(tex, name) TRANSFORM_TEX(tex, name)
 #define UNITY_DECLARE_SCREENSPACE_SHADOWMAP_STEREO(tex) UNITY_DECLARE_SCREENSPACE_SHADOWMAP(tex)
 
+// Set when V2F_SHADOW_CASTER_NOPOS declares nothing (every caster but the point-light cube one).
+#if !defined(SHADOWS_CUBE)
+#define V2F_SHADOW_CASTER_NOPOS_IS_EMPTY
+#endif
+
 #endif // UNITY_CG_INCLUDED
