@@ -141,7 +141,4 @@
 // Semi-transparent shadow casters dither against the 3D texture _DitherMaskLOD (SHADER_ABI.md §6).
 #define UNITY_USE_DITHER_MASK_FOR_ALPHABLENDED_SHADOWS 1
 
-// The pixel-position input semantic: VPOS is the fragment's window position (gl_FragCoord).
-#define VPOS SV_POSITION
-
 #endif // HLSL_SUPPORT_INCLUDED
