@@ -101,10 +101,7 @@ inline half Luminance(half3 rgb) { return dot(rgb, unity_ColorSpaceLuminance.rgb
 // ---------------------------------------------------------------------------------------------
 // Transforms. mul(M, v) with column vectors; matrices as documented in SHADER_ABI.md.
 // ---------------------------------------------------------------------------------------------
-inline float4 UnityObjectToClipPos(in float3 pos) {
-    return mul(UNITY_MATRIX_VP, mul(unity_ObjectToWorld, float4(pos, 1.0)));
-}
-inline float4 UnityObjectToClipPos(float4 pos) { return UnityObjectToClipPos(pos.xyz); }
+// UnityObjectToClipPos: UnityShaderUtilities.cginc (via UnityShaderVariables.cginc).
 inline float4 UnityWorldToClipPos(in float3 pos) { return mul(UNITY_MATRIX_VP, float4(pos, 1.0)); }
 inline float4 UnityViewToClipPos(in float3 pos) { return mul(UNITY_MATRIX_P, float4(pos, 1.0)); }
 inline float3 UnityObjectToViewPos(in float3 pos) {

@@ -202,4 +202,7 @@ static const int unity_StereoEyeIndex = 0;
 #define unity_LightColor2 unity_LightColor[2]
 #define unity_LightColor3 unity_LightColor[3]
 
+// UnityObjectToClipPos for programs that include nothing else (as in Unity).
+#include "UnityShaderUtilities.cginc"
+
 #endif // UNITY_SHADER_VARIABLES_INCLUDED
