@@ -20,7 +20,12 @@ if [ "${1:-}" = --sanitize ]; then
     # checks stay on everywhere.
     export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
     (cd "$build" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
-        ctest --output-on-failure -j "$(nproc)" -LE vulkan)
+        ctest --output-on-failure -j "$(nproc)" -LE "vulkan|compat")
+    # The compatibility corpus builds several times slower under the sanitizers: there it runs
+    # for crashes, hangs and unmapped messages only, with small variant spaces.
+    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 bash "$root/tests/compat/corpus.sh" \
+        "$build/varc" "$root/../shared/compat" "$root/docs/COMPATIBILITY.md" \
+        "$build/compat-crashes" --crashes-only
     (cd "$build" && ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 \
         ctest --output-on-failure -j "$(nproc)" -L vulkan)
     exec "$root/scripts/fuzz.sh"

@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: Apache-2.0
 # The library and fixture packs, fingerprinted: the SHA-256 of every SPIR-V program `varc extract`
 # writes, of its manifest (stage, entry point, source) and of `varc info --json` (shaders,
-# passes, keyword sets, variant and program counts), without the pack's own path and inputs
-# hash (which names the build machine's include files). The fingerprint is committed in
+# passes, keyword sets, variant and program counts), without the pack's own path, its inputs
+# hash and its size: those also cover the include files a build read (their text and the list
+# each program records), which change whenever varc's built-in library grows. The fingerprint is committed in
 # tests/library/packs.digest, so a change that alters any program of varc's library or of the
 # seed fixtures fails here unless it is meant: then rerun with VARC_UPDATE_GOLDENS=1 and commit.
 # Usage: pack_digest.sh VARC WORK_DIR DIGEST_FILE   (from the repository root)
@@ -24,7 +25,8 @@ for input in shaders ../shared/fixtures/seed000-multiple-lights ../shared/fixtur
     "$varc" extract "$work/$name.svpack" -o "$work/$name" >/dev/null || exit 1
     sed -i '/"pack":/d' "$work/$name/manifest.json"
     "$varc" info --json "$work/$name.svpack" |
-        sed -e 's/"file":"[^"]*",\{0,1\}//' -e 's/"inputs_hash":"[^"]*",\{0,1\}//' >"$work/$name/info.json"
+        sed -e 's/"file":"[^"]*",\{0,1\}//' -e 's/"inputs_hash":"[^"]*",\{0,1\}//' \
+            -e 's/,"pack":[0-9]*//' >"$work/$name/info.json"
     (cd "$work/$name" && sha256sum -- *) | sed "s|^|$name |" >>"$actual"
 done
 if [ "${VARC_UPDATE_GOLDENS:-}" = 1 ]; then

@@ -138,7 +138,9 @@ bool Builder::plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sin
             job.passIndex = p;
             job.shader = &shaders[s];
             job.pass = &shaders[s].passes[p];
-            if (!collectStages(job, sink)) {
+            if (!collectStages(job, sink) ||
+                !checkVariantLimit(shaders[s], shaders[s].passes[p], mOptions.maxVariantsPerPass,
+                                   sink)) {
                 ok = false;
                 continue;
             }

@@ -25,6 +25,7 @@
 #include "varc/cli/VariantReport.h"
 #include "varc/core/AtomicFile.h"
 #include "varc/frontend/ShaderLoader.h"
+#include "varc/frontend/VariantLimit.h"
 #include "varc/packwriter/PackWriter.h"
 
 namespace varc::cli {
@@ -65,6 +66,14 @@ bool loadAll(const Options& options, Session& session,
 int runVariants(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
     std::vector<compiler::LoadedShader> shaders;
     bool ok = loadAll(options, session, shaders);
+    if (ok && options.list) {
+        for (const compiler::LoadedShader& shader : shaders) {
+            for (const compiler::LoadedPass& pass : shader.passes) {
+                ok = compiler::checkVariantLimit(shader, pass, options.maxVariants,
+                                                 session.diagnostics) && ok;
+            }
+        }
+    }
     printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
     if (!ok) return kExitFailure;
     if (options.json) {
@@ -180,6 +189,7 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     buildOptions.jobs = options.jobs;
     buildOptions.keepGoing = options.keepGoing;
     buildOptions.cacheDirectory = options.cacheDirectory;
+    buildOptions.maxVariantsPerPass = options.maxVariants;
     buildOptions.debugNames = options.debugNames;
     buildOptions.progress = progressPrinter(err);
     auto build = compiler::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);

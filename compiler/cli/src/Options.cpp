@@ -44,10 +44,20 @@ void addInputOptions(CLI::App& command, Options& options) {
         ->type_name("PATH");
 }
 
+void addMaxVariants(CLI::App& command, Options& options) {
+    command
+        .add_option("--max-variants", options.maxVariants,
+                    "Refuse a pass with more variants than N before enumerating them "
+                    "(default 10000000)")
+        ->type_name("N")
+        ->check(CLI::PositiveNumber);
+}
+
 void addVariants(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("variants", "List passes, keyword sets and variant counts");
     cmd->add_flag("--json", options.json, "Print JSON");
     cmd->add_flag("--list", options.list, "List every variant in enumeration order");
+    addMaxVariants(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Variants; });
 }
@@ -86,6 +96,7 @@ void addBuild(CLI::App& app, Options& options) {
         ->check(CLI::Range(1, 22));
     cmd->add_flag("-g,--debug-names", options.debugNames,
                   "Keep OpName/OpMemberName in the SPIR-V (bigger packs; for GPU debuggers)");
+    addMaxVariants(*cmd, options);
     cmd->add_option("--cache-dir", options.cacheDirectory,
                     "Reuse and store compiled programs in this folder (ccache-like)")
         ->envname("VARC_CACHE_DIR")

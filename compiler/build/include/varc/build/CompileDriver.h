@@ -12,6 +12,7 @@
 #include "varc/build/SpirvOptimizer.h"
 #include "varc/core/Diagnostic.h"
 #include "varc/frontend/ShaderLoader.h"
+#include "varc/frontend/VariantLimit.h"
 #include "varc/includes/SourceMap.h"
 #include "varc/pack/PackModel.h"
 #include "varc/variants/VariantKey.h"
@@ -33,6 +34,8 @@ struct BuildOptions {
     // A ProgramCache folder: programs found there are not compiled again, programs compiled are
     // stored there. "" = no cache.
     std::string cacheDirectory;
+    // A pass with more variants is an error before anything is enumerated (VariantLimit.h).
+    uint64_t maxVariantsPerPass = kDefaultMaxVariantsPerPass;
     // Called from worker threads after each distinct program compiles: (done, total). Must be
     // thread-safe; may be empty.
     std::function<void(size_t, size_t)> progress;

@@ -36,6 +36,7 @@ struct Options {
     std::string optimization = "-O";       // -O0 | -O | -Os
     bool keepGoing = false;                // --keep-going
     std::string cacheDirectory;            // --cache-dir DIR or VARC_CACHE_DIR
+    uint64_t maxVariants = 10'000'000;     // --max-variants N: per pass, for build and --list
     bool debugNames = false;               // -g, --debug-names
     int compressionLevel = 19;             // --compression-level N (zstd, 1..22)
     // info / extract / lookup
