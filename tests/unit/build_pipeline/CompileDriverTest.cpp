@@ -349,5 +349,21 @@ TEST_F(CompileDriverTest, GetRenderTargetSampleCountIsOneSample) {
                                 : mDiagnostics.diagnostics()[0].message);
 }
 
+// --max-variants: a pass at the limit builds, one variant past it is refused before enumeration.
+TEST_F(CompileDriverTest, APassAtTheVariantLimitBuildsAndOnePastIsRefused) {
+    BuildOptions atLimit;
+    atLimit.maxVariantsPerPass = 4;  // kTwoKeywordShader has 4 variants
+    EXPECT_TRUE(build(kTwoKeywordShader, atLimit));
+    BuildOptions pastLimit;
+    pastLimit.maxVariantsPerPass = 3;
+    EXPECT_FALSE(build(kTwoKeywordShader, pastLimit));
+    ASSERT_TRUE(mDiagnostics.hasErrors());
+    const Diagnostic& error = mDiagnostics.diagnostics().back();
+    EXPECT_NE(error.message.find("has 4 variants (2 keyword sets); the limit is 3"),
+              std::string::npos)
+        << error.message;
+    EXPECT_EQ(error.notes.size(), 2u);
+}
+
 }  // namespace
 }  // namespace varc::compiler
