@@ -2,17 +2,14 @@
 // Object-like macros a program text defines itself.
 #include "varc/build/UserDefines.h"
 
+#include "varc/core/AsciiIdentifier.h"
+
 namespace varc::compiler {
 
 namespace {
 
-bool isBlank(char c) {
-    return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
-}
-
-bool isIdentifierChar(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-}
+// A line's own blanks, and the '\n' that ends it.
+bool isBlank(char c) { return isAsciiLineBlank(c) || c == '\n'; }
 
 size_t skipBlanks(std::string_view line, size_t pos) {
     while (pos < line.size() && isBlank(line[pos])) ++pos;
@@ -29,7 +26,7 @@ bool parseDefine(std::string_view line, std::string_view& name, std::string_view
     }
     pos = skipBlanks(line, pos + 6);
     size_t start = pos;
-    while (pos < line.size() && isIdentifierChar(line[pos])) ++pos;
+    while (pos < line.size() && isAsciiIdentifierChar(line[pos])) ++pos;
     if (pos == start || (pos < line.size() && line[pos] == '(')) return false;  // function-like
     name = line.substr(start, pos - start);
     replacement = line.substr(skipBlanks(line, pos));

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pruner/ShaderTokenizer.h"
+#include "varc/core/AsciiIdentifier.h"
 
 namespace varc::compiler {
 
@@ -34,15 +35,11 @@ bool isPunct(const Token& token, char c) {
     return token.kind == TokenKind::Punct && token.text.size() == 1 && token.text[0] == c;
 }
 
-bool isIdentifierChar(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
-}
-
 // The literal at the start of |text| ("0x1376312589U + 1" -> "0x1376312589U"), or "".
 std::string_view hexLiteralAt(std::string_view text) {
     if (text.size() < 3 || text[0] != '0' || (text[1] != 'x' && text[1] != 'X')) return {};
     size_t end = 2;
-    while (end < text.size() && isIdentifierChar(text[end])) ++end;
+    while (end < text.size() && isAsciiIdentifierChar(text[end])) ++end;
     return text.substr(0, end);
 }
 
@@ -400,7 +397,7 @@ std::string truncateWideHexLiterals(std::string_view text) {
     size_t i = 0;
     while (i < text.size()) {
         std::string_view literal =
-            (i == 0 || !isIdentifierChar(text[i - 1])) ? hexLiteralAt(text.substr(i)) : "";
+            (i == 0 || !isAsciiIdentifierChar(text[i - 1])) ? hexLiteralAt(text.substr(i)) : "";
         if (literal.empty()) {
             result += text[i++];
             continue;

@@ -6,18 +6,14 @@
 #include <charconv>
 #include <set>
 
+#include "varc/core/AsciiIdentifier.h"
+
 namespace varc::compiler {
 
 namespace {
 
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-
-bool isIdentifierChar(char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-}
-
 std::string_view skipBlanks(std::string_view text) {
-    while (!text.empty() && isBlank(text.front())) text.remove_prefix(1);
+    while (!text.empty() && isAsciiLineBlank(text.front())) text.remove_prefix(1);
     return text;
 }
 
@@ -27,12 +23,12 @@ std::string_view directiveArgument(std::string_view line, std::string_view keywo
     if (line.empty() || line.front() != '#') return {};
     line = skipBlanks(line.substr(1));
     if (!line.starts_with(keyword) || line.size() == keyword.size() ||
-        !isBlank(line[keyword.size()])) {
+        !isAsciiLineBlank(line[keyword.size()])) {
         return {};
     }
     line = skipBlanks(line.substr(keyword.size()));
     size_t end = 0;
-    while (end < line.size() && isIdentifierChar(line[end])) ++end;
+    while (end < line.size() && isAsciiIdentifierChar(line[end])) ++end;
     return line.substr(0, end);
 }
 
@@ -45,7 +41,7 @@ std::vector<std::string> redefinedMacros(std::string_view log) {
          at = log.find(kMarker, at + 1)) {
         std::string_view rest = log.substr(at + kMarker.size());
         size_t end = 0;
-        while (end < rest.size() && isIdentifierChar(rest[end])) ++end;
+        while (end < rest.size() && isAsciiIdentifierChar(rest[end])) ++end;
         std::string name(rest.substr(0, end));
         if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) {
             names.push_back(std::move(name));
@@ -72,7 +68,7 @@ std::string undefineBeforeRedefinitions(std::string_view text,
             rest = skipBlanks(rest.substr(4));
             rest = skipBlanks(rest.substr(lineNumber.size()));
             size_t fileEnd = 0;
-            while (fileEnd < rest.size() && isIdentifierChar(rest[fileEnd])) ++fileEnd;
+            while (fileEnd < rest.size() && isAsciiIdentifierChar(rest[fileEnd])) ++fileEnd;
             std::from_chars(lineNumber.data(), lineNumber.data() + lineNumber.size(), line);
             if (fileEnd > 0) file = std::string(rest.substr(0, fileEnd));
             result.append(physical);

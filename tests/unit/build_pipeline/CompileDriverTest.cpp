@@ -81,6 +81,11 @@ protected:
         return buildPrograms(mShaders, mSourceMap, options, mDiagnostics);
     }
 
+    // The first diagnostic's message, for assertion output; "" when there is none.
+    std::string firstMessage() const {
+        return mDiagnostics.diagnostics().empty() ? "" : mDiagnostics.diagnostics()[0].message;
+    }
+
     includes::InMemoryFileSystem mFileSystem;
     includes::SourceMap mSourceMap;
     DiagnosticList mDiagnostics;
@@ -89,9 +94,7 @@ protected:
 
 TEST_F(CompileDriverTest, KeywordsTouchingOneStageEachGiveTwoProgramsPerStage) {
     auto output = build(kTwoKeywordShader);
-    ASSERT_TRUE(output) << (mDiagnostics.diagnostics().empty()
-                                ? ""
-                                : mDiagnostics.diagnostics()[0].message);
+    ASSERT_TRUE(output) << firstMessage();
     ASSERT_EQ(output->passes.size(), 1u);
     const CompiledPass& pass = output->passes[0];
     EXPECT_EQ(pass.variants.size(), 4u);
@@ -333,9 +336,7 @@ TEST_F(CompileDriverTest, AShaderDefiningItsOwnPassMacroBuilds) {
     std::string shader = replaced(kTwoKeywordShader, "#include \"Common.cginc\"",
                                   "#define UNITY_PASS_FORWARDBASE\n#include \"Common.cginc\"");
     auto output = build(shader);
-    ASSERT_TRUE(output) << (mDiagnostics.diagnostics().empty()
-                                ? ""
-                                : mDiagnostics.diagnostics()[0].message);
+    ASSERT_TRUE(output) << firstMessage();
     EXPECT_FALSE(mDiagnostics.hasErrors());
 }
 
@@ -344,9 +345,7 @@ TEST_F(CompileDriverTest, GetRenderTargetSampleCountIsOneSample) {
     std::string shader = replaced(kTwoKeywordShader, "return float4(1, 1, 1, 1);",
                                   "return float4(1, 1, 1, GetRenderTargetSampleCount());");
     auto output = build(shader);
-    ASSERT_TRUE(output) << (mDiagnostics.diagnostics().empty()
-                                ? ""
-                                : mDiagnostics.diagnostics()[0].message);
+    ASSERT_TRUE(output) << firstMessage();
 }
 
 // --max-variants: a pass at the limit builds, one variant past it is refused before enumeration.
