@@ -106,7 +106,7 @@ void ShaderParser::applyCategory(const CategoryState& category, SubShader& subSh
 
 // `Fallback "Diffuse"` or `Fallback Off`.
 bool ShaderParser::parseFallback(ShaderFile& shader) {
-    mCursor.next();
+    shader.fallbackLocation = mCursor.next().location;
     if (mCursor.peek().isKeyword("Off")) {
         mCursor.next();
         shader.fallback.reset();

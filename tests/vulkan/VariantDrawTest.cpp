@@ -97,6 +97,10 @@ protected:
         auto whiteCube = Texture::createCube(context(), faces);
         ASSERT_TRUE(whiteCube) << whiteCube.error().detail;
         mWhiteCube.emplace(std::move(*whiteCube));
+        std::vector<Image> slices(2, white);
+        auto white3D = Texture::createVolume(context(), slices);
+        ASSERT_TRUE(white3D) << white3D.error().detail;
+        mWhite3D.emplace(std::move(*white3D));
         auto sampler = createSampler(context());
         ASSERT_TRUE(sampler) << sampler.error().detail;
         mSampler = std::move(*sampler);
@@ -105,6 +109,7 @@ protected:
     void TearDown() override {
         mWhite2D.reset();
         mWhiteCube.reset();
+        mWhite3D.reset();
         mSampler.reset();
         VulkanTest::TearDown();
     }
@@ -113,13 +118,15 @@ protected:
 
     TextureLookup whiteTextures() const {
         return [this](std::string_view, pack::ResourceDim dim) -> std::optional<TextureBinding> {
-            const Texture& texture = dim == pack::ResourceDim::Cube ? *mWhiteCube : *mWhite2D;
+            const Texture& texture = dim == pack::ResourceDim::Cube    ? *mWhiteCube
+                                     : dim == pack::ResourceDim::Dim3D ? *mWhite3D
+                                                                       : *mWhite2D;
             return TextureBinding{texture.view(), mSampler.get()};
         };
     }
 
     // Declared after the context (in VulkanTest) so they are destroyed first.
-    std::optional<Texture> mWhite2D, mWhiteCube;
+    std::optional<Texture> mWhite2D, mWhiteCube, mWhite3D;
     UniqueHandle<VkSampler> mSampler;
 };
 

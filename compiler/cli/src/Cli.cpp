@@ -55,9 +55,14 @@ bool loadAll(const Options& options, Session& session,
              std::vector<compiler::LoadedShader>& shaders) {
     std::vector<std::string> files = findShaderFiles(options.inputs, session.diagnostics);
     includes::IncludeOptions include = includeOptions(options);
+    // UsePass and Fallback find other shaders among the inputs, then under the include folders.
+    DiagnosticList searchErrors;  // an unreadable include folder is reported by the includes
+    compiler::ShaderCatalog catalog(session.fileSystem, session.sourceMap, files,
+                                    findShaderFiles(options.includeDirs, searchErrors),
+                                    include.builtinDir);
     for (const std::string& file : files) {
         auto shader = compiler::loadShader(file, session.fileSystem, session.sourceMap, include,
-                                           session.diagnostics);
+                                           session.diagnostics, &catalog);
         if (shader) shaders.push_back(std::move(*shader));
     }
     return !session.diagnostics.hasErrors();

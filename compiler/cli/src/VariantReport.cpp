@@ -19,6 +19,17 @@ std::vector<std::string> displayKeywords(const variants::KeywordSetDecl& set) {
     return keywords;
 }
 
+// null for the shader's own passes; {"kind": "fallback"|"usepass", "shader": name} otherwise
+// (the JSON lists "from" for borrowed passes only).
+Json passOriginJson(const shaderlab::PassOrigin& origin) {
+    switch (origin.kind) {
+    case shaderlab::PassOrigin::Kind::Own: return nullptr;
+    case shaderlab::PassOrigin::Kind::UsePass: return {{"kind", "usepass"}, {"shader", origin.shader}};
+    case shaderlab::PassOrigin::Kind::Fallback: return {{"kind", "fallback"}, {"shader", origin.shader}};
+    }
+    return nullptr;
+}
+
 Json passJson(const compiler::LoadedPass& pass, bool withList) {
     Json sets = Json::array();
     for (const variants::KeywordSetDecl& set : pass.keywords.sets) sets.push_back(displayKeywords(set));
@@ -27,6 +38,8 @@ Json passJson(const compiler::LoadedPass& pass, bool withList) {
                  {"lightmode", pass.pass->lightMode()},
                  {"keyword_sets", sets},
                  {"variants", pass.space->count()}};
+    Json origin = passOriginJson(pass.pass->origin);
+    if (!origin.is_null()) json["from"] = std::move(origin);
     if (withList) {
         Json list = Json::array();
         pass.space->forEach([&](const variants::VariantKey& key) {
@@ -54,6 +67,12 @@ void printPass(const compiler::LoadedPass& pass, const includes::SourceMap& sour
     if (!pass.pass->name.empty()) out << " \"" << pass.pass->name << "\"";
     std::string lightMode = pass.pass->lightMode();
     if (!lightMode.empty()) out << " LightMode " << lightMode;
+    std::string origin = compiler::describePassOrigin(pass.pass->origin);
+    if (!origin.empty()) {
+        out << " (" << origin << ", " << sourceMap.format({pass.pass->origin.reference.file,
+                                                          pass.pass->origin.reference.line, 0})
+            << ")";
+    }
     uint64_t count = pass.space->count();
     out << ": " << count << (count == 1 ? " variant" : " variants");
     uint64_t full = pass.space->fullCount();

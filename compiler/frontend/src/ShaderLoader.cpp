@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "varc/core/SaturatingMath.h"
+#include "varc/frontend/PassReferences.h"
 #include "varc/shaderlab/ShaderLabParser.h"
 #include "varc/variants/PragmaParser.h"
 
@@ -148,12 +149,25 @@ uint64_t LoadedShader::variantCount() const {
     return total;
 }
 
+std::string describePassOrigin(const shaderlab::PassOrigin& origin) {
+    switch (origin.kind) {
+    case shaderlab::PassOrigin::Kind::Own: return "";
+    case shaderlab::PassOrigin::Kind::UsePass: return "from UsePass of \"" + origin.shader + "\"";
+    case shaderlab::PassOrigin::Kind::Fallback: return "from Fallback \"" + origin.shader + "\"";
+    }
+    return "";
+}
+
 std::string describePass(const shaderlab::ShaderFile& shader, const shaderlab::Pass& pass,
                          size_t index) {
     std::string text = "pass " + std::to_string(index);
     if (!pass.name.empty()) text += " \"" + pass.name + "\"";
+    std::string details;
     std::string lightMode = pass.lightMode();
-    if (!lightMode.empty()) text += " (LightMode " + lightMode + ")";
+    if (!lightMode.empty()) details = "LightMode " + lightMode;
+    std::string origin = describePassOrigin(pass.origin);
+    if (!origin.empty()) details += (details.empty() ? "" : ", ") + origin;
+    if (!details.empty()) text += " (" + details + ")";
     return text + " of shader \"" + shader.name + "\"";
 }
 
@@ -161,7 +175,7 @@ std::optional<LoadedShader> loadShader(const std::string& path,
                                        const includes::FileSystem& fileSystem,
                                        includes::SourceMap& sourceMap,
                                        const includes::IncludeOptions& includeOptions,
-                                       DiagnosticSink& sink) {
+                                       DiagnosticSink& sink, ShaderCatalog* catalog) {
     std::optional<std::string> text = fileSystem.read(path);
     if (!text) {
         sink.error({}, "cannot read shader file '" + path + "'");
@@ -173,6 +187,7 @@ std::optional<LoadedShader> loadShader(const std::string& path,
     auto ast = shaderlab::parseShaderLab(sourceMap.contents(shader.file), shader.file, sink);
     if (!ast) return std::nullopt;
     shader.ast = std::move(*ast);
+    if (catalog) resolvePassReferences(shader.ast, *catalog, sink);
 
     includes::IncludeResolver resolver(fileSystem, sourceMap, includeOptions);
     bool ok = true;

@@ -73,6 +73,10 @@ Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
     auto whiteCube = Texture::createCube(context, whiteFaces, {false, false, "white cube"});
     if (!whiteCube) return whiteCube.error();
     textures.mWhiteCube.emplace(std::move(*whiteCube));
+    auto white3D = Texture::createVolume(context, std::span<const Image>(whiteFaces.data(), 1),
+                                         {false, false, "white 3D"});
+    if (!white3D) return white3D.error();
+    textures.mWhite3D.emplace(std::move(*white3D));
     auto point = Texture::createCube(context, cookieLayers(scene::defaultPointCookie()),
                                      {false, false, "point cookie"});
     if (!point) return point.error();
@@ -97,6 +101,10 @@ std::optional<TextureBinding> BuiltinTextures::named(std::string_view name,
     if (dim == pack::ResourceDim::Cube) {
         if (name == "white" || name.empty())
             return TextureBinding{mWhiteCube->view(), mRepeat.get()};
+        return std::nullopt;
+    }
+    if (dim == pack::ResourceDim::Dim3D) {
+        if (name == "white" || name.empty()) return TextureBinding{mWhite3D->view(), mRepeat.get()};
         return std::nullopt;
     }
     if (dim != pack::ResourceDim::Dim2D) return std::nullopt;

@@ -15,7 +15,9 @@ Result<UniqueHandle<VkImageView>> createView(const VulkanContext& context, VkIma
     VkImageViewCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO;
     info.image = image;
-    info.viewType = desc.cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D;
+    info.viewType = desc.cube     ? VK_IMAGE_VIEW_TYPE_CUBE
+                    : desc.volume ? VK_IMAGE_VIEW_TYPE_3D
+                                  : VK_IMAGE_VIEW_TYPE_2D;
     info.format = desc.format;
     info.subresourceRange = {desc.aspect, 0, desc.mipLevels, 0, desc.cube ? 6u : 1u};
     VkImageView view = VK_NULL_HANDLE;
@@ -34,9 +36,9 @@ Result<DeviceImage> createDeviceImage(const VulkanContext& context, const Device
     VkImageCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
     info.flags = desc.cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
-    info.imageType = VK_IMAGE_TYPE_2D;
+    info.imageType = desc.volume ? VK_IMAGE_TYPE_3D : VK_IMAGE_TYPE_2D;
     info.format = desc.format;
-    info.extent = {desc.width, desc.height, 1};
+    info.extent = {desc.width, desc.height, desc.volume ? desc.depth : 1};
     info.mipLevels = desc.mipLevels;
     info.arrayLayers = desc.cube ? 6 : 1;
     info.samples = VK_SAMPLE_COUNT_1_BIT;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Texture: a sampled 2D or cube image uploaded from Images through a staging buffer.
+// Texture: a sampled 2D, cube or 3D image uploaded from Images through a staging buffer.
 #include "varc/vulkan/Texture.h"
 
 #include <algorithm>
@@ -47,7 +47,7 @@ Status checkLayers(std::span<const Image> layers, bool cube) {
     for (const Image& layer : layers) {
         if (layer.width() != first.width() || layer.height() != first.height() ||
             layer.format() != first.format()) {
-            return makeError(ErrorCode::InvalidInput, "cube faces differ in size or pixel format");
+            return makeError(ErrorCode::InvalidInput, "the faces or slices differ in size or pixel format");
         }
     }
     return Ok{};
@@ -57,7 +57,7 @@ Status checkLayers(std::span<const Image> layers, bool cube) {
 
 Result<Texture> Texture::create2D(VulkanContext& context, const Image& image,
                                   const TextureOptions& options) {
-    return create(context, std::span<const Image>(&image, 1), false, options);
+    return create(context, std::span<const Image>(&image, 1), Shape::Flat, options);
 }
 
 Result<Texture> Texture::createCube(VulkanContext& context, std::span<const Image> faces,
@@ -66,17 +66,28 @@ Result<Texture> Texture::createCube(VulkanContext& context, std::span<const Imag
         return makeError(ErrorCode::InvalidInput,
                          "a cube texture needs six faces, got " + std::to_string(faces.size()));
     }
-    return create(context, faces, true, options);
+    return create(context, faces, Shape::Cube, options);
 }
 
-Result<Texture> Texture::create(VulkanContext& context, std::span<const Image> layers, bool cube,
-                                const TextureOptions& options) {
+Result<Texture> Texture::createVolume(VulkanContext& context, std::span<const Image> slices,
+                                      const TextureOptions& options) {
+    if (slices.empty()) return makeError(ErrorCode::InvalidInput, "a 3D texture needs slices");
+    if (options.mipmaps) {
+        return makeError(ErrorCode::Unsupported, "3D textures are created without mipmaps");
+    }
+    return create(context, slices, Shape::Volume, options);
+}
+
+Result<Texture> Texture::create(VulkanContext& context, std::span<const Image> layers,
+                                Shape shape, const TextureOptions& options) {
+    bool cube = shape == Shape::Cube;
     if (Status status = checkLayers(layers, cube); !status) return status.error();
     Texture texture;
     const Image& first = layers.front();
     texture.mWidth = first.width();
     texture.mHeight = first.height();
     texture.mCube = cube;
+    texture.mVolume = shape == Shape::Volume;
     texture.mFormat = first.isFloat() ? VK_FORMAT_R16G16B16A16_SFLOAT
                       : options.srgb  ? VK_FORMAT_R8G8B8A8_SRGB
                                       : VK_FORMAT_R8G8B8A8_UNORM;
@@ -99,6 +110,8 @@ Result<Texture> Texture::create(VulkanContext& context, std::span<const Image> l
     desc.height = texture.mHeight;
     desc.mipLevels = texture.mMipLevels;
     desc.cube = cube;
+    desc.volume = texture.mVolume;
+    desc.depth = static_cast<uint32_t>(layers.size());
     desc.usage = usage;
     Result<DeviceImage> image = createDeviceImage(context, desc, options.name);
     if (!image) return image.error();
@@ -113,7 +126,9 @@ Status Texture::upload(VulkanContext& context, std::span<const Image> layers) {
     for (uint32_t layer = 0; layer < layers.size(); ++layer) {
         VkBufferImageCopy region{};
         region.bufferOffset = staged.size();
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, layer, 1};
+        // A volume's slices are depth offsets of its one layer; a cube's faces are layers.
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, mVolume ? 0 : layer, 1};
+        region.imageOffset = {0, 0, mVolume ? static_cast<int32_t>(layer) : 0};
         region.imageExtent = {mWidth, mHeight, 1};
         regions.push_back(region);
         std::vector<std::byte> bytes = texelBytes(layers[layer]);

@@ -39,6 +39,15 @@ struct ProgramBlock {
     SourceLocation origin;   // location of text[0]
 };
 
+// Where a pass came from: written in the shader itself, or borrowed from another shader by
+// `UsePass "Shader/PASS"` or (shadow casters) through the `Fallback` chain.
+struct PassOrigin {
+    enum class Kind { Own, UsePass, Fallback };
+    Kind kind = Kind::Own;
+    std::string shader;          // name of the shader the pass was written in; "" when Own
+    SourceLocation reference;    // the `UsePass` or `Fallback` that brought it in
+};
+
 struct Pass {
     std::string name;        // from `Name "..."`, "" if none
     Tags tags;               // the pass's own tags
@@ -50,6 +59,7 @@ struct Pass {
     std::vector<ProgramBlock> includeBlocks;
     std::string usePass;     // `UsePass "Shader/PASSNAME"`: a reference instead of a pass body
     SourceLocation location; // of the `Pass`/`UsePass` keyword
+    PassOrigin origin;       // Own as parsed; set when the compiler resolves a reference
 
     std::string lightMode() const { return findTag(tags, "LightMode"); }
 };
@@ -67,6 +77,7 @@ struct ShaderFile {
     std::vector<SubShader> subShaders;
     std::optional<std::string> fallback; // `Fallback "VertexLit"`; nullopt for none or Off
     bool fallbackOff = false;            // `Fallback Off` written explicitly
+    SourceLocation fallbackLocation;     // of the `Fallback` keyword
     std::string customEditor;
     // `Dependency "BaseMapShader" = "Name"` pairs in declaration order.
     std::vector<std::pair<std::string, std::string>> dependencies;

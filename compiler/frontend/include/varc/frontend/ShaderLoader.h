@@ -10,6 +10,7 @@
 #include "varc/includes/FileSystem.h"
 #include "varc/includes/IncludeResolver.h"
 #include "varc/includes/SourceMap.h"
+#include "varc/frontend/ShaderCatalog.h"
 #include "varc/shaderlab/ShaderAst.h"
 #include "varc/variants/PassKeywords.h"
 #include "varc/variants/VariantSpace.h"
@@ -43,16 +44,22 @@ struct LoadedShader {
 };
 
 // Reads |path| through |fileSystem|, registers it in |sourceMap| and loads every pass.
+// With a |catalog|, UsePass entries and the Fallback shadow caster are resolved first
+// (resolvePassReferences); without one, UsePass entries compile nothing.
 // Pass-level errors get a note naming the shader and pass. Returns nullopt after reporting at
 // least one error; a shader with no program passes is valid (zero variants).
 std::optional<LoadedShader> loadShader(const std::string& path,
                                        const includes::FileSystem& fileSystem,
                                        includes::SourceMap& sourceMap,
                                        const includes::IncludeOptions& includeOptions,
-                                       DiagnosticSink& sink);
+                                       DiagnosticSink& sink, ShaderCatalog* catalog = nullptr);
+
+// "from Fallback \"Legacy Shaders/VertexLit\"", "from UsePass of \"...\"", or "" for own passes.
+std::string describePassOrigin(const shaderlab::PassOrigin& origin);
 
 // A human-readable description of pass |index| for diagnostics:
-// `pass 1 "FORWARD" (LightMode ForwardAdd) of shader "Custom/X"`.
+// `pass 1 "FORWARD" (LightMode ForwardAdd) of shader "Custom/X"`, and for a borrowed pass
+// `pass 2 "SHADOWCASTER" (LightMode ShadowCaster, from Fallback "Legacy Shaders/VertexLit") ...`.
 std::string describePass(const shaderlab::ShaderFile& shader, const shaderlab::Pass& pass,
                          size_t index);
 

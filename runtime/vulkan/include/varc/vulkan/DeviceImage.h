@@ -18,7 +18,9 @@ struct DeviceImageDesc {
     uint32_t width = 1;
     uint32_t height = 1;
     uint32_t mipLevels = 1;
-    bool cube = false;  // six array layers, a cube view
+    bool cube = false;    // six array layers, a cube view
+    uint32_t depth = 1;   // slices of a volume
+    bool volume = false;  // a 3D image and view of |depth| slices (not with |cube|)
     VkImageUsageFlags usage = 0;
     VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
 };

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Texture: a sampled 2D or cube image uploaded from Images through a staging buffer.
+// Texture: a sampled 2D, cube or 3D image uploaded from Images through a staging buffer.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -34,6 +34,10 @@ public:
     // pixel format (else ErrorCode::InvalidInput). The view is VK_IMAGE_VIEW_TYPE_CUBE.
     static Result<Texture> createCube(VulkanContext& context, std::span<const Image> faces,
                                       const TextureOptions& options = {});
+    // |slices| (front to back, one size and pixel format, else ErrorCode::InvalidInput) as a
+    // 3D texture; the view is VK_IMAGE_VIEW_TYPE_3D. No mipmaps.
+    static Result<Texture> createVolume(VulkanContext& context, std::span<const Image> slices,
+                                        const TextureOptions& options = {});
 
     VkImage image() const { return mImage.image.get(); }
     VkImageView view() const { return mImage.view.get(); }
@@ -42,10 +46,12 @@ public:
     uint32_t height() const { return mHeight; }
     uint32_t mipLevels() const { return mMipLevels; }
     bool isCube() const { return mCube; }
+    bool isVolume() const { return mVolume; }
 
 private:
-    static Result<Texture> create(VulkanContext& context, std::span<const Image> layers, bool cube,
-                                  const TextureOptions& options);
+    enum class Shape { Flat, Cube, Volume };
+    static Result<Texture> create(VulkanContext& context, std::span<const Image> layers,
+                                  Shape shape, const TextureOptions& options);
     Status upload(VulkanContext& context, std::span<const Image> layers);
     void recordMipChain(VkCommandBuffer commands, VkFilter filter) const;
 
@@ -55,6 +61,7 @@ private:
     uint32_t mHeight = 0;
     uint32_t mMipLevels = 1;
     bool mCube = false;
+    bool mVolume = false;
 };
 
 }  // namespace varc::runtime

@@ -1,0 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
+// varc built-in: "Legacy Shaders/Transparent/Diffuse" as a fallback: alpha blended, so it casts no shadows (its fallback,
+// Legacy Shaders/Transparent/VertexLit, has no ShadowCaster pass), as in Unity. Written for varc.
+Shader "Legacy Shaders/Transparent/Diffuse" {
+    Fallback "Legacy Shaders/Transparent/VertexLit"
+}
