@@ -5,8 +5,10 @@
 //   ForwardBase: the main directional light, four per-vertex point lights (VERTEXLIGHT_ON,
 //                Shade4PointLights) and spherical-harmonics ambient (ShadeSH9).
 //   ForwardAdd:  one draw per additional pixel light, blended One One: POINT, DIRECTIONAL, SPOT,
-//                POINT_COOKIE, DIRECTIONAL_COOKIE (multi_compile_fwdadd), attenuation and
-//                cookies by UNITY_LIGHT_ATTENUATION.
+//                POINT_COOKIE, DIRECTIONAL_COOKIE, with their shadow variants
+//                (multi_compile_fwdadd_fullshadows); attenuation, cookies, shadows and the
+//                shadow fade by UNITY_LIGHT_ATTENUATION.
+//   Shadows are cast by the fallback's caster (shaders/builtin/fallback/VertexLit.shader).
 // Math: docs/LIGHTING.md §8.1; bindings: docs/SHADER_ABI.md §7.
 Shader "varc/Forward" {
     Properties {
@@ -39,11 +41,12 @@ Shader "varc/Forward" {
 
             CGPROGRAM
             #pragma target 3.0
-            #pragma multi_compile_fwdadd
+            #pragma multi_compile_fwdadd_fullshadows
             #pragma vertex ForwardVertex
             #pragma fragment ForwardFragment
             #include "ForwardLighting.cginc"
             ENDCG
         }
     }
+    Fallback "Legacy Shaders/VertexLit"
 }

@@ -33,6 +33,11 @@ struct ForwardVaryings {
 #if defined(VARC_FORWARD_BASE) && defined(VERTEXLIGHT_ON)
     float3 vertexLights : TEXCOORD3;   // diffuse irradiance of the four vertex lights
 #endif
+#if defined(SHADOWS_SCREEN)
+    // The screen position the shadow mask is read at; spot and point shadows are computed from
+    // worldPos (UNITY_LIGHT_ATTENUATION), so they interpolate nothing more.
+    UNITY_SHADOW_COORDS(4)
+#endif
 };
 
 ForwardVaryings ForwardVertex(ForwardAttributes v) {
@@ -41,6 +46,9 @@ ForwardVaryings ForwardVertex(ForwardAttributes v) {
     o.worldPos = mul(unity_ObjectToWorld, v.vertex).xyz;
     o.worldNormal = UnityObjectToWorldNormal(v.normal);
     o.uv = TRANSFORM_TEX(v.texcoord, _MainTex);
+#if defined(SHADOWS_SCREEN)
+    UNITY_TRANSFER_SHADOW(o, v.texcoord);
+#endif
 #if defined(VARC_FORWARD_BASE) && defined(VERTEXLIGHT_ON)
     // Evaluated per vertex and interpolated, as Unity's vertex lights are.
     o.vertexLights = Shade4PointLights(

@@ -44,4 +44,6 @@ Shader "varc/SimpleDiffuse" {
             ENDCG
         }
     }
+    // Shadows are cast by the fallback's caster (shaders/builtin/fallback/VertexLit.shader).
+    Fallback "Legacy Shaders/VertexLit"
 }

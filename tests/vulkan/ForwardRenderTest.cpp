@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "VulkanTestSupport.h"
 #include "varc/reader/Pack.h"
@@ -153,9 +154,60 @@ TEST_F(ForwardRenderTest, ValidationScenesMatchTheCpuReference) {
         auto expected = reference::renderReference(*scene);
         ASSERT_TRUE(expected) << expected.error().detail;
         reference::CompareResult result = reference::compareImages(
-            frame.image, expected->color, expected->classes, reference::toleranceFor(*scene));
+            frame.image, expected->color, expected->classes, reference::toleranceFor(*scene),
+            expected->colorHigh.width() ? &expected->colorHigh : nullptr);
         EXPECT_TRUE(result.passed) << result.message;
         EXPECT_GT(result.interiorPixels, 100u) << "the scene must show lit objects";
+    }
+}
+
+// The shadow scenes against a deliberately wrong reference: each mistake a shadow implementation
+// can make must show as failing pixels (issue #11: a wrong bias, a missing fade, a flipped
+// comparison).
+TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
+    struct Mutation {
+        const char* scene;
+        const char* what;
+        std::function<void(scene::Scene&, reference::ReferenceOptions&)> apply;
+    };
+    const Mutation mutations[] = {
+        {"spot-shadow-hard.json", "flipped depth comparison",
+         [](scene::Scene&, reference::ReferenceOptions& o) {
+             o.editShadowMap = [](reference::ShadowMapReference& map) { map.flipCompareForTests(); };
+         }},
+        {"spot-shadow-hard.json", "no depth or normal bias (acne)",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Light& light : s.lights) light.shadowBias = light.shadowNormalBias = 0.0f;
+         }},
+        {"spot-shadow-soft.json", "ten times the bias (peter-panning)",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Light& light : s.lights) {
+                 light.shadowBias *= 10.0f;
+                 light.shadowNormalBias *= 10.0f;
+             }
+         }},
+        {"spot-shadow-fade.json", "shadow-distance fade ignored",
+         [](scene::Scene&, reference::ReferenceOptions& o) { o.ignoreShadowFade = true; }},
+        {"spot-shadow-soft.json", "hard instead of soft",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::Hard;
+         }},
+    };
+    for (const Mutation& mutation : mutations) {
+        SCOPED_TRACE(std::string(mutation.scene) + ": " + mutation.what);
+        auto scene = scene::loadScene(testing::sceneFile("forward", mutation.scene));
+        ASSERT_TRUE(scene) << scene.error().detail;
+        RenderedFrame frame = render(*scene);
+        scene::Scene wrongScene = *scene;
+        reference::ReferenceOptions wrong;
+        mutation.apply(wrongScene, wrong);
+        auto expected = reference::renderReference(wrongScene, wrong);
+        ASSERT_TRUE(expected) << expected.error().detail;
+        reference::CompareResult result = reference::compareImages(
+            frame.image, expected->color, expected->classes, reference::toleranceFor(*scene),
+            expected->colorHigh.width() ? &expected->colorHigh : nullptr);
+        EXPECT_FALSE(result.passed) << result.message;
+        EXPECT_GT(result.failingPixels, 20u) << result.message;
     }
 }
 

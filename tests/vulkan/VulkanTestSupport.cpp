@@ -62,6 +62,10 @@ std::vector<std::string> sceneFiles(const std::string& folder) {
     return scenes;
 }
 
+std::string sceneFile(const std::string& folder, const std::string& name) {
+    return std::string(VARC_TEST_SCENE_DIR) + "/" + folder + "/" + name;
+}
+
 float rgbSum(const Image& image) {
     float total = 0;
     for (uint32_t y = 0; y < image.height(); ++y) {

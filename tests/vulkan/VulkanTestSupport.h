@@ -84,6 +84,8 @@ protected:
 
 // The paths of the scene files (*.json) in VARC_TEST_SCENE_DIR/|folder|, e.g. "forward".
 std::vector<std::string> sceneFiles(const std::string& folder);
+// The path of scene |name| in tests/scenes/|folder|.
+std::string sceneFile(const std::string& folder, const std::string& name);
 
 // The sum of R, G and B over all pixels (8-bit channels as value / 255).
 float rgbSum(const Image& image);

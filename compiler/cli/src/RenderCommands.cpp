@@ -105,7 +105,8 @@ SceneOutcome renderScene(runtime::Renderer& renderer, const std::string& scenePa
         }
         outcome.comparison =
             reference::compareImages(outcome.frame.image, expected->color, expected->classes,
-                                     reference::toleranceFor(*scene));
+                                     reference::toleranceFor(*scene),
+                                     expected->colorHigh.width() ? &expected->colorHigh : nullptr);
         outcome.passed = outcome.comparison.passed;
         // An image asked for and not written fails the scene: a run that exits 0 has written
         // everything it was asked to.

@@ -21,12 +21,15 @@ const char* className(PixelClass c) {
     return "?";
 }
 
-// Largest per-channel |a - b| in LSB, and the signed error of that channel.
-std::pair<float, float> channelError(const std::array<float, 4>& a, const std::array<float, 4>& b,
-                                     int channels) {
+// Largest per-channel distance in LSB from |a| to the interval [low, high] (a point when equal),
+// and the signed error of that channel.
+std::pair<float, float> channelError(const std::array<float, 4>& a, const std::array<float, 4>& low,
+                                     const std::array<float, 4>& high, int channels) {
     float worst = 0.0f, signedWorst = 0.0f;
     for (int c = 0; c < channels; ++c) {
-        const float e = (a[c] - b[c]) * 255.0f;
+        const float lo = std::min(low[c], high[c]), hi = std::max(low[c], high[c]);
+        const float nearest = std::isnan(a[c]) ? lo : std::clamp(a[c], lo, hi);
+        const float e = (a[c] - nearest) * 255.0f;
         if (std::abs(e) > worst || std::isnan(e)) {
             worst = std::isnan(e) ? INFINITY : std::abs(e);
             signedWorst = e;
@@ -52,7 +55,8 @@ uint8_t diffLevel(float lsb) {
 }  // namespace
 
 CompareResult compareImages(const runtime::Image& rendered, const runtime::Image& reference,
-                            const Classification& classes, const Tolerance& tolerance) {
+                            const Classification& classes, const Tolerance& tolerance,
+                            const runtime::Image* referenceHigh) {
     CompareResult r;
     const uint32_t w = reference.width(), h = reference.height();
     if (rendered.width() != w || rendered.height() != h || classes.width != w ||
@@ -62,6 +66,13 @@ CompareResult compareImages(const runtime::Image& rendered, const runtime::Image
                     std::to_string(h) + ")";
         return r;
     }
+    if (referenceHigh && (referenceHigh->width() != w || referenceHigh->height() != h)) {
+        r.message = "FAIL: the reference's upper-bound image has another size";
+        return r;
+    }
+    auto high = [&](uint32_t x, uint32_t y) {
+        return referenceHigh ? referenceHigh->pixelFloat(x, y) : reference.pixelFloat(x, y);
+    };
     const int channels = tolerance.compareAlpha ? 4 : 3;
     r.diff = runtime::Image(w, h, runtime::PixelFormat::Rgba8);
     double signedSum = 0.0, absSum = 0.0;
@@ -71,7 +82,9 @@ CompareResult compareImages(const runtime::Image& rendered, const runtime::Image
             const PixelClass cls = classes.at(x, y);
             const auto got = rendered.pixelFloat(x, y);
             const auto want = reference.pixelFloat(x, y);
-            auto [error, signedError] = channelError(got, want, channels);
+            const auto wantHigh = high(x, y);
+            const bool interval = want != wantHigh;
+            auto [error, signedError] = channelError(got, want, wantHigh, channels);
             float limit = tolerance.interiorLsb;
             if (cls == PixelClass::Edge) {
                 ++r.edgePixels;
@@ -80,13 +93,15 @@ CompareResult compareImages(const runtime::Image& rendered, const runtime::Image
                     for (int dx = -1; dx <= 1; ++dx) {
                         const int64_t nx = int64_t{x} + dx, ny = int64_t{y} + dy;
                         if (nx < 0 || ny < 0 || nx >= w || ny >= h) continue;
-                        const auto e = channelError(got,
-                                                    reference.pixelFloat(static_cast<uint32_t>(nx),
-                                                                         static_cast<uint32_t>(ny)),
-                                                    channels);
+                        const auto ux = static_cast<uint32_t>(nx), uy = static_cast<uint32_t>(ny);
+                        const auto e =
+                            channelError(got, reference.pixelFloat(ux, uy), high(ux, uy), channels);
                         if (e.first < error) std::tie(error, signedError) = e;
                     }
                 }
+            } else if (cls == PixelClass::Interior && interval) {
+                ++r.interiorPixels;
+                ++r.intervalPixels;  // any value in the interval is right: not in the means
             } else if (cls == PixelClass::Interior) {
                 ++r.interiorPixels;
                 for (int c = 0; c < channels; ++c) {
@@ -130,6 +145,7 @@ CompareResult compareImages(const runtime::Image& rendered, const runtime::Image
       << r.meanAbsErrorLsb << " LSB, " << r.failingPixels << " failing pixels of " << (w * h)
       << " (interior " << r.interiorPixels << ", edge " << r.edgePixels << ", background "
       << r.backgroundPixels << ")";
+    if (r.intervalPixels > 0) s << ", " << r.intervalPixels << " checked by shadow interval";
     if (!r.firstFailures.empty()) s << "; first: " << describe(r.firstFailures.front());
     r.message = s.str();
     return r;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "varc/reference/Shading.h"
+#include "varc/reference/ShadowReference.h"
 #include "varc/scene/CameraMatrices.h"
 #include "varc/scene/Mesh.h"
 
@@ -61,10 +62,20 @@ glm::vec3 lightDirection(const PassLight& light, const glm::vec3& p) {
 
 glm::vec3 maxZero(const glm::vec3& v) { return glm::max(v, glm::vec3(0.0f)); }
 
-// One pass of one fragment: LIGHTING.md §8.1, §8.2, §8.5.
+// The shadow term of |light| at |p| (LIGHTING.md §6), faded where the pass fades it: the
+// interval's lower or |upper| bound; 1 without a shadow map.
+float shadowTerm(const PassLight& light, const glm::vec3& p, bool upper) {
+    if (!light.shadowMap) return 1.0f;
+    ShadowInterval shadow = light.shadowMap->at(p, light.softShadows);
+    if (light.shadowFade) shadow = light.shadowFade->apply(shadow, p);
+    return upper ? shadow.high : shadow.low;
+}
+
+// One pass of one fragment: LIGHTING.md §8.1, §8.2, §8.5. |upper| picks the upper bound of
+// shadow terms that straddle a comparison.
 glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight& light, bool base,
                     const glm::vec3& cameraPos, const glm::vec3& ambient,
-                    const LightTextureSet& textures, const ReferenceOptions& options) {
+                    const LightTextureSet& textures, const ReferenceOptions& options, bool upper) {
     const MaterialParams& m = draw.material;
     const glm::vec3 n = glm::normalize(in.normal);
     const glm::vec3 l = lightDirection(light, in.p);
@@ -73,7 +84,8 @@ glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight&
             const glm::vec3 v = glm::normalize(cameraPos - in.p);
             const SurfaceColors surface = diffuseAndSpecularFromMetallic(
                 glm::vec3(mainTexAt(m, in)) * glm::vec3(m.color), m.metallic);
-            const glm::vec3 e = light.color * lightAttenuation(light, textures, in.p);
+            const glm::vec3 e = light.color * (lightAttenuation(light, textures, in.p) *
+                                               shadowTerm(light, in.p, upper));
             glm::vec3 indirect(0.0f);
             if (base) {
                 if (draw.vertexLightsOn) indirect = in.vertexTerm;
@@ -83,7 +95,8 @@ glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight&
         }
         case ShaderModel::SimpleDiffuse: {
             const glm::vec4 albedo = mainTexAt(m, in) * m.color;
-            const float atten = lightAttenuation(light, textures, in.p);
+            const float atten =
+                lightAttenuation(light, textures, in.p) * shadowTerm(light, in.p, upper);
             glm::vec3 c =
                 glm::vec3(albedo) * light.color * (std::clamp(glm::dot(n, l), 0.0f, 1.0f) * atten);
             if (base) c += glm::vec3(albedo) * in.vertexTerm;
@@ -131,8 +144,11 @@ glm::vec3 vertexTerm(const ObjectDraw& draw, const VertexLights& lights, const g
     return term;
 }
 
+// The CPU shadow maps of a scene, by light index (null for lights without one).
+using ShadowMapSet = std::vector<std::unique_ptr<ShadowMapReference>>;
+
 Result<ObjectDraw> prepareObject(const scene::Scene& scene, const scene::Object& object,
-                                 const ReferenceOptions& options) {
+                                 const ShadowMapSet& shadowMaps, const ReferenceOptions& options) {
     ObjectDraw draw;
     auto material = resolveMaterial(object.material);
     if (!material) return material.error();
@@ -148,6 +164,13 @@ Result<ObjectDraw> prepareObject(const scene::Scene& scene, const scene::Object&
     for (int index : lights.addLights) {
         auto add = passLightFor(scene.lights[index]);
         if (!add) return add.error();
+        const auto light = static_cast<size_t>(index);
+        if (draw.material.receivesAddShadows && shadowMaps[light]) {
+            add->shadowMap = shadowMaps[light].get();
+            add->softShadows = scene.lights[light].shadows == scene::ShadowType::Soft;
+            if (draw.material.model == ShaderModel::ForwardPbs && !options.ignoreShadowFade)
+                add->shadowFade = shadowFadeFor(scene, scene.lights[light]);
+        }
         draw.adds.push_back(*add);
     }
     draw.vertexLightsOn = !lights.vertexLights.empty();
@@ -194,8 +217,12 @@ Result<MaterialParams> resolveMaterial(const scene::Material& material) {
         p.smoothness = 0.1f;
     } else if (material.shader == "varc/Forward") {
         p.model = ShaderModel::ForwardPbs;
+        p.castsShadows = true;
+        p.receivesAddShadows = true;
     } else if (material.shader == "varc/SimpleDiffuse") {
         p.model = ShaderModel::SimpleDiffuse;
+        p.castsShadows = true;
+        p.receivesAddShadows = true;
     } else if (material.shader == "varc/GlslVertexLights") {
         p.model = ShaderModel::GlslBlinnPhong;
     } else {
@@ -230,9 +257,23 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
     if (scene.camera.path != scene::RenderPath::Forward) {
         return makeError(ErrorCode::Unsupported, "the CPU reference renders the forward path only");
     }
+    std::vector<bool> casts;
+    for (const scene::Object& object : scene.objects) {
+        auto material = resolveMaterial(object.material);
+        casts.push_back(material && material->castsShadows);
+    }
+    ShadowMapSet shadowMaps(scene.lights.size());
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const scene::Light& light = scene.lights[i];
+        if (light.shadows == scene::ShadowType::None || light.type != scene::LightType::Spot)
+            continue;
+        shadowMaps[i] = std::make_unique<ShadowMapReference>(
+            ShadowMapReference::renderSpot(scene, light, casts));
+        if (options.editShadowMap) options.editShadowMap(*shadowMaps[i]);
+    }
     std::vector<ObjectDraw> draws;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
-        auto draw = prepareObject(scene, scene.objects[i], options);
+        auto draw = prepareObject(scene, scene.objects[i], shadowMaps, options);
         if (!draw) {
             return makeError(draw.error().code,
                              "/objects/" + std::to_string(i) + ": " + draw.error().detail);
@@ -249,12 +290,15 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
     out.classes = classifyPixels(scene, out.visibility);
     const uint32_t w = scene.camera.width, h = scene.camera.height;
     out.color = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
+    const bool anyShadowMap = std::any_of(shadowMaps.begin(), shadowMaps.end(),
+                                          [](const auto& map) { return map != nullptr; });
+    if (anyShadowMap) out.colorHigh = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
     const bool hdr = scene.camera.hdr;
     const glm::vec4 background = accumulate(scene.camera.background, {}, hdr);
     for (uint32_t y = 0; y < h; ++y) {
         for (uint32_t x = 0; x < w; ++x) {
             const SurfaceSample& s = out.visibility.at(x, y);
-            glm::vec4 c = background;
+            glm::vec4 c = background, high = background;
             if (s.object >= 0) {
                 const ObjectDraw& draw = draws[static_cast<size_t>(s.object)];
                 Varyings in{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec2(0.0f)};
@@ -266,16 +310,21 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
                     in.vertexTerm += s.bary[k] * draw.vertexTerm[v];
                     in.uv += s.bary[k] * draw.mesh->uvs[v];
                 }
-                const glm::vec4 base = shadePass(draw, in, draw.base, true, scene.camera.position,
-                                                 scene.ambient, textures, options);
-                std::vector<glm::vec4> adds;
-                for (const PassLight& light : draw.adds) {
-                    adds.push_back(shadePass(draw, in, light, false, scene.camera.position,
-                                             scene.ambient, textures, options));
+                for (bool upper : {false, true}) {
+                    if (upper && !anyShadowMap) break;
+                    const glm::vec4 base =
+                        shadePass(draw, in, draw.base, true, scene.camera.position, scene.ambient,
+                                  textures, options, upper);
+                    std::vector<glm::vec4> adds;
+                    for (const PassLight& light : draw.adds) {
+                        adds.push_back(shadePass(draw, in, light, false, scene.camera.position,
+                                                 scene.ambient, textures, options, upper));
+                    }
+                    (upper ? high : c) = accumulate(base, adds, hdr);
                 }
-                c = accumulate(base, adds, hdr);
             }
             out.color.setPixelFloat(x, y, {c.r, c.g, c.b, c.a});
+            if (anyShadowMap) out.colorHigh.setPixelFloat(x, y, {high.r, high.g, high.b, high.a});
         }
     }
     return out;

@@ -7,6 +7,7 @@
 #include "Draw.h"
 #include "GpuMesh.h"
 #include "RendererBase.h"
+#include "ShadowMaps.h"
 #include "varc/reader/PassView.h"
 #include "varc/reader/ShaderView.h"
 #include "varc/render/RenderStateResolver.h"
@@ -20,6 +21,7 @@ namespace varc::runtime {
 
 struct ForwardRenderer::State : RendererBase {
     CameraTargetCache<RenderTarget> targets;
+    ShadowMaps shadows;
 
     Status addObjectDraws(const scene::Scene& scene, size_t index, const RenderTarget& target,
                           FrameStorage& storage, const ShaderValues& camera,
@@ -41,10 +43,22 @@ Result<ForwardRenderer> ForwardRenderer::create(VulkanContext& context,
 
 namespace {
 
-// The variant a forward pass draws for |light| (nullptr: the base pass without a main light).
+variants::ShadowMode toVariantShadows(scene::ShadowType type) {
+    switch (type) {
+        case scene::ShadowType::None: return variants::ShadowMode::None;
+        case scene::ShadowType::Hard: return variants::ShadowMode::Hard;
+        case scene::ShadowType::Soft: return variants::ShadowMode::Soft;
+    }
+    return variants::ShadowMode::None;
+}
+
+// The variant a forward pass draws for |light| (nullptr: the base pass without a main light);
+// |shadowed| when the light's shadow map was rendered this frame.
 variants::LightDescription forwardLight(const scene::Scene& scene, const scene::Light* light,
-                                        const scene::ForwardLightAssignment& assignment) {
+                                        const scene::ForwardLightAssignment& assignment,
+                                        bool shadowed) {
     variants::LightDescription description;
+    if (light && shadowed) description.shadows = toVariantShadows(light->shadows);
     description.type = light ? toVariantLight(light->type) : variants::LightType::Directional;
     description.cookie = light && light->hasCookie();
     description.vertexLightCount = static_cast<int>(assignment.vertexLights.size());
@@ -78,7 +92,10 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
         if (!pass)
             return makeError(ErrorCode::NotFound,
                              what + ": the shader has no " + lightMode + " pass");
-        auto variant = pass->lookup(forwardLight(scene, light, assignment),
+        const size_t lightIndex = light ? static_cast<size_t>(light - scene.lights.data()) : 0;
+        std::optional<TextureBinding> shadowMap =
+            light ? shadows.map(lightIndex) : std::optional<TextureBinding>();
+        auto variant = pass->lookup(forwardLight(scene, light, assignment, shadowMap.has_value()),
                                     variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         auto draw = objectDraw({what,
@@ -91,15 +108,18 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
                                 {target.renderPass(LoadOp::Clear), true, 1},
                                 scene.camera.hdr ? 1u : 0u});
         if (!draw) return draw.error();
-        const ShaderValues& lightLayer = storage.values.emplace_back(forwardLightValues(light));
+        ShaderValues& lightLayer = storage.values.emplace_back(forwardLightValues(light));
+        if (light) shadows.addReceiverValues(scene, lightIndex, lightLayer);
         draw->layers[0] = &lightLayer;
         draw->layers[1] = &objectLayer;
         draw->layers[3] = &camera;
         const scene::LightType type = light ? light->type : scene::LightType::Directional;
         const bool cookie = light && light->cookie != "none";
-        draw->textures = [this, light, type, cookie, material = std::move(draw->textures)](
+        draw->textures = [this, light, type, cookie, shadowMap,
+                          material = std::move(draw->textures)](
                              std::string_view name,
                              pack::ResourceDim dim) -> std::optional<TextureBinding> {
+            if (shadowMap && name == "_ShadowMapTexture") return shadowMap;
             if (light && name == "_LightTexture0") {
                 if (auto file = cookieFile(*light)) return file;
             }
@@ -131,6 +151,7 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
     const scene::CameraMatrices matrices = scene::cameraMatrices(scene.camera);
     const ShaderValues camera = cameraValues(scene, matrices);
     if (Status cookies = s.loadCookieFiles(scene.lights); !cookies) return cookies.error();
+    if (Status shadowMaps = s.shadows.render(s, scene); !shadowMaps) return shadowMaps.error();
     FrameStorage storage;
     std::vector<Draw> draws;
     RenderedFrame frame;

@@ -281,10 +281,47 @@ bool readObject(Reader& r, const json& value, const std::string& p, Object& o) {
            readMaterial(r, value["material"], p + "/material", o.material);
 }
 
+// "shadows": "none" | "hard" | "soft" and the shadow settings of a light.
+bool readLightShadows(Reader& r, const json& value, const std::string& p, Light& l) {
+    if (value.contains("shadows") &&
+        !r.readEnum<ShadowType>(value["shadows"], p + "/shadows",
+                                {{"none", ShadowType::None},
+                                 {"hard", ShadowType::Hard},
+                                 {"soft", ShadowType::Soft}},
+                                l.shadows)) {
+        return false;
+    }
+    if (value.contains("shadow_strength")) {
+        if (!r.readFloat(value["shadow_strength"], p + "/shadow_strength", l.shadowStrength))
+            return false;
+        if (l.shadowStrength < 0.0f || l.shadowStrength > 1.0f)
+            return r.fail(p + "/shadow_strength", "expected a number in [0, 1]");
+    }
+    for (auto [key, out] : {std::pair{"shadow_bias", &l.shadowBias},
+                            std::pair{"shadow_normal_bias", &l.shadowNormalBias}}) {
+        if (!value.contains(key)) continue;
+        if (!r.readFloat(value[key], p + "/" + key, *out)) return false;
+        if (*out < 0.0f || *out > 10.0f) return r.fail(p + "/" + key, "expected a number in [0, 10]");
+    }
+    if (value.contains("shadow_near_plane") &&
+        !r.readPositive(value["shadow_near_plane"], p + "/shadow_near_plane", l.shadowNearPlane)) {
+        return false;
+    }
+    if (value.contains("shadow_resolution")) {
+        int64_t texels = 0;
+        if (!r.readInt(value["shadow_resolution"], p + "/shadow_resolution", 16, 4096, texels))
+            return false;
+        l.shadowResolution = static_cast<uint32_t>(texels);
+    }
+    return true;
+}
+
 bool readLight(Reader& r, const json& value, const std::string& p, Light& l) {
     if (!r.onlyKeys(value, p,
                     {"type", "color", "intensity", "position", "rotation", "range", "spot_angle",
-                     "cookie", "cookie_size", "render_mode"})) {
+                     "cookie", "cookie_size", "render_mode", "shadows", "shadow_strength",
+                     "shadow_bias", "shadow_normal_bias", "shadow_near_plane",
+                     "shadow_resolution"})) {
         return false;
     }
     if (!value.contains("type")) return r.fail(p, "missing key 'type'");
@@ -326,12 +363,15 @@ bool readLight(Reader& r, const json& value, const std::string& p, Light& l) {
         !r.readPositive(value["cookie_size"], p + "/cookie_size", l.cookieSize)) {
         return false;
     }
-    return !value.contains("render_mode") ||
-           r.readEnum<LightRenderMode>(value["render_mode"], p + "/render_mode",
-                                       {{"auto", LightRenderMode::Auto},
-                                        {"important", LightRenderMode::Important},
-                                        {"not_important", LightRenderMode::NotImportant}},
-                                       l.renderMode);
+    if (value.contains("render_mode") &&
+        !r.readEnum<LightRenderMode>(value["render_mode"], p + "/render_mode",
+                                     {{"auto", LightRenderMode::Auto},
+                                      {"important", LightRenderMode::Important},
+                                      {"not_important", LightRenderMode::NotImportant}},
+                                     l.renderMode)) {
+        return false;
+    }
+    return readLightShadows(r, value, p, l);
 }
 
 bool readScene(Reader& r, const json& root, Scene& scene) {
@@ -349,7 +389,11 @@ bool readScene(Reader& r, const json& root, Scene& scene) {
     }
     if (root.contains("quality")) {
         const json& q = root["quality"];
-        if (!r.onlyKeys(q, "/quality", {"pixel_light_count"})) return false;
+        if (!r.onlyKeys(q, "/quality", {"pixel_light_count", "shadow_distance"})) return false;
+        if (q.contains("shadow_distance") &&
+            !r.readPositive(q["shadow_distance"], "/quality/shadow_distance", scene.shadowDistance)) {
+            return false;
+        }
         int64_t count = 0;
         if (q.contains("pixel_light_count")) {
             if (!r.readInt(q["pixel_light_count"], "/quality/pixel_light_count", 0, 64, count))

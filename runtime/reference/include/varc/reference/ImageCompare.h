@@ -37,6 +37,7 @@ struct CompareResult {
     float meanAbsErrorLsb = 0.0f;     // interior pixels, all compared channels
     uint64_t failingPixels = 0;
     uint64_t interiorPixels = 0, edgePixels = 0, backgroundPixels = 0;
+    uint64_t intervalPixels = 0;  // interior pixels whose reference is an interval (shadow edges)
     std::vector<PixelFailure> firstFailures;  // row-major order
     std::string message;  // one line: pass/fail, max/mean error, failing count, first failure
     // Rgba8, same size: grey = the reference's luminance / 4; red = too bright, blue = too dark
@@ -48,8 +49,12 @@ struct CompareResult {
 // pixel: Interior and Background pixels must be within |tolerance.interiorLsb| on every channel;
 // Edge pixels must match the reference at the same pixel or one of its 8 neighbours within
 // |tolerance.edgeLsb|; the mean signed error over interior pixels must be within
-// ±|tolerance.meanLsb|. Images of different sizes fail with a message and no diff.
+// ±|tolerance.meanLsb|. With |referenceHigh|, each reference pixel is the interval from
+// |reference| to |referenceHigh| (shadow taps that could go either way): the error is the
+// distance to it, and interior interval pixels stay out of the mean. Images of different sizes
+// fail with a message and no diff.
 CompareResult compareImages(const runtime::Image& rendered, const runtime::Image& reference,
-                            const Classification& classes, const Tolerance& tolerance = {});
+                            const Classification& classes, const Tolerance& tolerance = {},
+                            const runtime::Image* referenceHigh = nullptr);
 
 }  // namespace varc::reference

@@ -11,6 +11,7 @@
 #include "varc/image/Image.h"
 #include "varc/reference/LinearTexture.h"
 #include "varc/reference/Rasterizer.h"
+#include "varc/reference/ShadowReference.h"
 #include "varc/scene/ForwardLights.h"
 #include "varc/scene/Scene.h"
 
@@ -32,6 +33,11 @@ struct MaterialParams {
     float smoothness = 0.5f;    // _Smoothness
     glm::vec3 specColor{1.0f};  // _SpecColor (GLSL)
     float shininess = 32.0f;    // _Shininess (GLSL)
+    // Whether the shader draws a ShadowCaster pass (varc/Forward, varc/SimpleDiffuse: their
+    // Fallback's) and whether its ForwardAdd pass samples spot shadow maps
+    // (multi_compile_fwdadd_fullshadows).
+    bool castsShadows = false;
+    bool receivesAddShadows = false;
 };
 // The parameters of |material| with each shader's Properties defaults. _MainTex may be "white",
 // "black" or a PNG file (loaded here). Unsupported for other shaders or texture names;
@@ -47,10 +53,17 @@ struct ReferenceOptions {
     // assignment after assignForwardLights. Leave empty for real references.
     std::function<float(float t)> falloffOverride;
     std::function<void(scene::ForwardLightAssignment&)> editAssignment;
+    // Mutation: forward receivers ignore the shadow-distance fade.
+    bool ignoreShadowFade = false;
+    // Edits each CPU shadow map after it is rasterised (e.g. ShadowMapReference's mutations).
+    std::function<void(ShadowMapReference&)> editShadowMap;
 };
 
 struct ReferenceImage {
     runtime::Image color;  // RgbaFloat, linear; LDR values are multiples of 1/255
+    // The upper bound of each pixel where a shadow tap could go either way (color is then the
+    // lower bound); equal to color elsewhere. Empty when the scene has no shadow maps.
+    runtime::Image colorHigh;
     Classification classes;
     VisibilityBuffer visibility;
 };

@@ -8,15 +8,18 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "varc/core/Result.h"
+#include "varc/reference/ShadowReference.h"
 #include "varc/scene/LightTextures.h"
 #include "varc/scene/Scene.h"
 
 namespace varc::reference {
+
 
 // LIGHTING.md §1: DiffuseAndSpecularFromMetallic.
 struct SurfaceColors {
@@ -77,6 +80,10 @@ struct PassLight {
     glm::vec4 positionRange{0.0f};                         // _LightPositionRange
     glm::mat4 worldToLight{1.0f};                          // unity_WorldToLight (forward)
     std::string cookie = "none";                           // scene::Light::cookie
+    // The light's shadow map when the pass samples one (SHADOWS_DEPTH), else null.
+    const ShadowMapReference* shadowMap = nullptr;
+    bool softShadows = false;                              // SHADOWS_SOFT
+    std::optional<ShadowFade> shadowFade;  // set where the pass fades shadows (UNITY_LIGHT_ATTENUATION)
 };
 // The pass light for |light| (ForwardAdd or the ForwardBase main light). Its PNG cookie, if any,
 // is sampled through LightTextureSet::loadCookieFiles.

@@ -20,6 +20,7 @@ enum class MeshKind { Sphere, Cube, Plane };
 enum class LightType { Directional, Point, Spot };
 enum class LightRenderMode { Auto, Important, NotImportant };
 enum class RenderPath { Forward, Deferred, SinglePass };
+enum class ShadowType { None, Hard, Soft };
 
 // Unity conventions: left-handed, y up, metres; local +z forward; Euler angles in degrees applied
 // as Unity does (rotation = Ry(y) * Rx(x) * Rz(z), i.e. z first, then x, then y). The rotation
@@ -71,6 +72,13 @@ struct Light {
     std::string cookie = "none";  // "none" | "default" | a PNG file (spot, directional; alpha)
     float cookieSize = 10.0f;     // directional cookies: metres covered by one cookie tile
     LightRenderMode renderMode = LightRenderMode::Auto;
+    // Real-time shadows (SHADER_ABI.md §4.7 turns these into the shaders' shadow uniforms).
+    ShadowType shadows = ShadowType::None;
+    float shadowStrength = 1.0f;     // 0..1; shadowed light is scaled by 1 - strength
+    float shadowBias = 0.05f;        // depth bias, Unity's light inspector units
+    float shadowNormalBias = 0.4f;   // normal offset, Unity's light inspector units
+    float shadowNearPlane = 0.2f;    // metres; the shadow camera's near plane
+    uint32_t shadowResolution = 512; // shadow map texels per side
     glm::vec3 finalColor() const { return color * intensity; }  // linear
     glm::vec3 forward() const;  // unit world direction the light travels (local +z)
     // Whether the light draws with a cookie. Spot lights always have one (the default disc when
@@ -82,6 +90,7 @@ struct Scene {
     Camera camera;
     glm::vec3 ambient{0.0f};  // linear flat ambient colour
     int pixelLightCount = 4;  // quality.pixel_light_count
+    float shadowDistance = 50.0f;  // quality.shadow_distance: shadows fade out towards it
     std::vector<Object> objects;
     std::vector<Light> lights;
 };

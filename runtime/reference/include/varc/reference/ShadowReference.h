@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: Apache-2.0
+// ShadowReference: a light's shadow map rasterised on the CPU from the facts of docs/LIGHTING.md
+// §6 (the caster's normal offset and linear bias, Vulkan depth, nearest texel, lit when the
+// receiver's depth <= the stored depth), and the shadow term as an interval: a tap whose texel
+// or depth comparison is too close to call is taken both ways. No Vulkan.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "varc/scene/Scene.h"
+#include "varc/scene/ShadowSetup.h"
+
+namespace varc::reference {
+
+// The bounds of a shadow term (1 = lit, 1 - strength = shadowed). low == high away from edges.
+struct ShadowInterval {
+    float low = 1.0f, high = 1.0f;
+};
+
+// The shadow-distance fade as UNITY_SHADOW_ATTENUATION applies it (LIGHTING.md §6):
+// shadow = saturate(realtime + saturate(viewDepth * scale + offset)), viewDepth the positive eye
+// depth of the receiver; scale and offset are _LightShadowData.zw.
+struct ShadowFade {
+    glm::vec3 cameraPos{0.0f};
+    glm::vec3 cameraForward{0.0f, 0.0f, 1.0f};  // unit
+    float scale = 0.0f, offset = 0.0f;
+    ShadowInterval apply(const ShadowInterval& realtime, const glm::vec3& p) const;
+};
+
+// The fade of |light|'s shadows seen from |scene|'s camera.
+ShadowFade shadowFadeFor(const scene::Scene& scene, const scene::Light& light);
+
+class ShadowMapReference {
+public:
+    // The map of spot light |light| with the objects for which |casts| is true drawn as casters
+    // (Cull Back; Front for a mirrored transform), cleared to depth 1.
+    static ShadowMapReference renderSpot(const scene::Scene& scene, const scene::Light& light,
+                                         const std::vector<bool>& casts);
+
+    // The shadow term at world position |p|: hard = one tap at the shadow coordinate; soft = the
+    // mean of four taps at +-0.5 texel; then lerp(1 - strength, 1, lit).
+    ShadowInterval at(const glm::vec3& p, bool soft) const;
+
+    // The stored depth of texel (x, y) (row 0 at v = 0). For tests.
+    float depth(uint32_t x, uint32_t y) const { return mDepth[size_t{y} * mSize + x]; }
+    uint32_t size() const { return mSize; }
+
+    // Mutation hook for the comparator's tests: flips the comparison (lit when deeper).
+    void flipCompareForTests() { mFlipped = true; }
+
+private:
+    // Bounds of one comparison at texture coordinate |uv| against reference depth |z|.
+    ShadowInterval tap(const glm::vec2& uv, float z) const;
+
+    scene::ShadowCamera mCamera;
+    float mStrength = 1.0f;
+    uint32_t mSize = 0;
+    std::vector<float> mDepth;
+    bool mFlipped = false;
+};
+
+}  // namespace varc::reference

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: Apache-2.0
+// ShadowReference: CPU shadow maps and the interval shadow term.
+#include "varc/reference/ShadowReference.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "varc/reference/Rasterizer.h"
+#include "varc/scene/Mesh.h"
+
+namespace varc::reference {
+namespace {
+
+// How close a texture coordinate may come to a texel boundary (in texels), and a receiver depth
+// to the stored depth, before the tap could go either way on a conformant GPU: Vulkan's nearest
+// filter resolves coordinates to a sub-texel grid and interpolated depths differ in the last
+// bits of a float.
+constexpr float kTexelEpsilon = 1.0f / 128.0f;
+constexpr float kDepthEpsilon = 1e-5f;
+
+// The caster vertex of LIGHTING.md §6 in the shadow camera's clip space: the world position
+// moved against the normal by bias.z * sin(angle to the light), then clip z pushed back by
+// saturate(bias.x / w) * w and kept in front of the far plane.
+glm::vec4 casterClip(const glm::vec3& world, const glm::vec3& normal, const glm::vec3& lightPos,
+                     const scene::ShadowCamera& shadow) {
+    glm::vec3 p = world;
+    if (shadow.bias.z != 0.0f) {
+        const float cosine = glm::dot(normal, glm::normalize(lightPos - world));
+        const float sine = std::sqrt(std::max(0.0f, 1.0f - cosine * cosine));
+        p -= normal * (shadow.bias.z * sine);
+    }
+    glm::vec4 clip = shadow.matrices.viewProjection * glm::vec4(p, 1.0f);
+    clip.z += std::clamp(shadow.bias.x / clip.w, 0.0f, 1.0f) * clip.w;
+    clip.z = std::min(clip.z, clip.w);
+    return clip;
+}
+
+}  // namespace
+
+ShadowMapReference ShadowMapReference::renderSpot(const scene::Scene& scene,
+                                                  const scene::Light& light,
+                                                  const std::vector<bool>& casts) {
+    ShadowMapReference map;
+    map.mCamera = scene::spotShadowCamera(light);
+    map.mStrength = light.shadowStrength;
+    map.mSize = map.mCamera.resolution;
+    map.mDepth.assign(size_t{map.mSize} * map.mSize, 1.0f);
+    const glm::vec3 lightPos = light.transform.position;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        if (o >= casts.size() || !casts[o]) continue;
+        const scene::Object& object = scene.objects[o];
+        const scene::Mesh& mesh = scene::builtinMesh(object.mesh);
+        const glm::mat4 toWorld = object.transform.localToWorld();
+        const glm::mat3 normalMatrix = glm::transpose(glm::mat3(glm::inverse(toWorld)));
+        const CullMode cull = glm::determinant(toWorld) < 0.0f ? CullMode::Front : CullMode::Back;
+        std::vector<glm::vec4> clip(mesh.positions.size());
+        for (size_t v = 0; v < mesh.positions.size(); ++v) {
+            const glm::vec3 world(toWorld * glm::vec4(mesh.positions[v], 1.0f));
+            const glm::vec3 normal = glm::normalize(normalMatrix * mesh.normals[v]);
+            clip[v] = casterClip(world, normal, lightPos, map.mCamera);
+        }
+        for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            const std::array<glm::vec4, 3> triangle = {clip[mesh.indices[t]], clip[mesh.indices[t + 1]],
+                                                       clip[mesh.indices[t + 2]]};
+            rasterizeTriangle(triangle, map.mSize, map.mSize, cull, [&](const Fragment& f) {
+                float& stored = map.mDepth[size_t{f.y} * map.mSize + f.x];
+                stored = std::min(stored, f.depth);
+            });
+        }
+    }
+    return map;
+}
+
+ShadowInterval ShadowMapReference::tap(const glm::vec2& uv, float z) const {
+    // Nearest texel: floor(uv * size), clamped to the edge; near a boundary both neighbours.
+    int candidates[2][2];
+    int counts[2];
+    for (int axis = 0; axis < 2; ++axis) {
+        const float t = uv[axis] * static_cast<float>(mSize);
+        const int last = static_cast<int>(mSize) - 1;
+        const int i = std::clamp(static_cast<int>(std::floor(t)), 0, last);
+        candidates[axis][0] = i;
+        counts[axis] = 1;
+        const float fraction = t - std::floor(t);
+        int other = fraction < kTexelEpsilon ? i - 1 : fraction > 1.0f - kTexelEpsilon ? i + 1 : i;
+        other = std::clamp(other, 0, last);
+        if (other != i) candidates[axis][counts[axis]++] = other;
+    }
+    bool surelyLit = true, maybeLit = false;
+    for (int a = 0; a < counts[0]; ++a) {
+        for (int b = 0; b < counts[1]; ++b) {
+            const float stored = depth(static_cast<uint32_t>(candidates[0][a]),
+                                       static_cast<uint32_t>(candidates[1][b]));
+            const bool lit = mFlipped ? z >= stored : z <= stored;
+            const bool close = std::abs(z - stored) <= kDepthEpsilon;
+            surelyLit = surelyLit && lit && !close;
+            maybeLit = maybeLit || lit || close;
+        }
+    }
+    return {surelyLit ? 1.0f : 0.0f, maybeLit ? 1.0f : 0.0f};
+}
+
+ShadowInterval ShadowMapReference::at(const glm::vec3& p, bool soft) const {
+    const glm::vec4 s = mCamera.worldToShadow * glm::vec4(p, 1.0f);
+    const glm::vec3 c = glm::vec3(s) / s.w;
+    ShadowInterval lit{0.0f, 0.0f};
+    if (soft) {
+        const float half = 0.5f / static_cast<float>(mSize);
+        for (glm::vec2 offset : {glm::vec2(-half, -half), glm::vec2(half, -half),
+                                 glm::vec2(-half, half), glm::vec2(half, half)}) {
+            const ShadowInterval t = tap(glm::vec2(c) + offset, c.z);
+            lit.low += 0.25f * t.low;
+            lit.high += 0.25f * t.high;
+        }
+    } else {
+        lit = tap(glm::vec2(c), c.z);
+    }
+    const float shadowed = 1.0f - mStrength;
+    return {shadowed + mStrength * lit.low, shadowed + mStrength * lit.high};
+}
+
+ShadowInterval ShadowFade::apply(const ShadowInterval& realtime, const glm::vec3& p) const {
+    const float viewDepth = glm::dot(p - cameraPos, cameraForward);
+    const float fade = std::clamp(viewDepth * scale + offset, 0.0f, 1.0f);
+    return {std::clamp(realtime.low + fade, 0.0f, 1.0f), std::clamp(realtime.high + fade, 0.0f, 1.0f)};
+}
+
+ShadowFade shadowFadeFor(const scene::Scene& scene, const scene::Light& light) {
+    const glm::vec4 data = scene::lightShadowData(light, scene);
+    ShadowFade fade;
+    fade.cameraPos = scene.camera.position;
+    fade.cameraForward = glm::normalize(scene.camera.target - scene.camera.position);
+    fade.scale = data.z;
+    fade.offset = data.w;
+    return fade;
+}
+
+}  // namespace varc::reference

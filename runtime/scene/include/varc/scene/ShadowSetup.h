@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: Apache-2.0
+// ShadowSetup: how a shadowed light's shadow map is rendered and read, and the shadow uniforms
+// the shaders see (SHADER_ABI.md §4.7): the runtime and the CPU reference take these same
+// inputs, as they take the same camera matrices.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "varc/scene/CameraMatrices.h"
+#include "varc/scene/Scene.h"
+
+namespace varc::scene {
+
+struct ShadowCamera {
+    CameraMatrices matrices;  // the caster pass's camera: light position, looking along the light
+    glm::mat4 worldToShadow{1.0f};  // unity_WorldToShadow[0]: world -> (u w, v w, depth w, w)
+    glm::vec4 bias{0.0f};           // unity_LightShadowBias
+    uint32_t resolution = 512;      // texels per side of the square map
+};
+
+// A spot light's shadow camera: a square perspective frustum with the cone's angle as its field
+// of view, from light.shadowNearPlane to light.range. worldToShadow maps a world point to
+// texture coordinates (u right, v down, row 0 at v = 0) and the map's depth, all times w.
+// Bias (varc's mapping of the light inspector's units): x = shadowBias / 100 (added to clip z,
+// so depth grows by x / w), z = shadowNormalBias / 20 metres along the normal at grazing light.
+ShadowCamera spotShadowCamera(const Light& light);
+
+// _LightShadowData = (1 - strength, 0, 5 / D, -4) with D = scene.shadowDistance: shadows fade
+// from 0.8 D to D of view depth (fade = saturate(depth z + w)).
+glm::vec4 lightShadowData(const Light& light, const Scene& scene);
+
+// unity_ShadowFadeCenterAndType = (camera position, 0): type 0 fades by view depth.
+glm::vec4 shadowFadeCenterAndType(const Scene& scene);
+
+}  // namespace varc::scene
