@@ -97,4 +97,6 @@ Shader "varc/DeferredGBuffer" {
             ENDCG
         }
     }
+    // Shadows are cast by the fallback's caster (shaders/builtin/fallback/VertexLit.shader).
+    Fallback "Legacy Shaders/VertexLit"
 }

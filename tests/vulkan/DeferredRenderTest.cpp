@@ -202,10 +202,68 @@ TEST_F(DeferredRenderTest, ValidationScenesMatchTheCpuReference) {
         auto expected = reference::renderDeferredReference(*scene);
         ASSERT_TRUE(expected) << expected.error().detail;
         reference::CompareResult result = reference::compareImages(
-            frame.image, expected->color, expected->classes, reference::toleranceFor(*scene));
+            frame.image, expected->color, expected->classes, reference::toleranceFor(*scene),
+            expected->colorHigh.width() ? &expected->colorHigh : nullptr);
         EXPECT_TRUE(result.passed) << result.message;
         EXPECT_GT(result.interiorPixels, 100u) << "the scene must show lit objects";
     }
+}
+
+// The deferred light pass samples the spot light's shadow map: a reference without the shadow,
+// or with the depth comparison flipped, fails the shadow scene.
+TEST_F(DeferredRenderTest, ShadowMistakesInTheReferenceFail) {
+    auto scene = scene::loadScene(VARC_TEST_SCENE_DIR "/deferred/spot-shadow-hdr.json");
+    ASSERT_TRUE(scene) << scene.error().detail;
+    RenderedFrame frame = render(*scene);
+    scene::Scene unshadowed = *scene;
+    for (scene::Light& light : unshadowed.lights) light.shadows = scene::ShadowType::None;
+    scene::Scene strong = *scene;
+    for (scene::Light& light : strong.lights) light.shadowStrength = 0.5f;
+    for (const scene::Scene* wrong : {&unshadowed, &strong}) {
+        auto expected = reference::renderDeferredReference(*wrong);
+        ASSERT_TRUE(expected) << expected.error().detail;
+        reference::CompareResult result = reference::compareImages(
+            frame.image, expected->color, expected->classes, reference::toleranceFor(*scene),
+            expected->colorHigh.width() ? &expected->colorHigh : nullptr);
+        EXPECT_FALSE(result.passed) << result.message;
+        EXPECT_GT(result.failingPixels, 20u) << result.message;
+    }
+}
+
+// A shadowed spot light drawn forward and deferred: the same shadow map (the same casters from
+// the same light camera) read at the same world positions, so the two agree as the unshadowed
+// scenes do (2 LSB), except where a shadow tap straddles its comparison: there the CPU reference
+// allows any value between the two outcomes, and so does this test.
+TEST_F(DeferredRenderTest, ForwardAndDeferredShadowedRendersAgree) {
+    auto deferredScene = scene::loadScene(VARC_TEST_SCENE_DIR "/deferred/spot-shadow-hdr.json");
+    ASSERT_TRUE(deferredScene) << deferredScene.error().detail;
+    scene::Scene forwardScene = *deferredScene;
+    forwardScene.camera.path = scene::RenderPath::Forward;
+    for (scene::Object& object : forwardScene.objects) object.material.shader = "varc/Forward";
+    for (scene::Light& l : forwardScene.lights) l.renderMode = scene::LightRenderMode::Important;
+    auto forwardRenderer = ForwardRenderer::create(context(), {&*mPack});
+    ASSERT_TRUE(forwardRenderer) << forwardRenderer.error().detail;
+    auto forward = forwardRenderer->render(forwardScene);
+    ASSERT_TRUE(forward) << forward.error().detail;
+    RenderedFrame deferred = render(*deferredScene);
+    auto expected = reference::renderDeferredReference(*deferredScene);
+    ASSERT_TRUE(expected) << expected.error().detail;
+    reference::Tolerance tolerance;
+    tolerance.interiorLsb = tolerance.edgeLsb = 2.0f;
+    reference::CompareResult result =
+        reference::compareImages(deferred.image, forward->image, expected->classes, tolerance);
+    uint64_t intervals = 0;
+    if (expected->colorHigh.width()) {
+        for (uint32_t y = 0; y < expected->color.height(); ++y)
+            for (uint32_t x = 0; x < expected->color.width(); ++x)
+                intervals += expected->color.pixelFloat(x, y) != expected->colorHigh.pixelFloat(x, y);
+    }
+    EXPECT_LE(result.failingPixels, intervals) << result.message;
+    EXPECT_GT(result.maxErrorLsb, 0.0f) << "two different paths cannot agree bit for bit";
+    bool shadowDrawn = false;
+    for (const std::string& variant : forward->variants)
+        shadowDrawn = shadowDrawn || variant.find("SHADOWS_DEPTH") != std::string::npos;
+    EXPECT_TRUE(shadowDrawn) << "the forward render must draw the shadowed add-pass variant";
 }
 
 }  // namespace

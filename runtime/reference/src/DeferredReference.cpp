@@ -4,8 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "varc/reference/Shading.h"
+#include "varc/reference/ShadowReference.h"
 #include "varc/scene/CameraMatrices.h"
 #include "varc/scene/ForwardLights.h"
 #include "varc/scene/LightTextures.h"
@@ -82,9 +84,27 @@ GBufferTexel gbufferTexel(const ObjectSurface& surface, const glm::vec3& interpo
     return texel;
 }
 
-// LIGHTING.md §3, deferred table (no shadows: shadow = 1 exactly), and §8.3's light pass.
+// A scene's CPU shadow maps by light index (null for lights without one), with each light's fade.
+struct DeferredShadows {
+    std::vector<std::unique_ptr<ShadowMapReference>> maps;
+    std::vector<ShadowFade> fades;
+};
+
+// The light pass's shadow term (UnityDeferredComputeShadow: always faded); |upper| picks the
+// upper bound of taps that straddle a comparison; exactly 1 without a map.
+float deferredShadow(const DeferredShadows& shadows, size_t index, const scene::Light& light,
+                     const glm::vec3& p, bool upper) {
+    if (!shadows.maps[index]) return 1.0f;
+    const ShadowInterval realtime =
+        shadows.maps[index]->at(p, light.shadows == scene::ShadowType::Soft);
+    const ShadowInterval faded = shadows.fades[index].apply(realtime, p);
+    return upper ? faded.high : faded.low;
+}
+
+// LIGHTING.md §3, deferred table, and §8.3's light pass; |shadow| is the light's shadow term.
 glm::vec3 lightPass(const scene::Light& light, const LightTextureSet& textures,
-                    const GBufferTexel& texel, const glm::vec3& p, const glm::vec3& cameraPos) {
+                    const GBufferTexel& texel, const glm::vec3& p, const glm::vec3& cameraPos,
+                    float shadow) {
     const glm::vec4 lc =
         scene::worldToLight(light, /*deferredSpotConvention=*/true) * glm::vec4(p, 1.0f);
     const float invRangeSq = 1.0f / (light.range * light.range);
@@ -114,17 +134,20 @@ glm::vec3 lightPass(const scene::Light& light, const LightTextureSet& textures,
         1.0f - std::max({texel.specular.r, texel.specular.g, texel.specular.b});
     const glm::vec3 n = glm::normalize(texel.encodedNormal * 2.0f - 1.0f);
     const glm::vec3 v = glm::normalize(cameraPos - p);
-    return brdfPbs(surface, texel.smoothness, n, v, l, light.finalColor() * atten, glm::vec3(0.0f),
-                   glm::vec3(0.0f));
+    return brdfPbs(surface, texel.smoothness, n, v, l, light.finalColor() * (atten * shadow),
+                   glm::vec3(0.0f), glm::vec3(0.0f));
 }
 
 // The light buffer after every light, then what the frame shows (LDR: decoded, 0..1).
 glm::vec3 shadePixel(const scene::Scene& scene, const LightTextureSet& textures,
-                     const GBufferTexel& texel, const glm::vec3& p) {
+                     const DeferredShadows& shadows, const GBufferTexel& texel,
+                     const glm::vec3& p, bool upper) {
     const bool hdr = scene.camera.hdr;
     glm::vec3 buffer = texel.light;
-    for (const scene::Light& light : scene.lights) {
-        const glm::vec3 c = lightPass(light, textures, texel, p, scene.camera.position);
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const scene::Light& light = scene.lights[i];
+        const glm::vec3 c = lightPass(light, textures, texel, p, scene.camera.position,
+                                      deferredShadow(shadows, i, light, p, upper));
         for (int k = 0; k < 3; ++k) {
             // LDR: Blend DstColor Zero on unorm8 = round(src8 · dst8 / 255).
             buffer[k] = hdr ? toHalf(buffer[k] + toHalf(c[k]))
@@ -206,12 +229,26 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
     }
     LightTextureSet textures;
     if (Status cookies = textures.loadCookieFiles(scene.lights); !cookies) return cookies.error();
+    // Every G-buffer object casts (varc/DeferredGBuffer falls back to VertexLit's caster).
+    DeferredShadows shadows;
+    const std::vector<bool> casts(scene.objects.size(), true);
+    bool anyShadowMap = false;
+    for (const scene::Light& light : scene.lights) {
+        shadows.fades.push_back(shadowFadeFor(scene, light));
+        const bool mapped =
+            light.shadows != scene::ShadowType::None && light.type == scene::LightType::Spot;
+        shadows.maps.push_back(mapped ? std::make_unique<ShadowMapReference>(
+                                            ShadowMapReference::renderSpot(scene, light, casts))
+                                      : nullptr);
+        anyShadowMap = anyShadowMap || mapped;
+    }
     const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);
     ReferenceImage out;
     out.visibility = rasterizeScene(scene, camera);
     out.classes = classifyPixels(scene, out.visibility);
     const uint32_t w = scene.camera.width, h = scene.camera.height;
     out.color = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
+    if (anyShadowMap) out.colorHigh = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
     const bool hdr = scene.camera.hdr;
     glm::vec4 background = scene.camera.background;
     for (int c = 0; c < 4; ++c)
@@ -219,7 +256,7 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
     for (uint32_t y = 0; y < h; ++y) {
         for (uint32_t x = 0; x < w; ++x) {
             const SurfaceSample& s = out.visibility.at(x, y);
-            glm::vec4 c = background;
+            glm::vec4 c = background, high = background;
             if (s.object >= 0) {
                 const ObjectSurface& surface = surfaces[static_cast<size_t>(s.object)];
                 glm::vec3 p(0.0f), normal(0.0f);
@@ -232,9 +269,13 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
                     uv += weight * surface.mesh->uvs[v];
                 }
                 const GBufferTexel texel = gbufferTexel(surface, normal, uv, hdr);
-                c = glm::vec4(shadePixel(scene, textures, texel, p), hdr ? 1.0f : background.a);
+                const float alpha = hdr ? 1.0f : background.a;
+                c = glm::vec4(shadePixel(scene, textures, shadows, texel, p, false), alpha);
+                if (anyShadowMap)
+                    high = glm::vec4(shadePixel(scene, textures, shadows, texel, p, true), alpha);
             }
             out.color.setPixelFloat(x, y, {c.r, c.g, c.b, c.a});
+            if (anyShadowMap) out.colorHigh.setPixelFloat(x, y, {high.r, high.g, high.b, high.a});
         }
     }
     return out;

@@ -10,6 +10,7 @@
 #include "Draw.h"
 #include "GpuMesh.h"
 #include "RendererBase.h"
+#include "ShadowMaps.h"
 #include "varc/reader/PassView.h"
 #include "varc/reader/ShaderView.h"
 #include "varc/render/BuiltinTextures.h"
@@ -64,6 +65,7 @@ struct DeferredRenderer::State : RendererBase {
     UniqueHandle<VkSampler> nearest;
     std::optional<GpuMesh> sphereVolume, pyramidVolume;
     CameraTargetCache<DeferredTargets> targets;
+    ShadowMaps shadows;
 
     // The pass and formats a pipeline of |phase| renders into, and its RendererBase target kind.
     static PipelineTarget pipelineTarget(Phase phase, const DeferredTargets& target);
@@ -215,6 +217,8 @@ Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t inde
     description.type = toVariantLight(light.type);
     description.cookie = light.hasCookie();
     description.hdr = hdr;
+    const std::optional<TextureBinding> shadowMap = shadows.map(index);
+    if (shadowMap) description.shadows = toVariantShadows(light.shadows);
     auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
     if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
     pack::PackRenderState state = resolveRenderState(pass->renderState(), *frame.lightMaterial);
@@ -224,8 +228,8 @@ Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t inde
                             targetKind(Phase::Light, hdr));
     if (!created) return makeError(created.error().code, what + ": " + created.error().detail);
     const bool asQuad = volume.draw == LightVolumeDraw::FullScreenQuad;
-    const ShaderValues& lightLayer =
-        frame.storage.values.emplace_back(deferredLightValues(light, asQuad));
+    ShaderValues& lightLayer = frame.storage.values.emplace_back(deferredLightValues(light, asQuad));
+    shadows.addReceiverValues(scene, index, lightLayer);
     Draw draw;
     draw.pipeline = *created;
     if (asQuad) {
@@ -238,9 +242,10 @@ Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t inde
         draw.layers = {&lightLayer, &volumeLayer, frame.lightMaterial, frame.camera};
     }
     const bool cookie = light.cookie != "none";
-    draw.textures = [this, &light, cookie, gbuffer](
+    draw.textures = [this, &light, cookie, gbuffer, shadowMap](
                         std::string_view name,
                         pack::ResourceDim dim) -> std::optional<TextureBinding> {
+        if (shadowMap && name == "_ShadowMapTexture") return shadowMap;
         if (name == "_LightTexture0") {
             if (auto file = cookieFile(light)) return file;
         }
@@ -360,6 +365,7 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     const DeferredTargets& targets = **target;
     const bool hdr = scene.camera.hdr;
     const scene::CameraMatrices matrices = scene::cameraMatrices(scene.camera);
+    if (Status shadowMaps = s.shadows.render(s, scene); !shadowMaps) return shadowMaps.error();
     DeferredFrame frame;
     frame.camera = &frame.storage.values.emplace_back(cameraValues(scene, matrices));
     if (Status drawn = s.gbufferPhase(scene, matrices, targets, frame); !drawn)

@@ -43,15 +43,6 @@ Result<ForwardRenderer> ForwardRenderer::create(VulkanContext& context,
 
 namespace {
 
-variants::ShadowMode toVariantShadows(scene::ShadowType type) {
-    switch (type) {
-        case scene::ShadowType::None: return variants::ShadowMode::None;
-        case scene::ShadowType::Hard: return variants::ShadowMode::Hard;
-        case scene::ShadowType::Soft: return variants::ShadowMode::Soft;
-    }
-    return variants::ShadowMode::None;
-}
-
 // The variant a forward pass draws for |light| (nullptr: the base pass without a main light);
 // |shadowed| when the light's shadow map was rendered this frame.
 variants::LightDescription forwardLight(const scene::Scene& scene, const scene::Light* light,

@@ -9,6 +9,15 @@
 
 namespace varc::runtime {
 
+variants::ShadowMode toVariantShadows(scene::ShadowType type) {
+    switch (type) {
+        case scene::ShadowType::None: return variants::ShadowMode::None;
+        case scene::ShadowType::Hard: return variants::ShadowMode::Hard;
+        case scene::ShadowType::Soft: return variants::ShadowMode::Soft;
+    }
+    return variants::ShadowMode::None;
+}
+
 variants::LightType toVariantLight(scene::LightType type) {
     switch (type) {
         case scene::LightType::Directional:

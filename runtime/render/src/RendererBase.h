@@ -32,6 +32,8 @@ namespace varc::runtime {
 
 // The keyword model's name for a scene light type.
 variants::LightType toVariantLight(scene::LightType type);
+// The keyword model's name for a light's shadow type.
+variants::ShadowMode toVariantShadows(scene::ShadowType type);
 
 // How errors name scene object |index|: `object 2 'floor' (shader "varc/Forward")` (the name in
 // quotes only when the object has one).
