@@ -295,13 +295,17 @@ inline fixed3 UnpackNormalDXT5nm(fixed4 packednormal) {
 }
 inline fixed3 UnpackNormal(fixed4 packednormal) { return packednormal.xyz * 2 - 1; }
 
-// Point-light shadow cube maps store distance / range in a float .r channel (SHADER_ABI.md §6).
+// The legacy distance cube encoding (kept for shaders that call it; varc's point-light shadow
+// maps are depth cube maps).
 inline float4 UnityEncodeCubeShadowDepth(float z) { return float4(z, z, z, z); }
 inline float UnityDecodeCubeShadowDepth(float4 vals) { return vals.r; }
 
 // ---------------------------------------------------------------------------------------------
-// Shadow casters. Depth maps (SHADOWS_DEPTH) get a constant bias in clip space; cube maps
-// (SHADOWS_CUBE) write (|p - light| + bias) / range (docs/LIGHTING.md §6).
+// Shadow casters. Every map is a depth map, as on Vulkan in Unity (SHADOWS_CUBE_IN_DEPTH_TEX):
+// spot and directional lights (SHADOWS_DEPTH) and each face of a point light's depth cube map
+// (SHADOWS_CUBE) store the caster's depth after a normal offset and a linear bias in clip space
+// (docs/LIGHTING.md §6); point lights get no linear bias here (unity_LightShadowBias.x = 0), their
+// receivers subtract it (_LightProjectionParams.z).
 // ---------------------------------------------------------------------------------------------
 float4 UnityClipSpaceShadowCasterPos(float4 vertex, float3 normal) {
     float4 wPos = mul(unity_ObjectToWorld, vertex);
@@ -320,19 +324,10 @@ float4 UnityApplyLinearShadowBias(float4 clipPos) {
     clipPos.z = min(clipPos.z, clipPos.w);
     return clipPos;
 }
-#if defined(SHADOWS_CUBE)
-    #define V2F_SHADOW_CASTER_NOPOS float3 vec : TEXCOORD0;
-    #define TRANSFER_SHADOW_CASTER_NOPOS(o, opos) \
-        o.vec = mul(unity_ObjectToWorld, v.vertex).xyz - _LightPositionRange.xyz; \
-        opos = UnityObjectToClipPos(v.vertex);
-    #define SHADOW_CASTER_FRAGMENT(i) \
-        return UnityEncodeCubeShadowDepth((length(i.vec) + unity_LightShadowBias.x) * _LightPositionRange.w);
-#else
-    #define V2F_SHADOW_CASTER_NOPOS
-    #define TRANSFER_SHADOW_CASTER_NOPOS(o, opos) \
-        opos = UnityApplyLinearShadowBias(UnityClipSpaceShadowCasterPos(v.vertex, v.normal));
-    #define SHADOW_CASTER_FRAGMENT(i) return 0;
-#endif
+#define V2F_SHADOW_CASTER_NOPOS
+#define TRANSFER_SHADOW_CASTER_NOPOS(o, opos) \
+    opos = UnityApplyLinearShadowBias(UnityClipSpaceShadowCasterPos(v.vertex, v.normal));
+#define SHADOW_CASTER_FRAGMENT(i) return 0;
 #define V2F_SHADOW_CASTER V2F_SHADOW_CASTER_NOPOS float4 pos : SV_POSITION
 #define TRANSFER_SHADOW_CASTER(o) TRANSFER_SHADOW_CASTER_NOPOS(o, o.pos)
 #define TRANSFER_SHADOW_CASTER_NORMALOFFSET(o) TRANSFER_SHADOW_CASTER_NOPOS(o, o.pos)
@@ -477,9 +472,8 @@ inline float2 UnityStereoClamp(float2 uv) { return uv; }
 #define TRANSFORM_TEX_STEREO(tex, name) TRANSFORM_TEX(tex, name)
 #define UNITY_DECLARE_SCREENSPACE_SHADOWMAP_STEREO(tex) UNITY_DECLARE_SCREENSPACE_SHADOWMAP(tex)
 
-// Set when V2F_SHADOW_CASTER_NOPOS declares nothing (every caster but the point-light cube one).
-#if !defined(SHADOWS_CUBE)
+// Set when V2F_SHADOW_CASTER_NOPOS declares nothing: always, with depth cube maps.
 #define V2F_SHADOW_CASTER_NOPOS_IS_EMPTY
-#endif
+#define SHADOWS_CUBE_IN_DEPTH_TEX
 
 #endif // UNITY_CG_INCLUDED

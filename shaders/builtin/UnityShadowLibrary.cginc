@@ -34,28 +34,36 @@ inline fixed UnitySampleShadowmap(float4 shadowCoord) {
 #endif
 
 // ---------------------------------------------------------------------------------------------
-// Point-light shadows: a cube map whose .r holds (distance to the nearest occluder) / range,
-// written by the SHADOWS_CUBE caster (UnityCG.cginc). vec = worldPos - lightPos.
+// Point-light shadows: a depth cube map (Vulkan's depth-cube path). vec = worldPos - lightPos;
+// the receiver's depth is that of vec's largest component m in the face camera, after the
+// depth bias: d = -x + y / ((max(1e-5, m - z)) * w) with (x, y, z, w) = _LightProjectionParams.
+// Hard: lit when d <= the stored depth. Soft: the mean of four lookups at vec + (+-1/128) along
+// (+,+,+) (-,-,+) (-,+,-) (+,-,-). Result lerp(1 - strength, 1, lit).
 // ---------------------------------------------------------------------------------------------
 #if defined(SHADOWS_CUBE)
 UNITY_DECLARE_TEXCUBE_SHADOWMAP(_ShadowMapTexture);
 
-inline float SampleCubeDistance(float3 vec) {
-    return texCUBElod(_ShadowMapTexture, float4(vec, 0)).r;  // = UnityDecodeCubeShadowDepth
+inline float UnityCubeShadowDepth(float3 vec) {
+    float3 absVec = abs(vec);
+    float m = max(max(absVec.x, absVec.y), absVec.z);
+    m = max(0.00001, m - _LightProjectionParams.z) * _LightProjectionParams.w;
+    return -_LightProjectionParams.x + _LightProjectionParams.y / m;
 }
 
-// Hard: lit when the stored distance >= |vec| / range. Soft: mean of four lookups displaced by
-// 1/128 of |vec| along the tetrahedron directions (+,+,+) (+,-,-) (-,+,-) (-,-,+).
+inline half UnityCubeShadowTap(float3 vec, float depth) {
+    return depth <= texCUBElod(_ShadowMapTexture, float4(vec, 0)).r ? 1.0 : 0.0;
+}
+
 inline half UnitySampleShadowmap(float3 vec) {
-    float mydist = length(vec) * _LightPositionRange.w;
+    float depth = UnityCubeShadowDepth(vec);
 #if defined(SHADOWS_SOFT)
-    float z = 0.0078125 * length(vec);
-    half lit = 0.25 * ((SampleCubeDistance(vec + float3( z,  z,  z)) >= mydist ? 1.0 : 0.0)
-                     + (SampleCubeDistance(vec + float3( z, -z, -z)) >= mydist ? 1.0 : 0.0)
-                     + (SampleCubeDistance(vec + float3(-z,  z, -z)) >= mydist ? 1.0 : 0.0)
-                     + (SampleCubeDistance(vec + float3(-z, -z,  z)) >= mydist ? 1.0 : 0.0));
+    float z = 1.0 / 128.0;
+    half lit = 0.25 * (UnityCubeShadowTap(vec + float3( z,  z,  z), depth)
+                     + UnityCubeShadowTap(vec + float3(-z, -z,  z), depth)
+                     + UnityCubeShadowTap(vec + float3(-z,  z, -z), depth)
+                     + UnityCubeShadowTap(vec + float3( z, -z, -z), depth));
 #else
-    half lit = SampleCubeDistance(vec) >= mydist ? 1.0 : 0.0;
+    half lit = UnityCubeShadowTap(vec, depth);
 #endif
     return lerp(_LightShadowData.r, 1.0, lit);
 }

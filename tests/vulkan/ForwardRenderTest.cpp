@@ -192,6 +192,18 @@ TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
          [](scene::Scene& s, reference::ReferenceOptions&) {
              for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::Hard;
          }},
+        {"point-shadow-hard.json", "flipped depth comparison in the cube",
+         [](scene::Scene&, reference::ReferenceOptions& o) {
+             o.editShadowMap = [](reference::ShadowMapReference& map) { map.flipCompareForTests(); };
+         }},
+        {"point-shadow-hard.json", "no bias (acne in the cube)",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Light& light : s.lights) light.shadowBias = light.shadowNormalBias = 0.0f;
+         }},
+        {"point-shadow-soft.json", "hard instead of soft in the cube",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::Hard;
+         }},
     };
     for (const Mutation& mutation : mutations) {
         SCOPED_TRACE(std::string(mutation.scene) + ": " + mutation.what);

@@ -235,11 +235,17 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
     bool anyShadowMap = false;
     for (const scene::Light& light : scene.lights) {
         shadows.fades.push_back(shadowFadeFor(scene, light));
-        const bool mapped =
-            light.shadows != scene::ShadowType::None && light.type == scene::LightType::Spot;
-        shadows.maps.push_back(mapped ? std::make_unique<ShadowMapReference>(
-                                            ShadowMapReference::renderSpot(scene, light, casts))
-                                      : nullptr);
+        const bool mapped = light.shadows != scene::ShadowType::None &&
+                            light.type != scene::LightType::Directional;
+        std::unique_ptr<ShadowMapReference> map;
+        if (mapped && light.type == scene::LightType::Spot) {
+            map = std::make_unique<ShadowMapReference>(
+                ShadowMapReference::renderSpot(scene, light, casts));
+        } else if (mapped) {
+            map = std::make_unique<ShadowMapReference>(
+                ShadowMapReference::renderPoint(scene, light, casts));
+        }
+        shadows.maps.push_back(std::move(map));
         anyShadowMap = anyShadowMap || mapped;
     }
     const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);

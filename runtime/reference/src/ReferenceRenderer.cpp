@@ -265,10 +265,13 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
     ShadowMapSet shadowMaps(scene.lights.size());
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const scene::Light& light = scene.lights[i];
-        if (light.shadows == scene::ShadowType::None || light.type != scene::LightType::Spot)
+        if (light.shadows == scene::ShadowType::None ||
+            light.type == scene::LightType::Directional) {
             continue;
+        }
         shadowMaps[i] = std::make_unique<ShadowMapReference>(
-            ShadowMapReference::renderSpot(scene, light, casts));
+            light.type == scene::LightType::Spot ? ShadowMapReference::renderSpot(scene, light, casts)
+                                                 : ShadowMapReference::renderPoint(scene, light, casts));
         if (options.editShadowMap) options.editShadowMap(*shadowMaps[i]);
     }
     std::vector<ObjectDraw> draws;

@@ -18,24 +18,69 @@ namespace {
 constexpr float kTexelEpsilon = 1.0f / 128.0f;
 constexpr float kDepthEpsilon = 1e-5f;
 
-// The caster vertex of LIGHTING.md §6 in the shadow camera's clip space: the world position
-// moved against the normal by bias.z * sin(angle to the light), then clip z pushed back by
+// The caster vertex of LIGHTING.md §6 in a shadow camera's clip space: the world position moved
+// against the normal by bias.z * sin(angle to the light), then clip z pushed back by
 // saturate(bias.x / w) * w and kept in front of the far plane.
 glm::vec4 casterClip(const glm::vec3& world, const glm::vec3& normal, const glm::vec3& lightPos,
-                     const scene::ShadowCamera& shadow) {
+                     const glm::mat4& viewProjection, const glm::vec4& bias) {
     glm::vec3 p = world;
-    if (shadow.bias.z != 0.0f) {
+    if (bias.z != 0.0f) {
         const float cosine = glm::dot(normal, glm::normalize(lightPos - world));
         const float sine = std::sqrt(std::max(0.0f, 1.0f - cosine * cosine));
-        p -= normal * (shadow.bias.z * sine);
+        p -= normal * (bias.z * sine);
     }
-    glm::vec4 clip = shadow.matrices.viewProjection * glm::vec4(p, 1.0f);
-    clip.z += std::clamp(shadow.bias.x / clip.w, 0.0f, 1.0f) * clip.w;
+    glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
+    clip.z += std::clamp(bias.x / clip.w, 0.0f, 1.0f) * clip.w;
     clip.z = std::min(clip.z, clip.w);
     return clip;
 }
 
+// Vulkan's cube map faces (the specification's table of major axes): for a direction r on face
+// i, sc = dot(sc, r), tc = dot(tc, r), ma = dot(ma, r) > 0, s = (sc / ma + 1) / 2,
+// t = (tc / ma + 1) / 2. Written here from the specification, independently of the runtime's
+// face cameras (scene::pointShadowCamera), which must agree with it.
+struct CubeFace {
+    glm::vec3 sc, tc, ma;
+};
+constexpr CubeFace kCubeFaces[6] = {
+    {{0, 0, -1}, {0, -1, 0}, {1, 0, 0}},  {{0, 0, 1}, {0, -1, 0}, {-1, 0, 0}},
+    {{1, 0, 0}, {0, 0, 1}, {0, 1, 0}},    {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}},
+    {{1, 0, 0}, {0, -1, 0}, {0, 0, 1}},   {{-1, 0, 0}, {0, -1, 0}, {0, 0, -1}},
+};
+
+// How close two components of a direction may be before either could be the major axis.
+constexpr float kAxisEpsilon = 1e-5f;
+
 }  // namespace
+
+void ShadowMapReference::drawCasters(const scene::Scene& scene, const std::vector<bool>& casts,
+                                     const glm::mat4& viewProjection, const glm::vec4& bias,
+                                     bool mirrored, size_t face) {
+    std::vector<float>& depths = mFaces[face];
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        if (o >= casts.size() || !casts[o]) continue;
+        const scene::Object& object = scene.objects[o];
+        const scene::Mesh& mesh = scene::builtinMesh(object.mesh);
+        const glm::mat4 toWorld = object.transform.localToWorld();
+        const glm::mat3 normalMatrix = glm::transpose(glm::mat3(glm::inverse(toWorld)));
+        const bool flipped = (glm::determinant(toWorld) < 0.0f) != mirrored;
+        const CullMode cull = flipped ? CullMode::Front : CullMode::Back;
+        std::vector<glm::vec4> clip(mesh.positions.size());
+        for (size_t v = 0; v < mesh.positions.size(); ++v) {
+            const glm::vec3 world(toWorld * glm::vec4(mesh.positions[v], 1.0f));
+            const glm::vec3 normal = glm::normalize(normalMatrix * mesh.normals[v]);
+            clip[v] = casterClip(world, normal, mLightPos, viewProjection, bias);
+        }
+        for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            const std::array<glm::vec4, 3> triangle = {
+                clip[mesh.indices[t]], clip[mesh.indices[t + 1]], clip[mesh.indices[t + 2]]};
+            rasterizeTriangle(triangle, mSize, mSize, cull, [&](const Fragment& f) {
+                float& stored = depths[size_t{f.y} * mSize + f.x];
+                stored = std::min(stored, f.depth);
+            });
+        }
+    }
+}
 
 ShadowMapReference ShadowMapReference::renderSpot(const scene::Scene& scene,
                                                   const scene::Light& light,
@@ -44,34 +89,31 @@ ShadowMapReference ShadowMapReference::renderSpot(const scene::Scene& scene,
     map.mCamera = scene::spotShadowCamera(light);
     map.mStrength = light.shadowStrength;
     map.mSize = map.mCamera.resolution;
-    map.mDepth.assign(size_t{map.mSize} * map.mSize, 1.0f);
-    const glm::vec3 lightPos = light.transform.position;
-    for (size_t o = 0; o < scene.objects.size(); ++o) {
-        if (o >= casts.size() || !casts[o]) continue;
-        const scene::Object& object = scene.objects[o];
-        const scene::Mesh& mesh = scene::builtinMesh(object.mesh);
-        const glm::mat4 toWorld = object.transform.localToWorld();
-        const glm::mat3 normalMatrix = glm::transpose(glm::mat3(glm::inverse(toWorld)));
-        const CullMode cull = glm::determinant(toWorld) < 0.0f ? CullMode::Front : CullMode::Back;
-        std::vector<glm::vec4> clip(mesh.positions.size());
-        for (size_t v = 0; v < mesh.positions.size(); ++v) {
-            const glm::vec3 world(toWorld * glm::vec4(mesh.positions[v], 1.0f));
-            const glm::vec3 normal = glm::normalize(normalMatrix * mesh.normals[v]);
-            clip[v] = casterClip(world, normal, lightPos, map.mCamera);
-        }
-        for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-            const std::array<glm::vec4, 3> triangle = {clip[mesh.indices[t]], clip[mesh.indices[t + 1]],
-                                                       clip[mesh.indices[t + 2]]};
-            rasterizeTriangle(triangle, map.mSize, map.mSize, cull, [&](const Fragment& f) {
-                float& stored = map.mDepth[size_t{f.y} * map.mSize + f.x];
-                stored = std::min(stored, f.depth);
-            });
-        }
+    map.mLightPos = light.transform.position;
+    map.mFaces.assign(1, std::vector<float>(size_t{map.mSize} * map.mSize, 1.0f));
+    map.drawCasters(scene, casts, map.mCamera.matrices.viewProjection, map.mCamera.bias, false, 0);
+    return map;
+}
+
+ShadowMapReference ShadowMapReference::renderPoint(const scene::Scene& scene,
+                                                   const scene::Light& light,
+                                                   const std::vector<bool>& casts) {
+    const scene::PointShadowCamera camera = scene::pointShadowCamera(light);
+    ShadowMapReference map;
+    map.mCube = true;
+    map.mProjectionParams = camera.projectionParams;
+    map.mStrength = light.shadowStrength;
+    map.mSize = camera.resolution;
+    map.mLightPos = light.transform.position;
+    map.mFaces.assign(6, std::vector<float>(size_t{map.mSize} * map.mSize, 1.0f));
+    for (size_t face = 0; face < 6; ++face) {
+        map.drawCasters(scene, casts, camera.faceViewProjection[face], camera.bias,
+                        camera.mirrored[face], face);
     }
     return map;
 }
 
-ShadowInterval ShadowMapReference::tap(const glm::vec2& uv, float z) const {
+ShadowInterval ShadowMapReference::tap(size_t face, const glm::vec2& uv, float z) const {
     // Nearest texel: floor(uv * size), clamped to the edge; near a boundary both neighbours.
     int candidates[2][2];
     int counts[2];
@@ -90,7 +132,7 @@ ShadowInterval ShadowMapReference::tap(const glm::vec2& uv, float z) const {
     for (int a = 0; a < counts[0]; ++a) {
         for (int b = 0; b < counts[1]; ++b) {
             const float stored = depth(static_cast<uint32_t>(candidates[0][a]),
-                                       static_cast<uint32_t>(candidates[1][b]));
+                                       static_cast<uint32_t>(candidates[1][b]), face);
             const bool lit = mFlipped ? z >= stored : z <= stored;
             const bool close = std::abs(z - stored) <= kDepthEpsilon;
             surelyLit = surelyLit && lit && !close;
@@ -100,20 +142,55 @@ ShadowInterval ShadowMapReference::tap(const glm::vec2& uv, float z) const {
     return {surelyLit ? 1.0f : 0.0f, maybeLit ? 1.0f : 0.0f};
 }
 
+ShadowInterval ShadowMapReference::cubeTap(const glm::vec3& r, float z) const {
+    const float major = std::max({std::abs(r.x), std::abs(r.y), std::abs(r.z)});
+    ShadowInterval result{1.0f, 0.0f};
+    for (size_t face = 0; face < 6; ++face) {
+        const CubeFace& f = kCubeFaces[face];
+        const float ma = glm::dot(f.ma, r);
+        if (ma <= 0.0f || ma < major * (1.0f - kAxisEpsilon)) continue;  // not (near) the major axis
+        const glm::vec2 st(0.5f * (glm::dot(f.sc, r) / ma + 1.0f),
+                           0.5f * (glm::dot(f.tc, r) / ma + 1.0f));
+        const ShadowInterval t = tap(face, st, z);
+        result.low = std::min(result.low, t.low);
+        result.high = std::max(result.high, t.high);
+    }
+    return result;
+}
+
 ShadowInterval ShadowMapReference::at(const glm::vec3& p, bool soft) const {
-    const glm::vec4 s = mCamera.worldToShadow * glm::vec4(p, 1.0f);
-    const glm::vec3 c = glm::vec3(s) / s.w;
     ShadowInterval lit{0.0f, 0.0f};
-    if (soft) {
-        const float half = 0.5f / static_cast<float>(mSize);
-        for (glm::vec2 offset : {glm::vec2(-half, -half), glm::vec2(half, -half),
-                                 glm::vec2(-half, half), glm::vec2(half, half)}) {
-            const ShadowInterval t = tap(glm::vec2(c) + offset, c.z);
-            lit.low += 0.25f * t.low;
-            lit.high += 0.25f * t.high;
+    if (mCube) {
+        // LIGHTING.md §6: the depth the face camera of the major axis gives |vec|, after the bias.
+        const glm::vec3 vec = p - mLightPos;
+        const float major = std::max({std::abs(vec.x), std::abs(vec.y), std::abs(vec.z)});
+        const float m = std::max(1e-5f, major - mProjectionParams.z) * mProjectionParams.w;
+        const float z = -mProjectionParams.x + mProjectionParams.y / m;
+        if (soft) {
+            const float o = 1.0f / 128.0f;
+            for (glm::vec3 offset : {glm::vec3(o, o, o), glm::vec3(-o, -o, o),
+                                     glm::vec3(-o, o, -o), glm::vec3(o, -o, -o)}) {
+                const ShadowInterval t = cubeTap(vec + offset, z);
+                lit.low += 0.25f * t.low;
+                lit.high += 0.25f * t.high;
+            }
+        } else {
+            lit = cubeTap(vec, z);
         }
     } else {
-        lit = tap(glm::vec2(c), c.z);
+        const glm::vec4 s = mCamera.worldToShadow * glm::vec4(p, 1.0f);
+        const glm::vec3 c = glm::vec3(s) / s.w;
+        if (soft) {
+            const float half = 0.5f / static_cast<float>(mSize);
+            for (glm::vec2 offset : {glm::vec2(-half, -half), glm::vec2(half, -half),
+                                     glm::vec2(-half, half), glm::vec2(half, half)}) {
+                const ShadowInterval t = tap(0, glm::vec2(c) + offset, c.z);
+                lit.low += 0.25f * t.low;
+                lit.high += 0.25f * t.high;
+            }
+        } else {
+            lit = tap(0, glm::vec2(c), c.z);
+        }
     }
     const float shadowed = 1.0f - mStrength;
     return {shadowed + mStrength * lit.low, shadowed + mStrength * lit.high};

@@ -89,8 +89,12 @@ Result<ObjectMaterial> RendererBase::objectMaterial(
 
 Result<Draw> RendererBase::objectDraw(const ObjectDrawRequest& request) {
     const ShaderValues& material = *request.material.values;
-    pack::PackRenderState state = forObjectTransform(
-        resolveRenderState(request.pass->renderState(), material), request.localToWorld);
+    // A mirroring view turns the winding around once more: the same flip a mirrored object gets.
+    glm::mat4 handedness(1.0f);
+    if (request.mirroredView) handedness[0][0] = -1.0f;
+    pack::PackRenderState state =
+        forObjectTransform(resolveRenderState(request.pass->renderState(), material),
+                           request.localToWorld * handedness);
     auto created =
         pipeline(request.pack, *request.variant, state, request.target, request.targetKind);
     if (!created)

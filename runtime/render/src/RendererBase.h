@@ -62,6 +62,7 @@ struct ObjectDrawRequest {
     scene::MeshKind mesh = scene::MeshKind::Sphere;
     PipelineTarget target;
     uint32_t targetKind = 0;  // see RendererBase::pipeline
+    bool mirroredView = false;  // the view mirrors the image (some cube map faces): flips it again
 };
 
 struct RendererBase {

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// ShadowMaps: depth maps rendered with the objects' ShadowCaster passes.
+// ShadowMaps: depth maps and depth cube maps rendered with the objects' ShadowCaster passes.
 #include "ShadowMaps.h"
 
-#include "Draw.h"
 #include "varc/reader/PassView.h"
 #include "varc/reader/ShaderView.h"
 #include "varc/render/SceneValues.h"
@@ -19,34 +18,45 @@ constexpr uint32_t kShadowTargetKind = 100;
 constexpr VkImageAspectFlags kDepthStencil = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
 constexpr VkPipelineStageFlags kDepthStages =
     VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+constexpr VkAccessFlags kDepthAccess =
+    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
 
-LayoutTransition depthToSampled() {
-    return {VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-            VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, kDepthStages,
-            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-            VK_ACCESS_SHADER_READ_BIT};
+LayoutTransition depthTo(VkImageLayout layout, VkPipelineStageFlags stages, VkAccessFlags access) {
+    return {VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, layout, kDepthStages,
+            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, stages, access};
 }
 
-LayoutTransition sampledToDepth() {
-    return {VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
-            VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-            0, kDepthStages,
-            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT};
+LayoutTransition backToDepth(VkImageLayout layout, VkPipelineStageFlags stages) {
+    return {layout, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, stages, 0, kDepthStages,
+            kDepthAccess};
 }
 
-// The caster pass's camera: the light's shadow camera, and the light for the normal offset.
+// The caster pass's camera: |matrices| seen from the light, and the light for the normal offset.
 ShaderValues casterValues(const scene::Scene& scene, const scene::Light& light,
-                          const scene::ShadowCamera& shadow) {
+                          const scene::CameraMatrices& matrices, uint32_t resolution,
+                          const glm::vec4& bias) {
     scene::Scene lightView = scene;
     lightView.camera.position = light.transform.position;
     lightView.camera.nearPlane = light.shadowNearPlane;
     lightView.camera.farPlane = light.range;
-    lightView.camera.width = lightView.camera.height = shadow.resolution;
-    ShaderValues values = cameraValues(lightView, shadow.matrices);
-    ShaderValues lightValues = forwardLightValues(&light);
-    values.merge(lightValues);
-    values.set("unity_LightShadowBias", shadow.bias);
+    lightView.camera.width = lightView.camera.height = resolution;
+    ShaderValues values = cameraValues(lightView, matrices);
+    values.merge(forwardLightValues(&light));
+    values.set("unity_LightShadowBias", bias);
     return values;
+}
+
+// Camera matrices for a cube face: only the view-projection is a real camera's.
+scene::CameraMatrices faceMatrices(const glm::mat4& viewProjection, const glm::vec3& lightPos) {
+    scene::CameraMatrices m;
+    m.cameraToWorld = glm::mat4(1.0f);
+    m.cameraToWorld[3] = glm::vec4(lightPos, 1.0f);
+    m.worldToCamera = glm::inverse(m.cameraToWorld);
+    m.view = m.worldToCamera;
+    m.viewProjection = viewProjection;
+    m.projection = viewProjection * m.cameraToWorld;
+    m.glProjection = m.projection;
+    return m;
 }
 
 }  // namespace
@@ -55,9 +65,14 @@ Status ShadowMaps::render(RendererBase& renderer, const scene::Scene& scene) {
     mRendered.clear();
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const scene::Light& light = scene.lights[i];
-        if (light.shadows == scene::ShadowType::None || light.type != scene::LightType::Spot)
+        if (light.shadows == scene::ShadowType::None ||
+            light.type == scene::LightType::Directional) {
             continue;
-        if (Status rendered = renderSpot(renderer, scene, i, mMaps[i]); !rendered) {
+        }
+        Status rendered = light.type == scene::LightType::Spot
+                              ? renderSpot(renderer, scene, i, mMaps[i])
+                              : renderPoint(renderer, scene, i, mMaps[i]);
+        if (!rendered) {
             return makeError(rendered.error().code, "shadow map of light " + std::to_string(i) +
                                                         ": " + rendered.error().detail);
         }
@@ -66,20 +81,7 @@ Status ShadowMaps::render(RendererBase& renderer, const scene::Scene& scene) {
     return Ok{};
 }
 
-Status ShadowMaps::renderSpot(RendererBase& renderer, const scene::Scene& scene, size_t index,
-                              LightMap& map) {
-    const scene::Light& light = scene.lights[index];
-    map.camera = scene::spotShadowCamera(light);
-    if (!map.target || map.target->width() != map.camera.resolution) {
-        RenderTargetDesc desc;
-        desc.width = desc.height = map.camera.resolution;
-        desc.sampledDepth = true;
-        desc.name = "shadow map";
-        auto target = RenderTarget::create(*renderer.context, desc);
-        if (!target) return target.error();
-        map.target.emplace(std::move(*target));
-        map.sampledBefore = false;
-    }
+Status ShadowMaps::prepare(RendererBase& renderer, uint32_t resolution, bool cube, LightMap& map) {
     if (!mNearest) {
         SamplerDesc nearest;
         nearest.filter = VK_FILTER_NEAREST;
@@ -90,10 +92,36 @@ Status ShadowMaps::renderSpot(RendererBase& renderer, const scene::Scene& scene,
         if (!sampler) return sampler.error();
         mNearest = std::move(*sampler);
     }
+    if (map.target && map.target->width() == resolution && map.cube.has_value() == cube)
+        return Ok{};
+    RenderTargetDesc desc;
+    desc.width = desc.height = resolution;
+    desc.sampledDepth = !cube;
+    desc.copyableDepth = cube;
+    desc.name = cube ? "shadow cube face" : "shadow map";
+    auto target = RenderTarget::create(*renderer.context, desc);
+    if (!target) return target.error();
+    map.target.emplace(std::move(*target));
+    map.sampledBefore = false;
+    map.cube.reset();
+    if (!cube) return Ok{};
+    DeviceImageDesc cubeDesc;
+    cubeDesc.format = map.target->depthStencilFormat();
+    cubeDesc.width = cubeDesc.height = resolution;
+    cubeDesc.cube = true;
+    cubeDesc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    cubeDesc.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;  // the view samples depth only
+    auto image = createDeviceImage(*renderer.context, cubeDesc, "shadow cube map");
+    if (!image) return image.error();
+    map.cube.emplace(std::move(*image));
+    return Ok{};
+}
 
-    FrameStorage storage;
-    const ShaderValues& camera = storage.values.emplace_back(casterValues(scene, light, map.camera));
-    std::vector<Draw> draws;
+Status ShadowMaps::casterDraws(RendererBase& renderer, const scene::Scene& scene,
+                               const scene::CameraMatrices& matrices, const ShaderValues& camera,
+                               const std::string& keyword, bool mirrored,
+                               const RenderTarget& target, FrameStorage& storage,
+                               std::vector<Draw>& draws) {
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
         const std::string what = objectLabel(o, object);
@@ -102,28 +130,51 @@ Status ShadowMaps::renderSpot(RendererBase& renderer, const scene::Scene& scene,
         if (!shader) return shader.error();
         std::optional<PassView> pass = shader->pass(std::string_view("ShadowCaster"));
         if (!pass) continue;  // casts no shadow
-        auto variant = pass->lookup(std::vector<std::string>{"SHADOWS_DEPTH"},
+        auto variant = pass->lookup(std::vector<std::string>{keyword},
                                     variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
-        auto material = renderer.objectMaterial(what, object.material, shader->properties(), storage);
+        auto material =
+            renderer.objectMaterial(what, object.material, shader->properties(), storage);
         if (!material) return material.error();
         const ShaderValues& objectLayer = storage.values.emplace_back(
-            objectValues(scene, object, map.camera.matrices, scene::ForwardLightAssignment{}));
-        auto draw = renderer.objectDraw({what, pack, &*pass, &*variant, *material,
-                                         object.transform.localToWorld(), object.mesh,
-                                         {map.target->renderPass(LoadOp::Clear), true, 1},
-                                         kShadowTargetKind});
+            objectValues(scene, object, matrices, scene::ForwardLightAssignment{}));
+        ObjectDrawRequest request{what, pack, &*pass, &*variant, *material,
+                                  object.transform.localToWorld(), object.mesh,
+                                  {target.renderPass(LoadOp::Clear), true, 1}, kShadowTargetKind};
+        request.mirroredView = mirrored;
+        auto draw = renderer.objectDraw(request);
         if (!draw) return draw.error();
         draw->layers[1] = &objectLayer;
         draw->layers[3] = &camera;
         draws.push_back(std::move(*draw));
     }
+    return Ok{};
+}
 
+Status ShadowMaps::renderSpot(RendererBase& renderer, const scene::Scene& scene, size_t index,
+                              LightMap& map) {
+    const scene::Light& light = scene.lights[index];
+    map.type = scene::LightType::Spot;
+    map.spot = scene::spotShadowCamera(light);
+    if (Status ready = prepare(renderer, map.spot.resolution, false, map); !ready) return ready;
+    FrameStorage storage;
+    const ShaderValues& camera = storage.values.emplace_back(
+        casterValues(scene, light, map.spot.matrices, map.spot.resolution, map.spot.bias));
+    std::vector<Draw> draws;
+    if (Status made = casterDraws(renderer, scene, map.spot.matrices, camera, "SHADOWS_DEPTH",
+                                  false, *map.target, storage, draws);
+        !made) {
+        return made;
+    }
     Status bound = Ok{};
     uint32_t drawCount = 0;
     const RenderTarget& target = *map.target;
     Status submitted = renderer.context->submitAndWait([&](VkCommandBuffer commands) {
-        if (map.sampledBefore) transitionLayout(commands, target.depthImage(), kDepthStencil, sampledToDepth());
+        if (map.sampledBefore) {
+            transitionLayout(commands, target.depthImage(), kDepthStencil,
+                             backToDepth(VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT));
+        }
         target.begin(commands, LoadOp::Clear);
         VkViewport viewport = target.viewport();
         VkRect2D area = target.area();
@@ -131,7 +182,75 @@ Status ShadowMaps::renderSpot(RendererBase& renderer, const scene::Scene& scene,
         vkCmdSetScissor(commands, 0, 1, &area);
         bound = recordDraws(commands, *renderer.resources, draws, drawCount);
         target.end(commands);
-        transitionLayout(commands, target.depthImage(), kDepthStencil, depthToSampled());
+        transitionLayout(commands, target.depthImage(), kDepthStencil,
+                         depthTo(VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                                 VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+    });
+    map.sampledBefore = true;
+    if (Status reset = renderer.resources->reset(); !reset) return reset.error();
+    if (!bound) return bound.error();
+    return submitted;
+}
+
+// Six faces, each drawn into the one face target and copied into its layer of the cube.
+Status ShadowMaps::renderPoint(RendererBase& renderer, const scene::Scene& scene, size_t index,
+                               LightMap& map) {
+    const scene::Light& light = scene.lights[index];
+    map.type = scene::LightType::Point;
+    map.point = scene::pointShadowCamera(light);
+    if (Status ready = prepare(renderer, map.point.resolution, true, map); !ready) return ready;
+    FrameStorage storage;
+    std::array<std::vector<Draw>, 6> faceDraws;
+    for (size_t face = 0; face < 6; ++face) {
+        const scene::CameraMatrices matrices =
+            faceMatrices(map.point.faceViewProjection[face], light.transform.position);
+        const ShaderValues& camera = storage.values.emplace_back(
+            casterValues(scene, light, matrices, map.point.resolution, map.point.bias));
+        if (Status made = casterDraws(renderer, scene, matrices, camera, "SHADOWS_CUBE",
+                                      map.point.mirrored[face], *map.target, storage,
+                                      faceDraws[face]);
+            !made) {
+            return made;
+        }
+    }
+    Status bound = Ok{};
+    uint32_t drawCount = 0;
+    const RenderTarget& target = *map.target;
+    const VkImage cube = map.cube->image.get();
+    const uint32_t size = map.point.resolution;
+    Status submitted = renderer.context->submitAndWait([&](VkCommandBuffer commands) {
+        // The cube is never an attachment: it is sampled in SHADER_READ_ONLY_OPTIMAL.
+        const VkImageLayout cubeFrom = map.sampledBefore ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
+                                                         : VK_IMAGE_LAYOUT_UNDEFINED;
+        transitionLayout(commands, cube, kDepthStencil,
+                         {cubeFrom, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                          VK_ACCESS_TRANSFER_WRITE_BIT});
+        for (uint32_t face = 0; face < 6; ++face) {
+            target.begin(commands, LoadOp::Clear);
+            VkViewport viewport = target.viewport();
+            VkRect2D area = target.area();
+            vkCmdSetViewport(commands, 0, 1, &viewport);
+            vkCmdSetScissor(commands, 0, 1, &area);
+            if (bound) bound = recordDraws(commands, *renderer.resources, faceDraws[face], drawCount);
+            target.end(commands);
+            transitionLayout(commands, target.depthImage(), kDepthStencil,
+                             depthTo(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT));
+            VkImageCopy copy{};
+            copy.srcSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+            copy.dstSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, face, 1};
+            copy.extent = {size, size, 1};
+            vkCmdCopyImage(commands, target.depthImage(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           cube, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+            transitionLayout(commands, target.depthImage(), kDepthStencil,
+                             backToDepth(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                                         VK_PIPELINE_STAGE_TRANSFER_BIT));
+        }
+        transitionLayout(commands, cube, kDepthStencil,
+                         {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT});
     });
     map.sampledBefore = true;
     if (Status reset = renderer.resources->reset(); !reset) return reset.error();
@@ -142,6 +261,10 @@ Status ShadowMaps::renderSpot(RendererBase& renderer, const scene::Scene& scene,
 std::optional<TextureBinding> ShadowMaps::map(size_t light) const {
     if (!mRendered.count(light)) return std::nullopt;
     const LightMap& map = mMaps.at(light);
+    if (map.cube) {
+        return TextureBinding{map.cube->view.get(), mNearest.get(),
+                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    }
     return TextureBinding{map.target->depthSampleView(), mNearest.get(),
                           VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
 }
@@ -150,11 +273,13 @@ void ShadowMaps::addReceiverValues(const scene::Scene& scene, size_t light,
                                    ShaderValues& values) const {
     if (!mRendered.count(light)) return;
     const LightMap& map = mMaps.at(light);
-    std::vector<glm::mat4> worldToShadow(4, map.camera.worldToShadow);
+    std::vector<glm::mat4> worldToShadow(4, map.spot.worldToShadow);
     values.setArray("unity_WorldToShadow", worldToShadow);
     values.set("_LightShadowData", scene::lightShadowData(scene.lights[light], scene));
     values.set("unity_ShadowFadeCenterAndType", scene::shadowFadeCenterAndType(scene));
-    auto size = static_cast<float>(map.camera.resolution);
+    if (map.type == scene::LightType::Point) values.set("_LightProjectionParams", map.point.projectionParams);
+    const auto size = static_cast<float>(map.type == scene::LightType::Point ? map.point.resolution
+                                                                            : map.spot.resolution);
     values.set("_ShadowMapTexture_TexelSize", glm::vec4(1.0f / size, 1.0f / size, size, size));
 }
 

@@ -223,6 +223,7 @@ Status RenderTarget::createImages(const VulkanContext& context) {
     DeviceImageDesc depthDesc = colorDesc;
     depthDesc.format = mDepthFormat;
     depthDesc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+    if (mDesc.copyableDepth) depthDesc.usage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     if (mDesc.sampledDepth) {
         if (!supportsOptimal(context.physicalDevice(), mDepthFormat,
                              VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT)) {

@@ -38,26 +38,43 @@ public:
     // (Cull Back; Front for a mirrored transform), cleared to depth 1.
     static ShadowMapReference renderSpot(const scene::Scene& scene, const scene::Light& light,
                                          const std::vector<bool>& casts);
+    // The depth cube map of point light |light|: six faces drawn through
+    // scene::pointShadowCamera's face cameras (culling flipped on mirrored faces), read back
+    // through Vulkan's cube face selection.
+    static ShadowMapReference renderPoint(const scene::Scene& scene, const scene::Light& light,
+                                          const std::vector<bool>& casts);
 
-    // The shadow term at world position |p|: hard = one tap at the shadow coordinate; soft = the
-    // mean of four taps at +-0.5 texel; then lerp(1 - strength, 1, lit).
+    // The shadow term at world position |p|, then lerp(1 - strength, 1, lit). Spot: hard = one
+    // tap at the shadow coordinate, soft = the mean of four taps at +-0.5 texel. Point: the
+    // receiver depth of LIGHTING.md §6 compared in the cube; soft = four taps at +-1/128 m.
     ShadowInterval at(const glm::vec3& p, bool soft) const;
 
-    // The stored depth of texel (x, y) (row 0 at v = 0). For tests.
-    float depth(uint32_t x, uint32_t y) const { return mDepth[size_t{y} * mSize + x]; }
+    // The stored depth of texel (x, y) of face |face| (row 0 at v = 0). For tests.
+    float depth(uint32_t x, uint32_t y, size_t face = 0) const {
+        return mFaces[face][size_t{y} * mSize + x];
+    }
     uint32_t size() const { return mSize; }
 
     // Mutation hook for the comparator's tests: flips the comparison (lit when deeper).
     void flipCompareForTests() { mFlipped = true; }
 
 private:
-    // Bounds of one comparison at texture coordinate |uv| against reference depth |z|.
-    ShadowInterval tap(const glm::vec2& uv, float z) const;
+    // Bounds of one comparison at texture coordinate |uv| of face |face| against depth |z|.
+    ShadowInterval tap(size_t face, const glm::vec2& uv, float z) const;
+    // Bounds of one cube lookup in direction |r| against depth |z|.
+    ShadowInterval cubeTap(const glm::vec3& r, float z) const;
+    // Rasterises the casters through |viewProjection| into face |face|.
+    void drawCasters(const scene::Scene& scene, const std::vector<bool>& casts,
+                     const glm::mat4& viewProjection, const glm::vec4& bias, bool mirrored,
+                     size_t face);
 
-    scene::ShadowCamera mCamera;
+    bool mCube = false;
+    scene::ShadowCamera mCamera;             // spot
+    glm::vec4 mProjectionParams{0.0f};       // point: _LightProjectionParams
+    glm::vec3 mLightPos{0.0f};
     float mStrength = 1.0f;
     uint32_t mSize = 0;
-    std::vector<float> mDepth;
+    std::vector<std::vector<float>> mFaces;  // one (spot) or six (point, +X -X +Y -Y +Z -Z)
     bool mFlipped = false;
 };
 

@@ -4,6 +4,8 @@
 // inputs, as they take the same camera matrices.
 #pragma once
 
+#include <array>
+
 #include <glm/glm.hpp>
 
 #include "varc/scene/CameraMatrices.h"
@@ -24,6 +26,27 @@ struct ShadowCamera {
 // Bias (varc's mapping of the light inspector's units): x = shadowBias / 100 (added to clip z,
 // so depth grows by x / w), z = shadowNormalBias / 20 metres along the normal at grazing light.
 ShadowCamera spotShadowCamera(const Light& light);
+
+// A point light's depth cube map (Vulkan's depth-cube path, as Unity renders SHADOWS_CUBE there):
+// six square faces of `shadowResolution` texels, each a 90-degree perspective view from the
+// light between shadowNearPlane and range, laid out so that sampling the cube with the direction
+// r = p - lightPos (Vulkan's face selection and face coordinates) finds the texel that face's
+// camera drew p into. Face i in Vulkan's layer order +X, -X, +Y, -Y, +Z, -Z.
+struct PointShadowCamera {
+    std::array<glm::mat4, 6> faceViewProjection{};  // world -> Vulkan clip of each face
+    std::array<bool, 6> mirrored{};  // the face maps the world with the other handedness than a
+                                     // camera does: back faces look like front faces there
+    // _LightProjectionParams = (f/(n-f), n f/(n-f), depth bias in metres, 1): the receiver's
+    // depth for a direction whose largest component is m is -x + y / (m - z).
+    glm::vec4 projectionParams{0.0f};
+    glm::vec4 bias{0.0f};           // unity_LightShadowBias for the casters: (0, 0, normal, 0)
+    uint32_t resolution = 512;
+};
+
+// Bias (varc's mapping): the depth bias shadowBias / 10 metres is applied by the receiver
+// (projectionParams.z, as Unity does for depth cube maps); the caster gets the normal offset
+// shadowNormalBias / 20 metres only.
+PointShadowCamera pointShadowCamera(const Light& light);
 
 // _LightShadowData = (1 - strength, 0, 5 / D, -4) with D = scene.shadowDistance: shadows fade
 // from 0.8 D to D of view depth (fade = saturate(depth z + w)).

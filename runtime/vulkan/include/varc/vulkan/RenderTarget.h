@@ -47,6 +47,9 @@ struct RenderTargetDesc {
     // Makes the depth aspect samplable (e.g. a deferred renderer's _CameraDepthTexture): the depth
     // image gets VK_IMAGE_USAGE_SAMPLED_BIT and a depth-only view, depthSampleView().
     bool sampledDepth = false;
+    // Lets the depth image be copied from (VK_IMAGE_USAGE_TRANSFER_SRC_BIT), e.g. into a layer
+    // of a cube map.
+    bool copyableDepth = false;
     std::array<float, 4> clearColor{0.0f, 0.0f, 0.0f, 1.0f};
     float clearDepth = 1.0f;
     uint32_t clearStencil = 0;
