@@ -9,6 +9,7 @@
 #include <ostream>
 #include <set>
 
+#include "ValidationCoverage.h"
 #include "varc/image/Png.h"
 #include "varc/reader/Pack.h"
 #include "varc/reference/DeferredReference.h"
@@ -253,6 +254,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
                   "variants", "max LSB", "mean LSB", "time", "result");
     out << line;
     int failures = 0;
+    std::set<std::string> compared;  // variants drawn in scenes that matched the reference
     for (const std::string& scenePath : scenes) {
         std::string stem = std::filesystem::path(scenePath).stem().string();
         std::string base = (std::filesystem::path(outDir) / stem).string();
@@ -267,6 +269,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
             continue;
         }
         if (!outcome.passed) ++failures;
+        if (outcome.passed) compared.insert(outcome.frame.variants.begin(), outcome.frame.variants.end());
         std::snprintf(line, sizeof line, "%-28s %6u %9zu %9.2f %10.3f %6.2fs  %s\n", stem.c_str(),
                       outcome.frame.draws, distinctCount(outcome.frame.variants),
                       static_cast<double>(outcome.comparison.maxErrorLsb),
@@ -277,6 +280,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     }
     out << scenes.size() - static_cast<size_t>(failures) << "/" << scenes.size()
         << " scenes match the reference; PNGs in " << outDir << "\n";
+    printValidationCoverage(session->packs, options.packPaths, compared, out);
     savePipelineCache(session->cache, err);
     // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.
     if (session->context->validationMessageCount() > 0) {

@@ -365,8 +365,9 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     const DeferredTargets& targets = **target;
     const bool hdr = scene.camera.hdr;
     const scene::CameraMatrices matrices = scene::cameraMatrices(scene.camera);
-    if (Status shadowMaps = s.shadows.render(s, scene); !shadowMaps) return shadowMaps.error();
     DeferredFrame frame;
+    if (Status shadowMaps = s.shadows.render(s, scene, frame.frame.variants); !shadowMaps)
+        return shadowMaps.error();
     frame.camera = &frame.storage.values.emplace_back(cameraValues(scene, matrices));
     if (Status drawn = s.gbufferPhase(scene, matrices, targets, frame); !drawn)
         return drawn.error();

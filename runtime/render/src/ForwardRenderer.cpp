@@ -142,10 +142,11 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
     const scene::CameraMatrices matrices = scene::cameraMatrices(scene.camera);
     const ShaderValues camera = cameraValues(scene, matrices);
     if (Status cookies = s.loadCookieFiles(scene.lights); !cookies) return cookies.error();
-    if (Status shadowMaps = s.shadows.render(s, scene); !shadowMaps) return shadowMaps.error();
+    RenderedFrame frame;
+    if (Status shadowMaps = s.shadows.render(s, scene, frame.variants); !shadowMaps)
+        return shadowMaps.error();
     FrameStorage storage;
     std::vector<Draw> draws;
-    RenderedFrame frame;
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         Status added =
             s.addObjectDraws(scene, o, **target, storage, camera, matrices, draws, frame);

@@ -61,8 +61,10 @@ scene::CameraMatrices faceMatrices(const glm::mat4& viewProjection, const glm::v
 
 }  // namespace
 
-Status ShadowMaps::render(RendererBase& renderer, const scene::Scene& scene) {
+Status ShadowMaps::render(RendererBase& renderer, const scene::Scene& scene,
+                          std::vector<std::string>& drawn) {
     mRendered.clear();
+    mDrawn = &drawn;
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const scene::Light& light = scene.lights[i];
         if (light.shadows == scene::ShadowType::None ||
@@ -147,6 +149,7 @@ Status ShadowMaps::casterDraws(RendererBase& renderer, const scene::Scene& scene
         draw->layers[1] = &objectLayer;
         draw->layers[3] = &camera;
         draws.push_back(std::move(*draw));
+        if (mDrawn) mDrawn->push_back(variant->describe());
     }
     return Ok{};
 }

@@ -21,8 +21,9 @@ public:
     // Renders the map of every light that has shadows and a type varc renders shadows for: a
     // depth map per spot light (SHADOWS_DEPTH), a depth cube map per point light (SHADOWS_CUBE).
     // Objects whose shader has no ShadowCaster pass cast no shadow, as in Unity. Errors name
-    // the light or the object.
-    Status render(RendererBase& renderer, const scene::Scene& scene);
+    // the light or the object. The caster variants drawn are added to |drawn| (describe()).
+    Status render(RendererBase& renderer, const scene::Scene& scene,
+                  std::vector<std::string>& drawn);
 
     // The shadow map of light |index| with its nearest, clamp-to-edge sampler; nullopt when the
     // light has none this frame.
@@ -53,6 +54,8 @@ private:
                       LightMap& map);
     Status renderPoint(RendererBase& renderer, const scene::Scene& scene, size_t light,
                        LightMap& map);
+
+    std::vector<std::string>* mDrawn = nullptr;  // during render()
 
     std::map<size_t, LightMap> mMaps;  // by light index; targets reused across frames
     std::map<size_t, bool> mRendered;  // lights with a map this frame
