@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The runtime on lavapipe (issue #5): pipeline creation plus the first draw per variant, with
-// Mesa's on-disk shader cache disabled (cold) or warm, and the frame time of the forward
-// validation scenes once their pipelines exist. lavapipe compiles shaders lazily at the first
+// Mesa's on-disk shader cache disabled (cold) or warm, the frame time of the forward
+// validation scenes once their pipelines exist, and what shadows add to a frame (#11). lavapipe compiles shaders lazily at the first
 // draw, so "create + first draw" is what an application waits for.
 // Needs the test pack: build the project with tests, run ctest -R vulkan.build_packs once, then
 //   ./build/bench/varc_bench_render
@@ -132,6 +132,44 @@ void BM_ForwardSceneFrame(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_ForwardSceneFrame)->DenseRange(0, 8)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The cost of real-time shadows per light type (#11): the frame time of one shadow scene (a
+// plane, a sphere and a cube, 160², varc/SimpleDiffuse) lit by one spot or point light without
+// shadows, with hard and with soft shadows (512² maps; a point light draws six faces). The
+// difference to the unshadowed frame is what the shadow map and its sampling cost.
+void BM_ShadowedFrame(benchmark::State& state) {
+    const bool point = state.range(0) == 1;
+    const auto shadows = static_cast<scene::ShadowType>(state.range(1));
+    auto scene = scene::loadScene(VARC_SOURCE_DIR "/tests/scenes/forward/point-shadow-hard.json");
+    if (!scene) return state.SkipWithError(scene.error().detail.c_str());
+    scene::Light& light = scene->lights.front();
+    light.shadows = shadows;
+    if (!point) {
+        light.type = scene::LightType::Spot;
+        light.transform.rotationDegrees = {90.0f, 0.0f, 0.0f};  // straight down
+        light.spotAngle = 100.0f;
+    }
+    const char* names[] = {"none", "hard", "soft"};
+    state.SetLabel(std::string(point ? "point" : "spot") + " shadows " + names[state.range(1)]);
+    auto pack = Pack::open(kPack);
+    if (!pack) return state.SkipWithError("test pack missing: run ctest -R vulkan.build_packs");
+    std::optional<VulkanContext> context = makeContext(false);
+    if (!context) return state.SkipWithError("no Vulkan device");
+    auto renderer = ForwardRenderer::create(*context, {&*pack});
+    if (!renderer) return state.SkipWithError(renderer.error().detail.c_str());
+    if (auto warm = renderer->render(*scene); !warm)
+        return state.SkipWithError(warm.error().detail.c_str());
+    for (auto _ : state) {
+        auto frame = renderer->render(*scene);
+        if (!frame) return state.SkipWithError(frame.error().detail.c_str());
+        benchmark::DoNotOptimize(frame->draws);
+    }
+}
+BENCHMARK(BM_ShadowedFrame)
+    ->ArgNames({"point", "shadows"})
+    ->ArgsProduct({{0, 1}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace varc::runtime
