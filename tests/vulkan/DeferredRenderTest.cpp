@@ -209,24 +209,29 @@ TEST_F(DeferredRenderTest, ValidationScenesMatchTheCpuReference) {
     }
 }
 
-// The deferred light pass samples the spot light's shadow map: a reference without the shadow,
-// or with the depth comparison flipped, fails the shadow scene.
+// The deferred light pass samples the spot light's shadow map, the point light's cube and the
+// directional lights' screen masks: a reference without the shadows, or with another strength,
+// fails each shadow scene.
 TEST_F(DeferredRenderTest, ShadowMistakesInTheReferenceFail) {
-    auto scene = scene::loadScene(VARC_TEST_SCENE_DIR "/deferred/spot-shadow-hdr.json");
-    ASSERT_TRUE(scene) << scene.error().detail;
-    RenderedFrame frame = render(*scene);
-    scene::Scene unshadowed = *scene;
-    for (scene::Light& light : unshadowed.lights) light.shadows = scene::ShadowType::None;
-    scene::Scene strong = *scene;
-    for (scene::Light& light : strong.lights) light.shadowStrength = 0.5f;
-    for (const scene::Scene* wrong : {&unshadowed, &strong}) {
-        auto expected = reference::renderDeferredReference(*wrong);
-        ASSERT_TRUE(expected) << expected.error().detail;
-        reference::CompareResult result = reference::compareImages(
-            frame.image, expected->color, expected->classes, reference::toleranceFor(*scene),
-            expected->colorHigh.width() ? &expected->colorHigh : nullptr);
-        EXPECT_FALSE(result.passed) << result.message;
-        EXPECT_GT(result.failingPixels, 20u) << result.message;
+    for (const char* name :
+         {"spot-shadow-hdr.json", "directional-shadow-hdr.json", "point-shadow-ldr.json"}) {
+        SCOPED_TRACE(name);
+        auto scene = scene::loadScene(std::string(VARC_TEST_SCENE_DIR "/deferred/") + name);
+        ASSERT_TRUE(scene) << scene.error().detail;
+        RenderedFrame frame = render(*scene);
+        scene::Scene unshadowed = *scene;
+        for (scene::Light& light : unshadowed.lights) light.shadows = scene::ShadowType::None;
+        scene::Scene strong = *scene;
+        for (scene::Light& light : strong.lights) light.shadowStrength = 0.5f;
+        for (const scene::Scene* wrong : {&unshadowed, &strong}) {
+            auto expected = reference::renderDeferredReference(*wrong);
+            ASSERT_TRUE(expected) << expected.error().detail;
+            reference::CompareResult result = reference::compareImages(
+                frame.image, expected->color, expected->classes, reference::toleranceFor(*scene),
+                expected->colorHigh.width() ? &expected->colorHigh : nullptr);
+            EXPECT_FALSE(result.passed) << result.message;
+            EXPECT_GT(result.failingPixels, 20u) << result.message;
+        }
     }
 }
 

@@ -200,6 +200,22 @@ TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
          [](scene::Scene& s, reference::ReferenceOptions&) {
              for (scene::Light& light : s.lights) light.shadowBias = light.shadowNormalBias = 0.0f;
          }},
+        {"directional-shadow-hard.json", "no directional shadow",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::None;
+         }},
+        {"directional-shadow-cascades4.json", "no shadows from either directional light",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::None;
+         }},
+        {"directional-shadow-cascades4.json", "one cascade instead of four",
+         [](scene::Scene& s, reference::ReferenceOptions&) { s.shadowCascades = 1; }},
+        {"directional-shadow-cascades2-soft.json", "hard instead of the 7x7 tent",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::Hard;
+         }},
+        {"directional-shadow-cascades2-soft.json", "stable fit instead of close fit",
+         [](scene::Scene& s, reference::ReferenceOptions&) { s.stableFit = true; }},
         {"point-shadow-soft.json", "hard instead of soft in the cube",
          [](scene::Scene& s, reference::ReferenceOptions&) {
              for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::Hard;

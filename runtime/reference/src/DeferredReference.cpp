@@ -87,16 +87,19 @@ GBufferTexel gbufferTexel(const ObjectSurface& surface, const glm::vec3& interpo
 // A scene's CPU shadow maps by light index (null for lights without one), with each light's fade.
 struct DeferredShadows {
     std::vector<std::unique_ptr<ShadowMapReference>> maps;
+    std::vector<std::vector<ShadowInterval>> masks;  // directional lights' screen masks
     std::vector<ShadowFade> fades;
 };
 
 // The light pass's shadow term (UnityDeferredComputeShadow: always faded); |upper| picks the
 // upper bound of taps that straddle a comparison; exactly 1 without a map.
 float deferredShadow(const DeferredShadows& shadows, size_t index, const scene::Light& light,
-                     const glm::vec3& p, bool upper) {
+                     const glm::vec3& p, size_t pixel, bool upper) {
     if (!shadows.maps[index]) return 1.0f;
     const ShadowInterval realtime =
-        shadows.maps[index]->at(p, light.shadows == scene::ShadowType::Soft);
+        !shadows.masks[index].empty()
+            ? shadows.masks[index][pixel]
+            : shadows.maps[index]->at(p, light.shadows == scene::ShadowType::Soft);
     const ShadowInterval faded = shadows.fades[index].apply(realtime, p);
     return upper ? faded.high : faded.low;
 }
@@ -141,13 +144,13 @@ glm::vec3 lightPass(const scene::Light& light, const LightTextureSet& textures,
 // The light buffer after every light, then what the frame shows (LDR: decoded, 0..1).
 glm::vec3 shadePixel(const scene::Scene& scene, const LightTextureSet& textures,
                      const DeferredShadows& shadows, const GBufferTexel& texel,
-                     const glm::vec3& p, bool upper) {
+                     const glm::vec3& p, size_t pixel, bool upper) {
     const bool hdr = scene.camera.hdr;
     glm::vec3 buffer = texel.light;
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const scene::Light& light = scene.lights[i];
         const glm::vec3 c = lightPass(light, textures, texel, p, scene.camera.position,
-                                      deferredShadow(shadows, i, light, p, upper));
+                                      deferredShadow(shadows, i, light, p, pixel, upper));
         for (int k = 0; k < 3; ++k) {
             // LDR: Blend DstColor Zero on unorm8 = round(src8 · dst8 / 255).
             buffer[k] = hdr ? toHalf(buffer[k] + toHalf(c[k]))
@@ -235,17 +238,22 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
     bool anyShadowMap = false;
     for (const scene::Light& light : scene.lights) {
         shadows.fades.push_back(shadowFadeFor(scene, light));
-        const bool mapped = light.shadows != scene::ShadowType::None &&
-                            light.type != scene::LightType::Directional;
+        const bool mapped = light.shadows != scene::ShadowType::None;
         std::unique_ptr<ShadowMapReference> map;
+        std::vector<ShadowInterval> mask;
         if (mapped && light.type == scene::LightType::Spot) {
             map = std::make_unique<ShadowMapReference>(
                 ShadowMapReference::renderSpot(scene, light, casts));
-        } else if (mapped) {
+        } else if (mapped && light.type == scene::LightType::Point) {
             map = std::make_unique<ShadowMapReference>(
                 ShadowMapReference::renderPoint(scene, light, casts));
+        } else if (mapped) {
+            map = std::make_unique<ShadowMapReference>(
+                ShadowMapReference::renderDirectional(scene, light, casts));
+            mask = map->screenMask(scene, casts, light.shadows == scene::ShadowType::Soft);
         }
         shadows.maps.push_back(std::move(map));
+        shadows.masks.push_back(std::move(mask));
         anyShadowMap = anyShadowMap || mapped;
     }
     const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);
@@ -276,9 +284,12 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
                 }
                 const GBufferTexel texel = gbufferTexel(surface, normal, uv, hdr);
                 const float alpha = hdr ? 1.0f : background.a;
-                c = glm::vec4(shadePixel(scene, textures, shadows, texel, p, false), alpha);
-                if (anyShadowMap)
-                    high = glm::vec4(shadePixel(scene, textures, shadows, texel, p, true), alpha);
+                const size_t pixel = size_t{y} * w + x;
+                c = glm::vec4(shadePixel(scene, textures, shadows, texel, p, pixel, false), alpha);
+                if (anyShadowMap) {
+                    high = glm::vec4(shadePixel(scene, textures, shadows, texel, p, pixel, true),
+                                     alpha);
+                }
             }
             out.color.setPixelFloat(x, y, {c.r, c.g, c.b, c.a});
             if (anyShadowMap) out.colorHigh.setPixelFloat(x, y, {high.r, high.g, high.b, high.a});

@@ -47,6 +47,7 @@ struct ObjectDraw {
 struct Varyings {
     glm::vec3 p, normal, vertexTerm;
     glm::vec2 uv;  // uv0 (object mesh), before _MainTex_ST
+    size_t pixel = 0;  // row-major index of the camera pixel (screen-space shadow masks)
 };
 
 // _MainTex at the fragment: the PNG filtered at TRANSFORM_TEX(uv, _MainTex), or the constant.
@@ -64,9 +65,11 @@ glm::vec3 maxZero(const glm::vec3& v) { return glm::max(v, glm::vec3(0.0f)); }
 
 // The shadow term of |light| at |p| (LIGHTING.md §6), faded where the pass fades it: the
 // interval's lower or |upper| bound; 1 without a shadow map.
-float shadowTerm(const PassLight& light, const glm::vec3& p, bool upper) {
-    if (!light.shadowMap) return 1.0f;
-    ShadowInterval shadow = light.shadowMap->at(p, light.softShadows);
+float shadowTerm(const PassLight& light, const Varyings& in, bool upper) {
+    const glm::vec3& p = in.p;
+    if (!light.shadowMap && !light.screenMask) return 1.0f;
+    ShadowInterval shadow = light.screenMask ? (*light.screenMask)[in.pixel]
+                                             : light.shadowMap->at(p, light.softShadows);
     if (light.shadowFade) shadow = light.shadowFade->apply(shadow, p);
     return upper ? shadow.high : shadow.low;
 }
@@ -85,7 +88,7 @@ glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight&
             const SurfaceColors surface = diffuseAndSpecularFromMetallic(
                 glm::vec3(mainTexAt(m, in)) * glm::vec3(m.color), m.metallic);
             const glm::vec3 e = light.color * (lightAttenuation(light, textures, in.p) *
-                                               shadowTerm(light, in.p, upper));
+                                               shadowTerm(light, in, upper));
             glm::vec3 indirect(0.0f);
             if (base) {
                 if (draw.vertexLightsOn) indirect = in.vertexTerm;
@@ -96,7 +99,7 @@ glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight&
         case ShaderModel::SimpleDiffuse: {
             const glm::vec4 albedo = mainTexAt(m, in) * m.color;
             const float atten =
-                lightAttenuation(light, textures, in.p) * shadowTerm(light, in.p, upper);
+                lightAttenuation(light, textures, in.p) * shadowTerm(light, in, upper);
             glm::vec3 c =
                 glm::vec3(albedo) * light.color * (std::clamp(glm::dot(n, l), 0.0f, 1.0f) * atten);
             if (base) c += glm::vec3(albedo) * in.vertexTerm;
@@ -144,8 +147,12 @@ glm::vec3 vertexTerm(const ObjectDraw& draw, const VertexLights& lights, const g
     return term;
 }
 
-// The CPU shadow maps of a scene, by light index (null for lights without one).
-using ShadowMapSet = std::vector<std::unique_ptr<ShadowMapReference>>;
+// The CPU shadow maps of a scene by light index (null for lights without one), and the
+// screen-space masks of its shadowed directional lights (empty for the others).
+struct ShadowMapSet {
+    std::vector<std::unique_ptr<ShadowMapReference>> maps;
+    std::vector<std::vector<ShadowInterval>> masks;
+};
 
 Result<ObjectDraw> prepareObject(const scene::Scene& scene, const scene::Object& object,
                                  const ShadowMapSet& shadowMaps, const ReferenceOptions& options) {
@@ -160,13 +167,20 @@ Result<ObjectDraw> prepareObject(const scene::Scene& scene, const scene::Object&
         auto main = passLightFor(scene.lights[lights.mainDirectional]);
         if (!main) return main.error();
         draw.base = *main;
+        const auto light = static_cast<size_t>(lights.mainDirectional);
+        if (draw.material.receivesBaseShadows && !shadowMaps.masks[light].empty())
+            draw.base.screenMask = &shadowMaps.masks[light];
     }
     for (int index : lights.addLights) {
         auto add = passLightFor(scene.lights[index]);
         if (!add) return add.error();
         const auto light = static_cast<size_t>(index);
-        if (draw.material.receivesAddShadows && shadowMaps[light]) {
-            add->shadowMap = shadowMaps[light].get();
+        if (draw.material.receivesAddShadows && shadowMaps.maps[light]) {
+            if (shadowMaps.masks[light].empty()) {
+                add->shadowMap = shadowMaps.maps[light].get();
+            } else {
+                add->screenMask = &shadowMaps.masks[light];
+            }
             add->softShadows = scene.lights[light].shadows == scene::ShadowType::Soft;
             if (draw.material.model == ShaderModel::ForwardPbs && !options.ignoreShadowFade)
                 add->shadowFade = shadowFadeFor(scene, scene.lights[light]);
@@ -223,6 +237,7 @@ Result<MaterialParams> resolveMaterial(const scene::Material& material) {
         p.model = ShaderModel::SimpleDiffuse;
         p.castsShadows = true;
         p.receivesAddShadows = true;
+        p.receivesBaseShadows = true;
     } else if (material.shader == "varc/GlslVertexLights") {
         p.model = ShaderModel::GlslBlinnPhong;
     } else {
@@ -262,17 +277,21 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
         auto material = resolveMaterial(object.material);
         casts.push_back(material && material->castsShadows);
     }
-    ShadowMapSet shadowMaps(scene.lights.size());
+    ShadowMapSet shadowMaps;
+    shadowMaps.maps.resize(scene.lights.size());
+    shadowMaps.masks.resize(scene.lights.size());
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const scene::Light& light = scene.lights[i];
-        if (light.shadows == scene::ShadowType::None ||
-            light.type == scene::LightType::Directional) {
-            continue;
+        if (light.shadows == scene::ShadowType::None) continue;
+        shadowMaps.maps[i] = std::make_unique<ShadowMapReference>(
+            light.type == scene::LightType::Spot    ? ShadowMapReference::renderSpot(scene, light, casts)
+            : light.type == scene::LightType::Point ? ShadowMapReference::renderPoint(scene, light, casts)
+                                                    : ShadowMapReference::renderDirectional(scene, light, casts));
+        if (options.editShadowMap) options.editShadowMap(*shadowMaps.maps[i]);
+        if (light.type == scene::LightType::Directional) {
+            shadowMaps.masks[i] = shadowMaps.maps[i]->screenMask(
+                scene, casts, light.shadows == scene::ShadowType::Soft);
         }
-        shadowMaps[i] = std::make_unique<ShadowMapReference>(
-            light.type == scene::LightType::Spot ? ShadowMapReference::renderSpot(scene, light, casts)
-                                                 : ShadowMapReference::renderPoint(scene, light, casts));
-        if (options.editShadowMap) options.editShadowMap(*shadowMaps[i]);
     }
     std::vector<ObjectDraw> draws;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -293,7 +312,7 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
     out.classes = classifyPixels(scene, out.visibility);
     const uint32_t w = scene.camera.width, h = scene.camera.height;
     out.color = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
-    const bool anyShadowMap = std::any_of(shadowMaps.begin(), shadowMaps.end(),
+    const bool anyShadowMap = std::any_of(shadowMaps.maps.begin(), shadowMaps.maps.end(),
                                           [](const auto& map) { return map != nullptr; });
     if (anyShadowMap) out.colorHigh = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
     const bool hdr = scene.camera.hdr;
@@ -304,7 +323,8 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
             glm::vec4 c = background, high = background;
             if (s.object >= 0) {
                 const ObjectDraw& draw = draws[static_cast<size_t>(s.object)];
-                Varyings in{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec2(0.0f)};
+                Varyings in{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec2(0.0f),
+                            size_t{y} * w + x};
                 for (int k = 0; k < 3; ++k) {
                     const uint32_t v =
                         draw.mesh->indices[3 * s.triangle + static_cast<uint32_t>(k)];

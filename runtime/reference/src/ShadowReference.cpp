@@ -20,12 +20,14 @@ constexpr float kDepthEpsilon = 1e-5f;
 
 // The caster vertex of LIGHTING.md §6 in a shadow camera's clip space: the world position moved
 // against the normal by bias.z * sin(angle to the light), then clip z pushed back by
-// saturate(bias.x / w) * w and kept in front of the far plane.
-glm::vec4 casterClip(const glm::vec3& world, const glm::vec3& normal, const glm::vec3& lightPos,
+// saturate(bias.x / w) * w and kept in front of the far plane. |light| is _WorldSpaceLightPos0:
+// (position, 1), or (direction towards the light, 0).
+glm::vec4 casterClip(const glm::vec3& world, const glm::vec3& normal, const glm::vec4& light,
                      const glm::mat4& viewProjection, const glm::vec4& bias) {
     glm::vec3 p = world;
     if (bias.z != 0.0f) {
-        const float cosine = glm::dot(normal, glm::normalize(lightPos - world));
+        const glm::vec3 toLight = glm::vec3(light) - world * light.w;
+        const float cosine = glm::dot(normal, glm::normalize(toLight));
         const float sine = std::sqrt(std::max(0.0f, 1.0f - cosine * cosine));
         p -= normal * (bias.z * sine);
     }
@@ -55,8 +57,10 @@ constexpr float kAxisEpsilon = 1e-5f;
 
 void ShadowMapReference::drawCasters(const scene::Scene& scene, const std::vector<bool>& casts,
                                      const glm::mat4& viewProjection, const glm::vec4& bias,
-                                     bool mirrored, size_t face) {
+                                     bool mirrored, size_t face, glm::uvec2 origin,
+                                     uint32_t tileSize) {
     std::vector<float>& depths = mFaces[face];
+    const uint32_t tile = tileSize ? tileSize : mSize;
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         if (o >= casts.size() || !casts[o]) continue;
         const scene::Object& object = scene.objects[o];
@@ -69,13 +73,13 @@ void ShadowMapReference::drawCasters(const scene::Scene& scene, const std::vecto
         for (size_t v = 0; v < mesh.positions.size(); ++v) {
             const glm::vec3 world(toWorld * glm::vec4(mesh.positions[v], 1.0f));
             const glm::vec3 normal = glm::normalize(normalMatrix * mesh.normals[v]);
-            clip[v] = casterClip(world, normal, mLightPos, viewProjection, bias);
+            clip[v] = casterClip(world, normal, mLightVector, viewProjection, bias);
         }
         for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
             const std::array<glm::vec4, 3> triangle = {
                 clip[mesh.indices[t]], clip[mesh.indices[t + 1]], clip[mesh.indices[t + 2]]};
-            rasterizeTriangle(triangle, mSize, mSize, cull, [&](const Fragment& f) {
-                float& stored = depths[size_t{f.y} * mSize + f.x];
+            rasterizeTriangle(triangle, tile, tile, cull, [&](const Fragment& f) {
+                float& stored = depths[size_t{f.y + origin.y} * mSize + f.x + origin.x];
                 stored = std::min(stored, f.depth);
             });
         }
@@ -90,6 +94,7 @@ ShadowMapReference ShadowMapReference::renderSpot(const scene::Scene& scene,
     map.mStrength = light.shadowStrength;
     map.mSize = map.mCamera.resolution;
     map.mLightPos = light.transform.position;
+    map.mLightVector = glm::vec4(map.mLightPos, 1.0f);
     map.mFaces.assign(1, std::vector<float>(size_t{map.mSize} * map.mSize, 1.0f));
     map.drawCasters(scene, casts, map.mCamera.matrices.viewProjection, map.mCamera.bias, false, 0);
     return map;
@@ -105,10 +110,29 @@ ShadowMapReference ShadowMapReference::renderPoint(const scene::Scene& scene,
     map.mStrength = light.shadowStrength;
     map.mSize = camera.resolution;
     map.mLightPos = light.transform.position;
+    map.mLightVector = glm::vec4(map.mLightPos, 1.0f);
     map.mFaces.assign(6, std::vector<float>(size_t{map.mSize} * map.mSize, 1.0f));
     for (size_t face = 0; face < 6; ++face) {
         map.drawCasters(scene, casts, camera.faceViewProjection[face], camera.bias,
                         camera.mirrored[face], face);
+    }
+    return map;
+}
+
+ShadowMapReference ShadowMapReference::renderDirectional(const scene::Scene& scene,
+                                                         const scene::Light& light,
+                                                         const std::vector<bool>& casts) {
+    ShadowMapReference map;
+    map.mDirectional = true;
+    map.mCascades = scene::directionalShadowSetup(scene, light);
+    map.mStrength = light.shadowStrength;
+    map.mSize = map.mCascades.resolution;
+    map.mLightVector = glm::vec4(-light.forward(), 0.0f);
+    map.mFaces.assign(1, std::vector<float>(size_t{map.mSize} * map.mSize, 1.0f));
+    for (int c = 0; c < map.mCascades.cascades; ++c) {
+        const auto i = static_cast<size_t>(c);
+        map.drawCasters(scene, casts, map.mCascades.viewProjection[i], map.mCascades.bias, false,
+                        0, map.mCascades.tileOrigin[i], map.mCascades.tileSize);
     }
     return map;
 }
@@ -194,6 +218,127 @@ ShadowInterval ShadowMapReference::at(const glm::vec3& p, bool soft) const {
     }
     const float shadowed = 1.0f - mStrength;
     return {shadowed + mStrength * lit.low, shadowed + mStrength * lit.high};
+}
+
+namespace {
+
+// Area left of |x| under a tent of half-width 3.5 and unit area (Unity's 7-texel tent).
+float tentArea(float x) {
+    const float t = std::clamp((x + 3.5f) / 3.5f, 0.0f, 1.0f);
+    const float u = std::clamp((3.5f - x) / 3.5f, 0.0f, 1.0f);
+    return x <= 0.0f ? 0.5f * t * t : 1.0f - 0.5f * u * u;
+}
+
+// How close a view depth may come to a split distance, or a squared distance to a split
+// sphere's, before the GPU's rebuilt position could fall in the other cascade.
+constexpr float kSplitEpsilon = 1e-4f;
+
+}  // namespace
+
+ShadowInterval ShadowMapReference::tent(const glm::vec2& position, float z) const {
+    const glm::vec2 centre = glm::floor(position + 0.5f);
+    const glm::vec2 offset = position - centre;
+    ShadowInterval lit{0.0f, 0.0f};
+    for (int j = -4; j < 4; ++j) {
+        const float wy = tentArea(static_cast<float>(j + 1) - offset.y) -
+                         tentArea(static_cast<float>(j) - offset.y);
+        for (int i = -4; i < 4; ++i) {
+            const float wx = tentArea(static_cast<float>(i + 1) - offset.x) -
+                             tentArea(static_cast<float>(i) - offset.x);
+            const float w = wx * wy;
+            if (w <= 0.0f) continue;
+            // The texel's centre: a tap there is never near a texel boundary.
+            const glm::vec2 uv = (centre + glm::vec2(i, j) + 0.5f) / static_cast<float>(mSize);
+            const ShadowInterval t = tap(0, uv, z);
+            lit.low += w * t.low;
+            lit.high += w * t.high;
+        }
+    }
+    return lit;
+}
+
+ShadowInterval ShadowMapReference::collect(const glm::vec3& p, float viewZ, bool soft) const {
+    const scene::DirectionalShadowSetup& setup = mCascades;
+    // Each cascade's test as the collector makes it: `sure` the outcome, `unsure` when the point
+    // lies so close to the boundary that the GPU's rebuilt position may fall either side.
+    uint32_t sure = 0, unsure = 0;
+    for (int c = 0; c < setup.cascades; ++c) {
+        bool inside = false, close = false;
+        if (setup.stableFit) {
+            const glm::vec3 centre(setup.splitSpheres[static_cast<size_t>(c)]);
+            const float d2 = glm::dot(p - centre, p - centre), r2 = setup.splitSqRadii[c];
+            inside = d2 < r2;
+            close = std::abs(d2 - r2) <= kSplitEpsilon * r2;
+        } else {
+            const float nearZ = setup.splitsNear[c], farZ = setup.splitsFar[c];
+            const float slack = kSplitEpsilon * std::max(1.0f, farZ);
+            inside = viewZ >= nearZ && viewZ < farZ;
+            close = std::abs(viewZ - nearZ) <= slack || std::abs(viewZ - farZ) <= slack;
+        }
+        if (inside) sure |= 1u << c;
+        if (close) unsure |= 1u << c;
+    }
+    ShadowInterval lit{1.0f, 0.0f};
+    // Every outcome the unsure tests allow (at most 2^4).
+    for (uint32_t flip = 0; flip < 16; ++flip) {
+        if ((flip & ~unsure) != 0) continue;
+        const uint32_t inside = sure ^ flip;
+        glm::vec3 coord(0.0f);
+        if (setup.cascades == 1) {
+            // SHADOWS_SINGLE_CASCADE: cascade 0, wherever the point is.
+            const glm::vec4 s = setup.worldToShadow[0] * glm::vec4(p, 1.0f);
+            coord = glm::vec3(s) / s.w;
+        } else {
+            // weights: close fit, one per cascade test; stable fit, yzw = saturate(yzw - xyz).
+            float previous = 0.0f;
+            for (int c = 0; c < setup.cascades; ++c) {
+                const float test = (inside >> c) & 1u ? 1.0f : 0.0f;
+                const float weight = setup.stableFit ? std::clamp(test - previous, 0.0f, 1.0f) : test;
+                previous = test;
+                if (weight == 0.0f) continue;
+                const glm::vec4 s = setup.worldToShadow[static_cast<size_t>(c)] * glm::vec4(p, 1.0f);
+                coord += weight * glm::vec3(s) / s.w;
+            }
+        }
+        const ShadowInterval t = soft ? tent(glm::vec2(coord) * static_cast<float>(mSize), coord.z)
+                                      : tap(0, glm::vec2(coord), coord.z);
+        lit.low = std::min(lit.low, t.low);
+        lit.high = std::max(lit.high, t.high);
+    }
+    const float shadowed = 1.0f - mStrength;
+    return {shadowed + mStrength * lit.low, shadowed + mStrength * lit.high};
+}
+
+std::vector<ShadowInterval> ShadowMapReference::screenMask(const scene::Scene& scene,
+                                                           const std::vector<bool>& casts,
+                                                           bool soft) const {
+    scene::Scene casters = scene;
+    casters.objects.clear();
+    std::vector<size_t> original;
+    for (size_t o = 0; o < scene.objects.size(); ++o) {
+        if (o < casts.size() && casts[o]) {
+            casters.objects.push_back(scene.objects[o]);
+            original.push_back(o);
+        }
+    }
+    const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);
+    const VisibilityBuffer depth = rasterizeScene(casters, camera);
+    const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.position);
+    std::vector<ShadowInterval> mask(depth.samples.size(), ShadowInterval{1.0f, 1.0f});
+    for (size_t i = 0; i < depth.samples.size(); ++i) {
+        const SurfaceSample& sample = depth.samples[i];
+        if (sample.object < 0) continue;  // the far plane: beyond every cascade, lit
+        const scene::Object& object = scene.objects[original[static_cast<size_t>(sample.object)]];
+        const scene::Mesh& mesh = scene::builtinMesh(object.mesh);
+        const glm::mat4 toWorld = object.transform.localToWorld();
+        glm::vec3 p(0.0f);
+        for (uint32_t k = 0; k < 3; ++k) {
+            const glm::vec3 local = mesh.positions[mesh.indices[3 * sample.triangle + k]];
+            p += sample.bary[static_cast<glm::length_t>(k)] * glm::vec3(toWorld * glm::vec4(local, 1.0f));
+        }
+        mask[i] = collect(p, glm::dot(p - scene.camera.position, forward), soft);
+    }
+    return mask;
 }
 
 ShadowInterval ShadowFade::apply(const ShadowInterval& realtime, const glm::vec3& p) const {

@@ -8,8 +8,10 @@
 #include "CameraTargetCache.h"
 #include "DeferredTargets.h"
 #include "Draw.h"
+#include "FullScreenQuad.h"
 #include "GpuMesh.h"
 #include "RendererBase.h"
+#include "ScreenShadowMasks.h"
 #include "ShadowMaps.h"
 #include "varc/reader/PassView.h"
 #include "varc/reader/ShaderView.h"
@@ -35,18 +37,6 @@ constexpr float kStencilNonBackground = 128.0f;
 
 enum class Phase { GBuffer, Light, Decode };
 
-Result<GpuMesh> uploadQuad(VulkanContext& context, const scene::CameraMatrices& camera) {
-    scene::Mesh mesh;
-    for (const QuadCorner& corner : fullScreenQuad(camera)) {
-        mesh.positions.push_back(corner.position);
-        mesh.normals.push_back(corner.ray);
-        mesh.tangents.emplace_back(1.0f, 0.0f, 0.0f, 1.0f);
-        mesh.uvs.push_back(corner.uv);
-    }
-    mesh.indices = {0, 1, 2, 0, 2, 3};
-    return uploadMesh(context, mesh);
-}
-
 }  // namespace
 
 // Everything one frame's draws point at, kept alive until the frame is submitted.
@@ -66,6 +56,7 @@ struct DeferredRenderer::State : RendererBase {
     std::optional<GpuMesh> sphereVolume, pyramidVolume;
     CameraTargetCache<DeferredTargets> targets;
     ShadowMaps shadows;
+    ScreenShadowMasks screenShadows;  // directional lights' masks (SHADOWS_SCREEN)
 
     // The pass and formats a pipeline of |phase| renders into, and its RendererBase target kind.
     static PipelineTarget pipelineTarget(Phase phase, const DeferredTargets& target);
@@ -217,7 +208,10 @@ Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t inde
     description.type = toVariantLight(light.type);
     description.cookie = light.hasCookie();
     description.hdr = hdr;
-    const std::optional<TextureBinding> shadowMap = shadows.map(index);
+    // Directional lights read their screen-space mask, the others their map.
+    const std::optional<TextureBinding> shadowMap = light.type == scene::LightType::Directional
+                                                        ? screenShadows.mask(index)
+                                                        : shadows.map(index);
     if (shadowMap) description.shadows = toVariantShadows(light.shadows);
     auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
     if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
@@ -368,11 +362,17 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     DeferredFrame frame;
     if (Status shadowMaps = s.shadows.render(s, scene, frame.frame.variants); !shadowMaps)
         return shadowMaps.error();
+    // The masks come from their own camera depth of the casters, as in forward (Unity's
+    // deferred path reads the G-buffer's depth: the same wherever every object casts).
+    if (Status masks = s.screenShadows.render(s, scene, s.shadows, matrices, frame.frame.variants);
+        !masks) {
+        return masks.error();
+    }
     frame.camera = &frame.storage.values.emplace_back(cameraValues(scene, matrices));
     if (Status drawn = s.gbufferPhase(scene, matrices, targets, frame); !drawn)
         return drawn.error();
 
-    auto quad = uploadQuad(*s.context, matrices);
+    auto quad = uploadFullScreenQuad(*s.context, matrices);
     if (!quad) return quad.error();
     frame.quad.emplace(std::move(*quad));
     frame.quadLayer = &frame.storage.values.emplace_back(fullScreenQuadValues(matrices));

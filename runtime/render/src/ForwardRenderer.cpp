@@ -7,6 +7,7 @@
 #include "Draw.h"
 #include "GpuMesh.h"
 #include "RendererBase.h"
+#include "ScreenShadowMasks.h"
 #include "ShadowMaps.h"
 #include "varc/reader/PassView.h"
 #include "varc/reader/ShaderView.h"
@@ -22,6 +23,7 @@ namespace varc::runtime {
 struct ForwardRenderer::State : RendererBase {
     CameraTargetCache<RenderTarget> targets;
     ShadowMaps shadows;
+    ScreenShadowMasks screenShadows;  // directional lights' masks (SHADOWS_SCREEN)
 
     Status addObjectDraws(const scene::Scene& scene, size_t index, const RenderTarget& target,
                           FrameStorage& storage, const ShaderValues& camera,
@@ -84,8 +86,13 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
             return makeError(ErrorCode::NotFound,
                              what + ": the shader has no " + lightMode + " pass");
         const size_t lightIndex = light ? static_cast<size_t>(light - scene.lights.data()) : 0;
-        std::optional<TextureBinding> shadowMap =
-            light ? shadows.map(lightIndex) : std::optional<TextureBinding>();
+        // Directional lights read their screen-space mask, the others their map.
+        std::optional<TextureBinding> shadowMap;
+        if (light && light->type == scene::LightType::Directional) {
+            shadowMap = screenShadows.mask(lightIndex);
+        } else if (light) {
+            shadowMap = shadows.map(lightIndex);
+        }
         auto variant = pass->lookup(forwardLight(scene, light, assignment, shadowMap.has_value()),
                                     variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
@@ -145,6 +152,8 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
     RenderedFrame frame;
     if (Status shadowMaps = s.shadows.render(s, scene, frame.variants); !shadowMaps)
         return shadowMaps.error();
+    if (Status masks = s.screenShadows.render(s, scene, s.shadows, matrices, frame.variants); !masks)
+        return masks.error();
     FrameStorage storage;
     std::vector<Draw> draws;
     for (size_t o = 0; o < scene.objects.size(); ++o) {

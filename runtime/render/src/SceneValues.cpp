@@ -27,6 +27,8 @@ ShaderValues cameraValues(const scene::Scene& scene, const scene::CameraMatrices
     values.set("unity_WorldToCamera", m.worldToCamera);
     values.set("unity_CameraToWorld", m.cameraToWorld);
     values.set("varc_ProjectionMatrix", m.projection);
+    // Clip -> world, for passes that rebuild positions from depth (the shadow collector).
+    values.set("varc_CameraInvViewProjection", glm::mat4(glm::inverse(glm::dmat4(m.viewProjection))));
     for (const char* name : {"_Time", "_SinTime", "_CosTime", "unity_DeltaTime"})
         values.set(name, glm::vec4(0.0f));
     glm::vec4 ambient(scene.ambient, 1.0f);

@@ -67,13 +67,12 @@ Status ShadowMaps::render(RendererBase& renderer, const scene::Scene& scene,
     mDrawn = &drawn;
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const scene::Light& light = scene.lights[i];
-        if (light.shadows == scene::ShadowType::None ||
-            light.type == scene::LightType::Directional) {
-            continue;
-        }
+        if (light.shadows == scene::ShadowType::None) continue;
         Status rendered = light.type == scene::LightType::Spot
                               ? renderSpot(renderer, scene, i, mMaps[i])
-                              : renderPoint(renderer, scene, i, mMaps[i]);
+                          : light.type == scene::LightType::Point
+                              ? renderPoint(renderer, scene, i, mMaps[i])
+                              : renderDirectional(renderer, scene, i, mMaps[i]);
         if (!rendered) {
             return makeError(rendered.error().code, "shadow map of light " + std::to_string(i) +
                                                         ": " + rendered.error().detail);
@@ -119,11 +118,11 @@ Status ShadowMaps::prepare(RendererBase& renderer, uint32_t resolution, bool cub
     return Ok{};
 }
 
-Status ShadowMaps::casterDraws(RendererBase& renderer, const scene::Scene& scene,
-                               const scene::CameraMatrices& matrices, const ShaderValues& camera,
-                               const std::string& keyword, bool mirrored,
-                               const RenderTarget& target, FrameStorage& storage,
-                               std::vector<Draw>& draws) {
+Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
+                         const scene::CameraMatrices& matrices, const ShaderValues& camera,
+                         const std::string& keyword, bool mirrored, const RenderTarget& target,
+                         FrameStorage& storage, std::vector<Draw>& draws,
+                         std::vector<std::string>& drawn) {
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
         const std::string what = objectLabel(o, object);
@@ -149,7 +148,7 @@ Status ShadowMaps::casterDraws(RendererBase& renderer, const scene::Scene& scene
         draw->layers[1] = &objectLayer;
         draw->layers[3] = &camera;
         draws.push_back(std::move(*draw));
-        if (mDrawn) mDrawn->push_back(variant->describe());
+        drawn.push_back(variant->describe());
     }
     return Ok{};
 }
@@ -261,6 +260,65 @@ Status ShadowMaps::renderPoint(RendererBase& renderer, const scene::Scene& scene
     return submitted;
 }
 
+// The cascades drawn side by side into one atlas, each through its own viewport.
+Status ShadowMaps::renderDirectional(RendererBase& renderer, const scene::Scene& scene,
+                                     size_t index, LightMap& map) {
+    const scene::Light& light = scene.lights[index];
+    map.type = scene::LightType::Directional;
+    map.directional = scene::directionalShadowSetup(scene, light);
+    const scene::DirectionalShadowSetup& setup = map.directional;
+    if (Status ready = prepare(renderer, setup.resolution, false, map); !ready) return ready;
+    FrameStorage storage;
+    std::array<std::vector<Draw>, 4> cascadeDraws;
+    for (int c = 0; c < setup.cascades; ++c) {
+        scene::CameraMatrices matrices;
+        matrices.viewProjection = setup.viewProjection[static_cast<size_t>(c)];
+        matrices.view = matrices.worldToCamera = glm::mat4(1.0f);
+        matrices.cameraToWorld = glm::mat4(1.0f);
+        matrices.projection = matrices.glProjection = matrices.viewProjection;
+        const ShaderValues& camera = storage.values.emplace_back(
+            casterValues(scene, light, matrices, setup.tileSize, setup.bias));
+        if (Status made = casterDraws(renderer, scene, matrices, camera, "SHADOWS_DEPTH", false,
+                                      *map.target, storage, cascadeDraws[static_cast<size_t>(c)]);
+            !made) {
+            return made;
+        }
+    }
+    Status bound = Ok{};
+    uint32_t drawCount = 0;
+    const RenderTarget& target = *map.target;
+    Status submitted = renderer.context->submitAndWait([&](VkCommandBuffer commands) {
+        if (map.sampledBefore) {
+            transitionLayout(commands, target.depthImage(), kDepthStencil,
+                             backToDepth(VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT));
+        }
+        target.begin(commands, LoadOp::Clear);
+        for (int c = 0; c < setup.cascades; ++c) {
+            const glm::uvec2 origin = setup.tileOrigin[static_cast<size_t>(c)];
+            const auto size = static_cast<float>(setup.tileSize);
+            VkViewport viewport{static_cast<float>(origin.x), static_cast<float>(origin.y), size,
+                                size, 0.0f, 1.0f};
+            VkRect2D area{{static_cast<int32_t>(origin.x), static_cast<int32_t>(origin.y)},
+                          {setup.tileSize, setup.tileSize}};
+            vkCmdSetViewport(commands, 0, 1, &viewport);
+            vkCmdSetScissor(commands, 0, 1, &area);
+            if (bound) {
+                bound = recordDraws(commands, *renderer.resources,
+                                    cascadeDraws[static_cast<size_t>(c)], drawCount);
+            }
+        }
+        target.end(commands);
+        transitionLayout(commands, target.depthImage(), kDepthStencil,
+                         depthTo(VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                                 VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+    });
+    map.sampledBefore = true;
+    if (Status reset = renderer.resources->reset(); !reset) return reset.error();
+    if (!bound) return bound.error();
+    return submitted;
+}
+
 std::optional<TextureBinding> ShadowMaps::map(size_t light) const {
     if (!mRendered.count(light)) return std::nullopt;
     const LightMap& map = mMaps.at(light);
@@ -277,12 +335,22 @@ void ShadowMaps::addReceiverValues(const scene::Scene& scene, size_t light,
     if (!mRendered.count(light)) return;
     const LightMap& map = mMaps.at(light);
     std::vector<glm::mat4> worldToShadow(4, map.spot.worldToShadow);
+    if (map.type == scene::LightType::Directional) {
+        const scene::DirectionalShadowSetup& setup = map.directional;
+        worldToShadow.assign(setup.worldToShadow.begin(), setup.worldToShadow.end());
+        values.set("_LightSplitsNear", setup.splitsNear);
+        values.set("_LightSplitsFar", setup.splitsFar);
+        values.setArray("unity_ShadowSplitSpheres",
+                        std::vector<glm::vec4>(setup.splitSpheres.begin(), setup.splitSpheres.end()));
+        values.set("unity_ShadowSplitSqRadii", setup.splitSqRadii);
+    }
     values.setArray("unity_WorldToShadow", worldToShadow);
     values.set("_LightShadowData", scene::lightShadowData(scene.lights[light], scene));
     values.set("unity_ShadowFadeCenterAndType", scene::shadowFadeCenterAndType(scene));
     if (map.type == scene::LightType::Point) values.set("_LightProjectionParams", map.point.projectionParams);
     const auto size = static_cast<float>(map.type == scene::LightType::Point ? map.point.resolution
-                                                                            : map.spot.resolution);
+                                         : map.type == scene::LightType::Spot ? map.spot.resolution
+                                                                              : map.directional.resolution);
     values.set("_ShadowMapTexture_TexelSize", glm::vec4(1.0f / size, 1.0f / size, size, size));
 }
 

@@ -16,22 +16,40 @@
 
 namespace varc::runtime {
 
+// Appends the caster draws of every object whose shader has a ShadowCaster pass (variant
+// |keyword|, e.g. SHADOWS_DEPTH), seen through |matrices| with |camera| as their camera layer,
+// into |target|; |mirrored| views flip culling. Adds each variant's describe() to |drawn|.
+Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
+                         const scene::CameraMatrices& matrices, const ShaderValues& camera,
+                         const std::string& keyword, bool mirrored, const RenderTarget& target,
+                         FrameStorage& storage, std::vector<Draw>& draws,
+                         std::vector<std::string>& drawn);
+
 class ShadowMaps {
 public:
-    // Renders the map of every light that has shadows and a type varc renders shadows for: a
-    // depth map per spot light (SHADOWS_DEPTH), a depth cube map per point light (SHADOWS_CUBE).
+    // Renders the map of every light that has shadows: a depth map per spot light
+    // (SHADOWS_DEPTH), a depth cube map per point light (SHADOWS_CUBE), a cascaded depth atlas
+    // per directional light (read by the screen-space collector, ScreenShadowMasks).
     // Objects whose shader has no ShadowCaster pass cast no shadow, as in Unity. Errors name
     // the light or the object. The caster variants drawn are added to |drawn| (describe()).
     Status render(RendererBase& renderer, const scene::Scene& scene,
                   std::vector<std::string>& drawn);
 
-    // The shadow map of light |index| with its nearest, clamp-to-edge sampler; nullopt when the
-    // light has none this frame.
+    // The shadow map of light |index| with its nearest, clamp-to-edge sampler (for a directional
+    // light, its cascade atlas); nullopt when the light has none this frame.
     std::optional<TextureBinding> map(size_t light) const;
+    // Whether light |index| has a directional cascade atlas this frame, and its setup.
+    bool isDirectional(size_t light) const {
+        return mRendered.count(light) && mMaps.at(light).type == scene::LightType::Directional;
+    }
+    const scene::DirectionalShadowSetup& directional(size_t light) const {
+        return mMaps.at(light).directional;
+    }
 
     // Adds the receiver uniforms of light |index| to |values|: unity_WorldToShadow,
-    // _LightShadowData, unity_ShadowFadeCenterAndType, _ShadowMapTexture_TexelSize and, for
-    // point lights, _LightProjectionParams (nothing for a light without a map).
+    // _LightShadowData, unity_ShadowFadeCenterAndType, _ShadowMapTexture_TexelSize, for point
+    // lights _LightProjectionParams, for directional lights the cascade splits and spheres
+    // (nothing for a light without a map).
     void addReceiverValues(const scene::Scene& scene, size_t light, ShaderValues& values) const;
 
 private:
@@ -39,21 +57,25 @@ private:
         scene::LightType type = scene::LightType::Spot;
         scene::ShadowCamera spot;
         scene::PointShadowCamera point;
+        scene::DirectionalShadowSetup directional;
         std::optional<RenderTarget> target;  // the map (spot) or each face in turn (point)
         std::optional<DeviceImage> cube;     // point: the depth cube the faces are copied to
         bool sampledBefore = false;  // the target's depth is in DEPTH_STENCIL_READ_ONLY_OPTIMAL
     };
     Status prepare(RendererBase& renderer, uint32_t resolution, bool cube, LightMap& map);
-    // The caster draws of every object whose shader has a ShadowCaster pass, seen through
-    // |matrices| with |camera| as their camera layer.
     Status casterDraws(RendererBase& renderer, const scene::Scene& scene,
                        const scene::CameraMatrices& matrices, const ShaderValues& camera,
                        const std::string& keyword, bool mirrored, const RenderTarget& target,
-                       FrameStorage& storage, std::vector<Draw>& draws);
+                       FrameStorage& storage, std::vector<Draw>& draws) {
+        return appendCasterDraws(renderer, scene, matrices, camera, keyword, mirrored, target,
+                                 storage, draws, *mDrawn);
+    }
     Status renderSpot(RendererBase& renderer, const scene::Scene& scene, size_t light,
                       LightMap& map);
     Status renderPoint(RendererBase& renderer, const scene::Scene& scene, size_t light,
                        LightMap& map);
+    Status renderDirectional(RendererBase& renderer, const scene::Scene& scene, size_t light,
+                             LightMap& map);
 
     std::vector<std::string>* mDrawn = nullptr;  // during render()
 

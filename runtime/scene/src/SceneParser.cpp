@@ -374,6 +374,45 @@ bool readLight(Reader& r, const json& value, const std::string& p, Light& l) {
     return readLightShadows(r, value, p, l);
 }
 
+// quality.shadow_cascades (1, 2, 4), shadow_cascade_splits (fractions of the shadow distance,
+// increasing, in (0, 1): one for two cascades, three for four) and shadow_projection.
+bool readCascades(Reader& r, const json& q, Scene& scene) {
+    if (q.contains("shadow_cascades")) {
+        int64_t count = 0;
+        if (!r.readInt(q["shadow_cascades"], "/quality/shadow_cascades", 1, 4, count)) return false;
+        if (count == 3) return r.fail("/quality/shadow_cascades", "expected 1, 2 or 4");
+        scene.shadowCascades = static_cast<int>(count);
+        if (count == 2) scene.cascadeSplits = glm::vec3(0.333f, 1.0f, 1.0f);
+    }
+    if (q.contains("shadow_cascade_splits")) {
+        const json& splits = q["shadow_cascade_splits"];
+        const size_t wanted = scene.shadowCascades == 4 ? 3 : scene.shadowCascades == 2 ? 1 : 0;
+        if (!splits.is_array() || splits.size() != wanted) {
+            return r.fail("/quality/shadow_cascade_splits",
+                          "expected " + std::to_string(wanted) + " fractions for " +
+                              std::to_string(scene.shadowCascades) + " cascades");
+        }
+        float previous = 0.0f;
+        for (size_t i = 0; i < wanted; ++i) {
+            const std::string pointer = "/quality/shadow_cascade_splits/" + std::to_string(i);
+            float value = 0.0f;
+            if (!r.readFloat(splits[i], pointer, value)) return false;
+            if (value <= previous || value >= 1.0f)
+                return r.fail(pointer, "expected increasing fractions in (0, 1)");
+            scene.cascadeSplits[static_cast<glm::length_t>(i)] = value;
+            previous = value;
+        }
+    }
+    if (q.contains("shadow_projection")) {
+        std::string fit;
+        if (!r.readString(q["shadow_projection"], "/quality/shadow_projection", fit)) return false;
+        if (fit != "stable_fit" && fit != "close_fit")
+            return r.fail("/quality/shadow_projection", "expected \"stable_fit\" or \"close_fit\"");
+        scene.stableFit = fit == "stable_fit";
+    }
+    return true;
+}
+
 bool readScene(Reader& r, const json& root, Scene& scene) {
     if (!r.onlyKeys(root, "", {"camera", "ambient", "quality", "objects", "lights"})) return false;
     if (root.contains("camera") && !readCamera(r, root["camera"], "/camera", scene.camera))
@@ -389,7 +428,12 @@ bool readScene(Reader& r, const json& root, Scene& scene) {
     }
     if (root.contains("quality")) {
         const json& q = root["quality"];
-        if (!r.onlyKeys(q, "/quality", {"pixel_light_count", "shadow_distance"})) return false;
+        if (!r.onlyKeys(q, "/quality",
+                        {"pixel_light_count", "shadow_distance", "shadow_cascades",
+                         "shadow_cascade_splits", "shadow_projection"})) {
+            return false;
+        }
+        if (!readCascades(r, q, scene)) return false;
         if (q.contains("shadow_distance") &&
             !r.readPositive(q["shadow_distance"], "/quality/shadow_distance", scene.shadowDistance)) {
             return false;

@@ -2,6 +2,9 @@
 // ShadowSetup: shadow cameras and shadow uniforms (SHADER_ABI.md §4.7).
 #include "varc/scene/ShadowSetup.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace varc::scene {
@@ -68,6 +71,105 @@ PointShadowCamera pointShadowCamera(const Light& light) {
         camera.mirrored[i] = glm::determinant(glm::mat3(face.sc, face.tc, face.ma)) > 0.0f;
     }
     return camera;
+}
+
+namespace {
+
+// An orthographic camera looking along |forward| (left-handed light space: x right, y up, z
+// along the light): the box [lo, hi] of light space onto Vulkan clip space (y down, z 0..1).
+glm::mat4 orthoAlong(const glm::mat3& worldToLight, const glm::vec3& lo, const glm::vec3& hi) {
+    glm::mat4 view(worldToLight);
+    glm::mat4 projection(1.0f);
+    projection[0][0] = 2.0f / (hi.x - lo.x);
+    projection[1][1] = -2.0f / (hi.y - lo.y);
+    projection[2][2] = 1.0f / (hi.z - lo.z);
+    projection[3][0] = -(hi.x + lo.x) / (hi.x - lo.x);
+    projection[3][1] = (hi.y + lo.y) / (hi.y - lo.y);
+    projection[3][2] = -lo.z / (hi.z - lo.z);
+    return projection * view;
+}
+
+}  // namespace
+
+DirectionalShadowSetup directionalShadowSetup(const Scene& scene, const Light& light) {
+    DirectionalShadowSetup setup;
+    setup.cascades = scene.shadowCascades;
+    setup.resolution = light.shadowResolution;
+    setup.tileSize = setup.cascades == 1 ? setup.resolution : setup.resolution / 2;
+    setup.stableFit = scene.stableFit;
+    setup.bias = glm::vec4(light.shadowBias / 100.0f, 0.0f, light.shadowNormalBias / 20.0f, 0.0f);
+
+    // Light space: rows right, up, forward (the light's direction of travel).
+    const glm::vec3 forward = light.forward();
+    glm::vec3 worldUp(0.0f, 1.0f, 0.0f);
+    if (std::abs(glm::dot(forward, worldUp)) > 0.9999f) worldUp = glm::vec3(0.0f, 0.0f, 1.0f);
+    const glm::vec3 right = glm::normalize(glm::cross(worldUp, forward));
+    const glm::vec3 up = glm::cross(forward, right);
+    const glm::mat3 worldToLight = glm::transpose(glm::mat3(right, up, forward));
+
+    // The camera frustum's slices in view depth.
+    const Camera& camera = scene.camera;
+    const float distance = std::min(scene.shadowDistance, camera.farPlane);
+    float depths[5] = {camera.nearPlane, distance, distance, distance, distance};
+    if (setup.cascades == 2) depths[1] = scene.cascadeSplits.x * distance;
+    if (setup.cascades == 4) {
+        for (int i = 0; i < 3; ++i) depths[i + 1] = scene.cascadeSplits[i] * distance;
+    }
+    const CameraMatrices view = cameraMatrices(camera);
+    const glm::vec3 camRight(view.cameraToWorld[0]), camUp(view.cameraToWorld[1]),
+        camForward(view.cameraToWorld[2]);
+    const float tanHalf = std::tan(glm::radians(camera.fovY) * 0.5f);
+    const float aspect = static_cast<float>(camera.width) / static_cast<float>(camera.height);
+
+    glm::mat4 toTexture(1.0f);
+    toTexture[0][0] = toTexture[1][1] = 0.5f;
+    toTexture[3][0] = toTexture[3][1] = 0.5f;
+    for (int c = 0; c < setup.cascades; ++c) {
+        const float nearDepth = depths[c], farDepth = depths[c + 1];
+        setup.splitsNear[c] = nearDepth;
+        setup.splitsFar[c] = farDepth;
+        glm::vec3 corners[8];
+        glm::vec3 centre(0.0f);
+        for (int k = 0; k < 8; ++k) {
+            const float d = (k & 4) ? farDepth : nearDepth;
+            const float sx = (k & 1) ? 1.0f : -1.0f, sy = (k & 2) ? 1.0f : -1.0f;
+            corners[k] = camera.position + camForward * d + camRight * (sx * d * tanHalf * aspect) +
+                         camUp * (sy * d * tanHalf);
+            centre += corners[k] / 8.0f;
+        }
+        float radius = 0.0f;
+        for (const glm::vec3& corner : corners) radius = std::max(radius, glm::length(corner - centre));
+        setup.splitSpheres[c] = glm::vec4(centre, radius);
+        setup.splitSqRadii[c] = radius * radius;
+
+        glm::vec3 lo(INFINITY), hi(-INFINITY);
+        if (setup.stableFit) {
+            glm::vec3 middle = worldToLight * centre;
+            const float texel = 2.0f * radius / static_cast<float>(setup.tileSize);
+            middle.x = std::floor(middle.x / texel) * texel;
+            middle.y = std::floor(middle.y / texel) * texel;
+            lo = middle - glm::vec3(radius);
+            hi = middle + glm::vec3(radius);
+        } else {
+            for (const glm::vec3& corner : corners) {
+                lo = glm::min(lo, worldToLight * corner);
+                hi = glm::max(hi, worldToLight * corner);
+            }
+        }
+        lo.z -= scene.shadowDistance;  // casters between the light and the slice
+        setup.viewProjection[c] = orthoAlong(worldToLight, lo, hi);
+        setup.tileOrigin[c] = setup.cascades == 1
+                                  ? glm::uvec2(0)
+                                  : glm::uvec2(c % 2, c / 2) * setup.tileSize;
+        // Texture coordinates of the tile inside the atlas.
+        const float scale = static_cast<float>(setup.tileSize) / static_cast<float>(setup.resolution);
+        glm::mat4 tile(1.0f);
+        tile[0][0] = tile[1][1] = scale;
+        tile[3][0] = static_cast<float>(setup.tileOrigin[c].x) / static_cast<float>(setup.resolution);
+        tile[3][1] = static_cast<float>(setup.tileOrigin[c].y) / static_cast<float>(setup.resolution);
+        setup.worldToShadow[c] = tile * toTexture * setup.viewProjection[c];
+    }
+    return setup;
 }
 
 glm::vec4 lightShadowData(const Light& light, const Scene& scene) {

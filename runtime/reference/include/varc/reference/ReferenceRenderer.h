@@ -38,6 +38,7 @@ struct MaterialParams {
     // (multi_compile_fwdadd_fullshadows).
     bool castsShadows = false;
     bool receivesAddShadows = false;
+    bool receivesBaseShadows = false;  // the main directional light's (SHADOWS_SCREEN) in ForwardBase
 };
 // The parameters of |material| with each shader's Properties defaults. _MainTex may be "white",
 // "black" or a PNG file (loaded here). Unsupported for other shaders or texture names;

@@ -83,6 +83,9 @@ struct PassLight {
     // The light's shadow map when the pass samples one (SHADOWS_DEPTH), else null.
     const ShadowMapReference* shadowMap = nullptr;
     bool softShadows = false;                              // SHADOWS_SOFT
+    // A directional light's screen-space mask when the pass reads one (SHADOWS_SCREEN), per
+    // camera pixel, row-major; else null.
+    const std::vector<ShadowInterval>* screenMask = nullptr;
     std::optional<ShadowFade> shadowFade;  // set where the pass fades shadows (UNITY_LIGHT_ATTENUATION)
 };
 // The pass light for |light| (ForwardAdd or the ForwardBase main light). Its PNG cookie, if any,

@@ -43,6 +43,19 @@ public:
     // through Vulkan's cube face selection.
     static ShadowMapReference renderPoint(const scene::Scene& scene, const scene::Light& light,
                                           const std::vector<bool>& casts);
+    // The cascade atlas of directional light |light| (scene::directionalShadowSetup's cameras,
+    // each cascade in its tile).
+    static ShadowMapReference renderDirectional(const scene::Scene& scene,
+                                                const scene::Light& light,
+                                                const std::vector<bool>& casts);
+
+    // Directional lights: the screen-space shadow mask as the collector makes it (LIGHTING.md
+    // §6): per camera pixel, the world position of the nearest caster (the camera depth texture
+    // holds casters only; none: lit), its cascade (close fit by view depth, stable fit by split
+    // spheres, a near-tie taken both ways), then one tap (hard) or the 7 x 7 tent (soft).
+    // Row-major, camera.width x camera.height.
+    std::vector<ShadowInterval> screenMask(const scene::Scene& scene,
+                                           const std::vector<bool>& casts, bool soft) const;
 
     // The shadow term at world position |p|, then lerp(1 - strength, 1, lit). Spot: hard = one
     // tap at the shadow coordinate, soft = the mean of four taps at +-0.5 texel. Point: the
@@ -63,15 +76,24 @@ private:
     ShadowInterval tap(size_t face, const glm::vec2& uv, float z) const;
     // Bounds of one cube lookup in direction |r| against depth |z|.
     ShadowInterval cubeTap(const glm::vec3& r, float z) const;
-    // Rasterises the casters through |viewProjection| into face |face|.
+    // Rasterises the casters through |viewProjection| into face |face|, in the square of
+    // |tileSize| texels at |origin| (the whole face by default).
     void drawCasters(const scene::Scene& scene, const std::vector<bool>& casts,
                      const glm::mat4& viewProjection, const glm::vec4& bias, bool mirrored,
-                     size_t face);
+                     size_t face, glm::uvec2 origin = glm::uvec2(0), uint32_t tileSize = 0);
+
+    // The collector's shadow term at world position |p| (view depth |viewZ|).
+    ShadowInterval collect(const glm::vec3& p, float viewZ, bool soft) const;
+    // Bounds of the 7 x 7 tent at atlas texel position |position| (texels) against |z|.
+    ShadowInterval tent(const glm::vec2& position, float z) const;
 
     bool mCube = false;
+    bool mDirectional = false;
+    scene::DirectionalShadowSetup mCascades;  // directional
     scene::ShadowCamera mCamera;             // spot
     glm::vec4 mProjectionParams{0.0f};       // point: _LightProjectionParams
     glm::vec3 mLightPos{0.0f};
+    glm::vec4 mLightVector{0.0f};  // _WorldSpaceLightPos0: (position, 1) or (to the light, 0)
     float mStrength = 1.0f;
     uint32_t mSize = 0;
     std::vector<std::vector<float>> mFaces;  // one (spot) or six (point, +X -X +Y -Y +Z -Z)

@@ -91,6 +91,13 @@ struct Scene {
     glm::vec3 ambient{0.0f};  // linear flat ambient colour
     int pixelLightCount = 4;  // quality.pixel_light_count
     float shadowDistance = 50.0f;  // quality.shadow_distance: shadows fade out towards it
+    // Directional shadow cascades (quality.shadow_cascades 1, 2 or 4), the split distances as
+    // fractions of shadowDistance (quality.shadow_cascade_splits: 1, or 3 increasing values),
+    // and the fit (quality.shadow_projection "stable_fit": bounding spheres, Unity's default;
+    // "close_fit": bounding boxes).
+    int shadowCascades = 1;
+    glm::vec3 cascadeSplits{0.067f, 0.2f, 0.467f};
+    bool stableFit = true;
     std::vector<Object> objects;
     std::vector<Light> lights;
 };

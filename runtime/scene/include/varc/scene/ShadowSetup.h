@@ -48,6 +48,31 @@ struct PointShadowCamera {
 // shadowNormalBias / 20 metres only.
 PointShadowCamera pointShadowCamera(const Light& light);
 
+// A directional light's cascaded shadow map: `scene.shadowCascades` orthographic cameras along
+// the light, each covering one slice of the view frustum between the camera's near plane and the
+// shadow distance, drawn into one square atlas of `shadowResolution` texels (one cascade: all of
+// it; two or four: 2 x 2 tiles of half the size, cascade i at tile (i % 2, i / 2)).
+struct DirectionalShadowSetup {
+    int cascades = 1;
+    uint32_t resolution = 512;   // the atlas
+    uint32_t tileSize = 512;     // one cascade's square
+    std::array<glm::mat4, 4> viewProjection{};  // world -> Vulkan clip of each cascade camera
+    std::array<glm::mat4, 4> worldToShadow{};   // unity_WorldToShadow: world -> atlas (u, v, depth)
+    std::array<glm::uvec2, 4> tileOrigin{};     // texels
+    glm::vec4 splitsNear{0.0f}, splitsFar{0.0f};  // _LightSplitsNear/Far: view depths
+    std::array<glm::vec4, 4> splitSpheres{};      // unity_ShadowSplitSpheres: (centre, radius)
+    glm::vec4 splitSqRadii{0.0f};                 // unity_ShadowSplitSqRadii
+    glm::vec4 bias{0.0f};                         // unity_LightShadowBias for the casters
+    bool stableFit = true;
+};
+
+// Close fit: each camera is the light-space bounding box of its frustum slice. Stable fit: a
+// square around the slice's bounding sphere (centre = the mean of the slice's corners), moved in
+// whole texels so the map does not shimmer. Depth: from `shadowDistance` before the slice
+// towards the light (casters there throw shadows into it) to its far side. Bias as for spot
+// lights (x = shadowBias / 100 in clip z, z = shadowNormalBias / 20 metres).
+DirectionalShadowSetup directionalShadowSetup(const Scene& scene, const Light& light);
+
 // _LightShadowData = (1 - strength, 0, 5 / D, -4) with D = scene.shadowDistance: shadows fade
 // from 0.8 D to D of view depth (fade = saturate(depth z + w)).
 glm::vec4 lightShadowData(const Light& light, const Scene& scene);
