@@ -10,22 +10,43 @@
 #include "UnityShaderVariables.cginc"
 
 // ---------------------------------------------------------------------------------------------
+// Tent filters (soft shadows): a tent of half-width h and unit area centred on the shadow
+// coordinate; each shadow-map texel is weighted by the tent's area over it. 3 texels wide for spot
+// lights, 7 for the directional collector (what Unity's bilinear-compare taps add up to).
+// ---------------------------------------------------------------------------------------------
+inline float UnityShadowTentArea(float x, float h) {  // the tent's area left of x
+    float t = saturate((x + h) / h);
+    float u = saturate((h - x) / h);
+    return x <= 0.0 ? 0.5 * t * t : 1.0 - 0.5 * u * u;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Spot-light shadows: a depth map rendered with unity_WorldToShadow[0]; 1 = lit.
 // SHADOWS_SCREEN programs declare their own _ShadowMapTexture (AutoLight.cginc or the shader).
 // ---------------------------------------------------------------------------------------------
 #if defined(SHADOWS_DEPTH) && !defined(SHADOWS_SCREEN)
 UNITY_DECLARE_SHADOWMAP(_ShadowMapTexture);
 
-// shadowCoord = mul(unity_WorldToShadow[0], float4(worldPos, 1)). Hard: one depth comparison.
-// Soft: the mean of four comparisons at +-0.5 texel. Result lerp(1 - strength, 1, lit).
+// shadowCoord = mul(unity_WorldToShadow[0], float4(worldPos, 1)). Hard: one depth comparison at
+// the nearest texel. Soft: the 3-texel tent over the 4 x 4 texels around the coordinate.
+// Result lerp(1 - strength, 1, lit).
 inline fixed UnitySampleShadowmap(float4 shadowCoord) {
     float3 coord = shadowCoord.xyz / shadowCoord.w;
 #if defined(SHADOWS_SOFT)
-    float2 o = _ShadowMapTexture_TexelSize.xy * 0.5;
-    half lit = 0.25 * (UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(coord.xy + float2(-o.x, -o.y), coord.z))
-                     + UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(coord.xy + float2( o.x, -o.y), coord.z))
-                     + UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(coord.xy + float2(-o.x,  o.y), coord.z))
-                     + UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(coord.xy + float2( o.x,  o.y), coord.z)));
+    float2 position = coord.xy * _ShadowMapTexture_TexelSize.zw;
+    float2 centre = floor(position + 0.5);
+    float2 offset = position - centre;
+    half lit = 0.0;
+    for (int j = -2; j < 2; ++j) {
+        float wy = UnityShadowTentArea(j + 1 - offset.y, 1.5)
+                 - UnityShadowTentArea(j - offset.y, 1.5);
+        for (int i = -2; i < 2; ++i) {
+            float wx = UnityShadowTentArea(i + 1 - offset.x, 1.5)
+                     - UnityShadowTentArea(i - offset.x, 1.5);
+            float2 uv = (centre + float2(i, j) + 0.5) * _ShadowMapTexture_TexelSize.xy;
+            lit += wx * wy * UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(uv, coord.z));
+        }
+    }
 #else
     half lit = UNITY_SAMPLE_SHADOW(_ShadowMapTexture, coord);
 #endif

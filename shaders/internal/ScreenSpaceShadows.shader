@@ -20,6 +20,7 @@ Shader "Hidden/varc/ScreenSpaceShadows" {
             #pragma multi_compile_shadowcollector
             #pragma multi_compile _ SHADOWS_SOFT
             #include "UnityCG.cginc"
+            #include "UnityShadowLibrary.cginc"
 
             sampler2D_float _CameraDepthTexture;
             sampler2D_float _ShadowMapTexture;  // the cascade atlas, Vulkan depth
@@ -69,13 +70,6 @@ Shader "Hidden/varc/ScreenSpaceShadows" {
                 return depth <= tex2Dlod(_ShadowMapTexture, float4(uv, 0, 0)).r ? 1.0 : 0.0;
             }
 
-            // The area of a tent of half-width 3.5 and unit area left of x.
-            float tentArea(float x) {
-                float t = saturate((x + 3.5) / 3.5);
-                float u = saturate((3.5 - x) / 3.5);
-                return x <= 0.0 ? 0.5 * t * t : 1.0 - 0.5 * u * u;
-            }
-
             float litAt(float3 coord) {
                 float2 position = coord.xy * _ShadowMapTexture_TexelSize.zw;
             #if defined(SHADOWS_SOFT)
@@ -83,9 +77,11 @@ Shader "Hidden/varc/ScreenSpaceShadows" {
                 float2 offset = position - centre;      // in [-0.5, 0.5]
                 float lit = 0.0;
                 for (int j = -4; j < 4; ++j) {
-                    float wy = tentArea(j + 1 - offset.y) - tentArea(j - offset.y);
+                    float wy = UnityShadowTentArea(j + 1 - offset.y, 3.5)
+                             - UnityShadowTentArea(j - offset.y, 3.5);
                     for (int i = -4; i < 4; ++i) {
-                        float wx = tentArea(i + 1 - offset.x) - tentArea(i - offset.x);
+                        float wx = UnityShadowTentArea(i + 1 - offset.x, 3.5)
+                                 - UnityShadowTentArea(i - offset.x, 3.5);
                         lit += wx * wy * texelLit(centre + float2(i, j), coord.z);
                     }
                 }

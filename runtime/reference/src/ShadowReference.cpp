@@ -205,13 +205,7 @@ ShadowInterval ShadowMapReference::at(const glm::vec3& p, bool soft) const {
         const glm::vec4 s = mCamera.worldToShadow * glm::vec4(p, 1.0f);
         const glm::vec3 c = glm::vec3(s) / s.w;
         if (soft) {
-            const float half = 0.5f / static_cast<float>(mSize);
-            for (glm::vec2 offset : {glm::vec2(-half, -half), glm::vec2(half, -half),
-                                     glm::vec2(-half, half), glm::vec2(half, half)}) {
-                const ShadowInterval t = tap(0, glm::vec2(c) + offset, c.z);
-                lit.low += 0.25f * t.low;
-                lit.high += 0.25f * t.high;
-            }
+            lit = tent(glm::vec2(c) * static_cast<float>(mSize), c.z, 1.5f);
         } else {
             lit = tap(0, glm::vec2(c), c.z);
         }
@@ -222,10 +216,10 @@ ShadowInterval ShadowMapReference::at(const glm::vec3& p, bool soft) const {
 
 namespace {
 
-// Area left of |x| under a tent of half-width 3.5 and unit area (Unity's 7-texel tent).
-float tentArea(float x) {
-    const float t = std::clamp((x + 3.5f) / 3.5f, 0.0f, 1.0f);
-    const float u = std::clamp((3.5f - x) / 3.5f, 0.0f, 1.0f);
+// Area left of |x| under a tent of half-width |h| and unit area (Unity's 3- and 7-texel tents).
+float tentArea(float x, float h) {
+    const float t = std::clamp((x + h) / h, 0.0f, 1.0f);
+    const float u = std::clamp((h - x) / h, 0.0f, 1.0f);
     return x <= 0.0f ? 0.5f * t * t : 1.0f - 0.5f * u * u;
 }
 
@@ -235,16 +229,18 @@ constexpr float kSplitEpsilon = 1e-4f;
 
 }  // namespace
 
-ShadowInterval ShadowMapReference::tent(const glm::vec2& position, float z) const {
+ShadowInterval ShadowMapReference::tent(const glm::vec2& position, float z, float halfWidth) const {
     const glm::vec2 centre = glm::floor(position + 0.5f);
     const glm::vec2 offset = position - centre;
+    // The texels the tent can reach from a centre within half a texel: [-h - 0.5, h + 0.5].
+    const int reach = static_cast<int>(std::ceil(halfWidth + 0.5f));
     ShadowInterval lit{0.0f, 0.0f};
-    for (int j = -4; j < 4; ++j) {
-        const float wy = tentArea(static_cast<float>(j + 1) - offset.y) -
-                         tentArea(static_cast<float>(j) - offset.y);
-        for (int i = -4; i < 4; ++i) {
-            const float wx = tentArea(static_cast<float>(i + 1) - offset.x) -
-                             tentArea(static_cast<float>(i) - offset.x);
+    for (int j = -reach; j < reach; ++j) {
+        const float wy = tentArea(static_cast<float>(j + 1) - offset.y, halfWidth) -
+                         tentArea(static_cast<float>(j) - offset.y, halfWidth);
+        for (int i = -reach; i < reach; ++i) {
+            const float wx = tentArea(static_cast<float>(i + 1) - offset.x, halfWidth) -
+                             tentArea(static_cast<float>(i) - offset.x, halfWidth);
             const float w = wx * wy;
             if (w <= 0.0f) continue;
             // The texel's centre: a tap there is never near a texel boundary.
@@ -300,8 +296,9 @@ ShadowInterval ShadowMapReference::collect(const glm::vec3& p, float viewZ, bool
                 coord += weight * glm::vec3(s) / s.w;
             }
         }
-        const ShadowInterval t = soft ? tent(glm::vec2(coord) * static_cast<float>(mSize), coord.z)
-                                      : tap(0, glm::vec2(coord), coord.z);
+        const glm::vec2 texels = glm::vec2(coord) * static_cast<float>(mSize);
+        const ShadowInterval t =
+            soft ? tent(texels, coord.z, 3.5f) : tap(0, glm::vec2(coord), coord.z);
         lit.low = std::min(lit.low, t.low);
         lit.high = std::max(lit.high, t.high);
     }

@@ -84,8 +84,9 @@ private:
 
     // The collector's shadow term at world position |p| (view depth |viewZ|).
     ShadowInterval collect(const glm::vec3& p, float viewZ, bool soft) const;
-    // Bounds of the 7 x 7 tent at atlas texel position |position| (texels) against |z|.
-    ShadowInterval tent(const glm::vec2& position, float z) const;
+    // Bounds of the tent of half-width |halfWidth| texels (1.5: Unity's 3 x 3, 3.5: 7 x 7) at
+    // texel position |position| of face 0 against |z|.
+    ShadowInterval tent(const glm::vec2& position, float z, float halfWidth) const;
 
     bool mCube = false;
     bool mDirectional = false;
