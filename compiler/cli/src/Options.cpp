@@ -168,6 +168,8 @@ void addValidate(CLI::App& app, Options& options) {
     cmd->add_option("--pack", options.packPaths, "Pack files (repeat)")->required();
     cmd->add_option("--scenes", options.scenesDir, "Scene folder (default tests/scenes/forward)");
     cmd->add_option("--out", options.outputPath, "Folder for the PNGs (default validate-out)");
+    cmd->add_flag("--list-uncovered", options.list,
+                  "Also list each variant no matching scene drew");
     cmd->add_option("--pipeline-cache", options.pipelineCachePath,
                     "VkPipelineCache file to load and save");
     cmd->callback([&options] { options.command = Command::Validate; });

@@ -280,7 +280,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     }
     out << scenes.size() - static_cast<size_t>(failures) << "/" << scenes.size()
         << " scenes match the reference; PNGs in " << outDir << "\n";
-    printValidationCoverage(session->packs, options.packPaths, compared, out);
+    printValidationCoverage(session->packs, options.packPaths, compared, options.list, out);
     savePipelineCache(session->cache, err);
     // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.
     if (session->context->validationMessageCount() > 0) {

@@ -20,10 +20,12 @@ struct Tally {
 
 void printValidationCoverage(const std::vector<runtime::Pack>& packs,
                              const std::vector<std::string>& packPaths,
-                             const std::set<std::string>& compared, std::ostream& out) {
+                             const std::set<std::string>& compared, bool listUncovered,
+                             std::ostream& out) {
     for (size_t p = 0; p < packs.size(); ++p) {
         Tally all;
         std::map<std::string, Tally> byLightMode;  // "" = no LightMode tag
+        std::vector<std::string> uncovered;
         for (size_t s = 0; s < packs[p].shaderCount(); ++s) {
             const runtime::ShaderView shader = packs[p].shader(s);
             for (size_t i = 0; i < shader.passCount(); ++i) {
@@ -31,7 +33,9 @@ void printValidationCoverage(const std::vector<runtime::Pack>& packs,
                 if (!pass) continue;
                 Tally& mode = byLightMode[std::string(pass->lightMode())];
                 for (size_t v = 0; v < pass->variantCount(); ++v) {
-                    const bool seen = compared.count(pass->variant(v).describe()) > 0;
+                    const std::string name = pass->variant(v).describe();
+                    const bool seen = compared.count(name) > 0;
+                    if (!seen) uncovered.push_back(name);
                     ++all.total;
                     ++mode.total;
                     all.compared += seen;
@@ -48,6 +52,9 @@ void printValidationCoverage(const std::vector<runtime::Pack>& packs,
             separator = ", ";
         }
         out << ")\n";
+        if (listUncovered) {
+            for (const std::string& name : uncovered) out << "  not compared: " << name << "\n";
+        }
     }
 }
 

@@ -25,7 +25,7 @@ struct Options {
     std::string projectRoot;               // --project-root ("" = found from each shader)
     std::string builtinIncludeDir;         // --builtin-include-dir or VARC_BUILTIN_INCLUDE_DIR
     bool json = false;                     // --json
-    bool list = false;                     // --list
+    bool list = false;                     // --list (variants), --list-uncovered (validate)
     std::string lockPath;                  // lock: -o; check: --lock
     std::optional<GrowthLimit> maxGrowth;  // check --max-growth N|N%
     std::optional<uint64_t> budget;        // check --budget N
