@@ -63,7 +63,7 @@ gl_ModelViewProjectionMatrix|uniform mat4 varc_ModelViewProjectionMatrix;|vert f
 gl_ModelViewMatrix|uniform mat4 varc_ModelViewMatrix;|vert frag
 gl_ProjectionMatrix|uniform mat4 varc_ProjectionMatrix;|vert frag
 gl_NormalMatrix|uniform mat3 varc_NormalMatrix;|vert frag
-gl_LightModel|struct varc_LightModelParameters { vec4 ambient; };\nuniform varc_LightModelParameters varc_LightModel;|vert frag
+gl_LightModel|struct varc_LightModelParameters { vec4 ambient; };\nuniform vec4 varc_LightModelAmbient;\n#define varc_LightModel varc_LightModelParameters(varc_LightModelAmbient)|vert frag
 gl_FragColor|out vec4 varc_FragColor;|frag
 TABLE
     if [[ $stage == vert ]]; then echo "#define varying out"; else echo "#define varying in"; fi

@@ -33,9 +33,12 @@ constexpr LegacyBuiltin kBuiltins[] = {
     {"gl_NormalMatrix", "uniform mat3 varc_NormalMatrix;", kAllStages},
     {"gl_ModelViewMatrixInverseTranspose", "uniform mat4 varc_ModelViewMatrixInverseTranspose;",
      kAllStages},
+    // A plain vec4 uniform, wrapped in the struct the source reads (`gl_LightModel.ambient`):
+    // the runtime sets uniforms member by name, and a struct member would hide the vec4.
     {"gl_LightModel",
      "struct varc_LightModelParameters { vec4 ambient; };\n"
-     "uniform varc_LightModelParameters varc_LightModel;",
+     "uniform vec4 varc_LightModelAmbient;\n"
+     "#define varc_LightModel varc_LightModelParameters(varc_LightModelAmbient)",
      kAllStages},
     {"gl_FragColor", "out vec4 varc_FragColor;", stageBit(Stage::Fragment)},
 };

@@ -64,6 +64,7 @@ Result<reference::ReferenceImage> renderReferenceFor(const scene::Scene& scene) 
 struct SceneOutcome {
     bool ok = false;      // rendered and compared
     bool passed = false;  // comparison within tolerance
+    std::string noReference;  // why the scene has no reference model ("" when it has one)
     std::string error;    // why it could not render
     runtime::RenderedFrame frame;
     reference::CompareResult comparison;
@@ -71,9 +72,11 @@ struct SceneOutcome {
 };
 
 // Renders |scenePath| and, when |compare|, its reference; writes the PNGs that are asked for.
+// With |allowNoReference|, a scene whose materials name no reference model is rendered and
+// reported (SceneOutcome::noReference) instead of failing.
 SceneOutcome renderScene(runtime::Renderer& renderer, const std::string& scenePath, bool compare,
                          const std::string& renderPng, const std::string& referencePng,
-                         const std::string& diffPng) {
+                         const std::string& diffPng, bool allowNoReference = false) {
     SceneOutcome outcome;
     auto start = std::chrono::steady_clock::now();
     auto scene = scene::loadScene(scenePath);
@@ -99,6 +102,15 @@ SceneOutcome renderScene(runtime::Renderer& renderer, const std::string& scenePa
     outcome.ok = true;
     if (compare) {
         auto expected = renderReferenceFor(*scene);
+        if (!expected && expected.error().code == ErrorCode::NotFound && !allowNoReference) {
+            outcome.ok = false;
+            outcome.error = scenePath + ": reference: " + expected.error().detail;
+            return outcome;
+        }
+        if (!expected && expected.error().code == ErrorCode::NotFound) {
+            outcome.noReference = expected.error().detail;  // rendered, nothing to compare with
+            return outcome;
+        }
         if (!expected) {
             outcome.ok = false;
             outcome.error = scenePath + ": reference: " + expected.error().detail;
@@ -254,18 +266,28 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
                   "variants", "max LSB", "mean LSB", "time", "result");
     out << line;
     int failures = 0;
+    size_t unreferenced = 0;  // rendered, but no material names a reference model
     std::set<std::string> compared;  // variants drawn in scenes that matched the reference
     for (const std::string& scenePath : scenes) {
         std::string stem = std::filesystem::path(scenePath).stem().string();
         std::string base = (std::filesystem::path(outDir) / stem).string();
         SceneOutcome outcome = renderScene(*session->renderer, scenePath, true, base + ".png",
-                                           base + ".reference.png", base + ".diff.png");
+                                           base + ".reference.png", base + ".diff.png", true);
         if (!outcome.ok) {
             ++failures;
             std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", stem.c_str(), "-",
                           "-", "-", "-", "-", "ERROR");
             out << line;
             err << "varc: error: " << outcome.error << "\n";
+            continue;
+        }
+        if (!outcome.noReference.empty()) {
+            ++unreferenced;
+            std::snprintf(line, sizeof line, "%-28s %6u %9zu %9s %10s %6.2fs  %s\n", stem.c_str(),
+                          outcome.frame.draws, distinctCount(outcome.frame.variants), "-", "-",
+                          outcome.seconds, "no reference");
+            out << line;
+            err << stem << ": no reference: " << outcome.noReference << "\n";
             continue;
         }
         if (!outcome.passed) ++failures;
@@ -278,8 +300,10 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
         out << line;
         if (!outcome.passed) err << stem << ": " << outcome.comparison.message << "\n";
     }
-    out << scenes.size() - static_cast<size_t>(failures) << "/" << scenes.size()
-        << " scenes match the reference; PNGs in " << outDir << "\n";
+    out << scenes.size() - static_cast<size_t>(failures) - unreferenced << "/"
+        << scenes.size() - unreferenced << " scenes match the reference";
+    if (unreferenced) out << " (" << unreferenced << " more rendered with no reference model)";
+    out << "; PNGs in " << outDir << "\n";
     printValidationCoverage(session->packs, options.packPaths, compared, options.list, out);
     savePipelineCache(session->cache, err);
     // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.

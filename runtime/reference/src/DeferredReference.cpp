@@ -187,10 +187,9 @@ float srgb8RoundTrip(float linear) {
 }
 
 Result<GBufferMaterial> resolveGBufferMaterial(const scene::Material& material) {
-    if (material.shader != "varc/DeferredGBuffer") {
-        return makeError(
-            ErrorCode::Unsupported,
-            "the deferred CPU reference has no model of shader '" + material.shader + "'");
+    if (scene::referenceModelOf(material) != "varc-deferred-gbuffer") {
+        return makeError(ErrorCode::NotFound,
+                         "the deferred reference has no model for shader '" + material.shader + "'");
     }
     GBufferMaterial m;
     for (const auto& [name, value] : material.properties) {

@@ -36,6 +36,7 @@ Status readFloatProperty(const PropertyValue& value, const std::string& name, fl
 struct ObjectDraw {
     MaterialParams material;
     std::vector<glm::vec3> worldPos, worldNormal, vertexTerm;
+    glm::mat4 worldToObject{1.0f};
     const scene::Mesh* mesh = nullptr;
     bool vertexLightsOn = false;
     std::array<glm::vec4, 7> sh{};
@@ -48,6 +49,7 @@ struct Varyings {
     glm::vec3 p, normal, vertexTerm;
     glm::vec2 uv;  // uv0 (object mesh), before _MainTex_ST
     size_t pixel = 0;  // row-major index of the camera pixel (screen-space shadow masks)
+    glm::vec3 objectPos{0.0f}, objectNormal{0.0f};  // mesh position and normal, interpolated
 };
 
 // _MainTex at the fragment: the PNG filtered at TRANSFORM_TEX(uv, _MainTex), or the constant.
@@ -74,7 +76,54 @@ float shadowTerm(const PassLight& light, const Varyings& in, bool upper) {
     return upper ? shadow.high : shadow.low;
 }
 
-// One pass of one fragment: LIGHTING.md §8.1, §8.2, §8.5. |upper| picks the upper bound of
+// Seed 001's GLSL shader as written (LIGHTING.md §8.6): directional lights unattenuated, point
+// and spot lights (no cone) 1/d; Phong specular; the base pass adds the vertex lights and
+// gl_LightModel.ambient * _Color.
+glm::vec3 seed001Phong(const MaterialParams& m, const Varyings& in, const PassLight& light,
+                       const glm::vec3& n, const glm::vec3& cameraPos, const glm::vec3& ambient,
+                       bool base) {
+    const glm::vec3 v = glm::normalize(cameraPos - in.p);
+    float attenuation = 1.0f;
+    glm::vec3 l = glm::normalize(glm::vec3(light.worldSpaceLightPos));
+    if (light.worldSpaceLightPos.w != 0.0f) {
+        const glm::vec3 toLight = glm::vec3(light.worldSpaceLightPos) - in.p;
+        attenuation = 1.0f / glm::length(toLight);
+        l = glm::normalize(toLight);
+    }
+    const glm::vec3 color(m.color);
+    const glm::vec3 diffuse = attenuation * light.color * color * std::max(0.0f, glm::dot(n, l));
+    glm::vec3 specular(0.0f);
+    if (glm::dot(n, l) >= 0.0f) {
+        specular = attenuation * light.color * m.specColor *
+                   std::pow(std::max(0.0f, glm::dot(glm::reflect(-l, n), v)), m.shininess);
+    }
+    glm::vec3 c = diffuse + specular;
+    if (base) c += in.vertexTerm + ambient * color;
+    return c;
+}
+
+// Seed 004's BetterDiffuse as written (LIGHTING.md §8.6): the interpolated object-space normal
+// (not normalised) against the normalised object-space light vector, light and ambient doubled;
+// the base pass tints by _Color + the vertex lights and reads _MainTex without _MainTex_ST. The
+// add pass is the article's first fragment program, which still adds the ambient term (the text
+// says to leave it out; the code it prints does not): every add light adds it once more.
+glm::vec4 seed004Diffuse(const ObjectDraw& draw, const Varyings& in, const PassLight& light,
+                         const glm::vec3& ambient, bool base, const LightTextureSet& textures,
+                         bool upper) {
+    const MaterialParams& m = draw.material;
+    const glm::vec4 objectLight = draw.worldToObject * light.worldSpaceLightPos;
+    const glm::vec3 l = glm::normalize(glm::vec3(objectLight) - in.objectPos * objectLight.w);
+    const float diff = std::clamp(glm::dot(in.objectNormal, l), 0.0f, 1.0f);
+    const float atten = lightAttenuation(light, textures, in.p) * shadowTerm(light, in, upper);
+    glm::vec4 tex = base ? (m.mainTexture ? m.mainTexture->sample(in.uv) : m.mainTex)
+                         : mainTexAt(m, in);
+    tex *= base ? m.color + glm::vec4(in.vertexTerm, 1.0f) : m.color;
+    glm::vec3 c = ambient * 2.0f * glm::vec3(tex);
+    c += glm::vec3(tex) * light.color * diff * (atten * 2.0f);
+    return {c, tex.a};
+}
+
+// One pass of one fragment: LIGHTING.md §8.1, §8.2, §8.5, §8.6. |upper| picks the upper bound of
 // shadow terms that straddle a comparison.
 glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight& light, bool base,
                     const glm::vec3& cameraPos, const glm::vec3& ambient,
@@ -132,13 +181,41 @@ glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight&
             }
             return {c, 1.0f};
         }
+        case ShaderModel::Seed001Phong:
+            return {seed001Phong(m, in, light, n, cameraPos, ambient, base), 1.0f};
+        case ShaderModel::Seed004Diffuse:
+            return seed004Diffuse(draw, in, light, ambient, base, textures, upper);
     }
     return glm::vec4(0.0f);
 }
 
+// The seeds' vertex-light loop: sum over the four slots of
+// colour * max(0, n . l) / (1 + atten * d^2), with |n| as the shader computes it.
+glm::vec3 seedVertexLights(const VertexLights& lights, const glm::vec3& p, const glm::vec3& n) {
+    glm::vec3 sum(0.0f);
+    for (int i = 0; i < 4; ++i) {
+        const glm::vec3 toLight = glm::vec3(lights.posX[i], lights.posY[i], lights.posZ[i]) - p;
+        const float attenuation = 1.0f / (1.0f + lights.attenSq[i] * glm::dot(toLight, toLight));
+        sum += attenuation * lights.colors[static_cast<size_t>(i)] *
+               std::max(0.0f, glm::dot(n, glm::normalize(toLight)));
+    }
+    return sum;
+}
+
 // Per-vertex terms (interpolated by the GPU): vertex lights, and SimpleDiffuse's ambient.
+// |objectNormal| is the mesh's normal (seed 004 uses it unnormalised in world space).
 glm::vec3 vertexTerm(const ObjectDraw& draw, const VertexLights& lights, const glm::vec3& ambient,
-                     const glm::vec3& p, const glm::vec3& n, const ReferenceOptions& options) {
+                     const glm::vec3& p, const glm::vec3& n, const glm::vec3& objectNormal,
+                     const glm::mat4& objectToWorld, const ReferenceOptions& options) {
+    const glm::vec3 color(draw.material.color);
+    if (draw.material.model == ShaderModel::Seed001Phong) {
+        return draw.vertexLightsOn ? color * seedVertexLights(lights, p, n) : glm::vec3(0.0f);
+    }
+    if (draw.material.model == ShaderModel::Seed004Diffuse) {
+        const glm::vec3 worldN = glm::mat3(objectToWorld) * objectNormal;
+        return draw.vertexLightsOn ? 2.0f * color * seedVertexLights(lights, p, worldN)
+                                   : glm::vec3(0.0f);
+    }
     glm::vec3 term(0.0f);
     if (draw.material.model == ShaderModel::SimpleDiffuse) {
         term = options.lightProbeSh ? maxZero(scene::shadeSH9(draw.sh, n)) : ambient;
@@ -193,6 +270,7 @@ Result<ObjectDraw> prepareObject(const scene::Scene& scene, const scene::Object&
 
     draw.mesh = &scene::builtinMesh(object.mesh);
     const glm::mat4 objectToWorld = object.transform.localToWorld();
+    draw.worldToObject = glm::inverse(objectToWorld);
     // UnityObjectToWorldNormal: normalize(mul(n, (float3x3)unity_WorldToObject)).
     const glm::mat3 normalMatrix = glm::transpose(glm::mat3(glm::inverse(objectToWorld)));
     for (size_t i = 0; i < draw.mesh->positions.size(); ++i) {
@@ -200,7 +278,8 @@ Result<ObjectDraw> prepareObject(const scene::Scene& scene, const scene::Object&
         const glm::vec3 n = glm::normalize(normalMatrix * draw.mesh->normals[i]);
         draw.worldPos.push_back(p);
         draw.worldNormal.push_back(n);
-        draw.vertexTerm.push_back(vertexTerm(draw, vertexLights, scene.ambient, p, n, options));
+        draw.vertexTerm.push_back(vertexTerm(draw, vertexLights, scene.ambient, p, n,
+                                             draw.mesh->normals[i], objectToWorld, options));
     }
     return draw;
 }
@@ -226,23 +305,32 @@ glm::vec4 accumulate(const glm::vec4& base, const std::vector<glm::vec4>& adds, 
 Result<MaterialParams> resolveMaterial(const scene::Material& material) {
     MaterialParams p;
     std::string colorName = "_Color";
-    if (material.shader == "Custom/My First Lighting Shader") {
+    const std::string model = scene::referenceModelOf(material);
+    if (model == "seed000") {
         colorName = "_Tint";
         p.smoothness = 0.1f;
-    } else if (material.shader == "varc/Forward") {
+    } else if (model == "varc-forward") {
         p.model = ShaderModel::ForwardPbs;
         p.castsShadows = true;
         p.receivesAddShadows = true;
-    } else if (material.shader == "varc/SimpleDiffuse") {
+    } else if (model == "varc-simple-diffuse") {
         p.model = ShaderModel::SimpleDiffuse;
         p.castsShadows = true;
         p.receivesAddShadows = true;
         p.receivesBaseShadows = true;
-    } else if (material.shader == "varc/GlslVertexLights") {
+    } else if (model == "varc-glsl-vertex-lights") {
         p.model = ShaderModel::GlslBlinnPhong;
+    } else if (model == "seed001") {
+        p.model = ShaderModel::Seed001Phong;
+        p.shininess = 10.0f;
+    } else if (model == "seed004") {
+        p.model = ShaderModel::Seed004Diffuse;
+        p.castsShadows = true;         // Fallback "VertexLit"
+        p.receivesBaseShadows = true;  // multi_compile_fwdbase; its add pass has no shadow keywords
     } else {
-        return makeError(ErrorCode::Unsupported,
-                         "the CPU reference has no model of shader '" + material.shader + "'");
+        return makeError(ErrorCode::NotFound,
+                         "no reference model for shader '" + material.shader + "'" +
+                             (model.empty() ? std::string() : " (reference '" + model + "')"));
     }
     for (const auto& [name, value] : material.properties) {
         Status status = Ok{};
@@ -332,6 +420,8 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
                     in.normal += s.bary[k] * draw.worldNormal[v];
                     in.vertexTerm += s.bary[k] * draw.vertexTerm[v];
                     in.uv += s.bary[k] * draw.mesh->uvs[v];
+                    in.objectPos += s.bary[k] * draw.mesh->positions[v];
+                    in.objectNormal += s.bary[k] * draw.mesh->normals[v];
                 }
                 for (bool upper : {false, true}) {
                     if (upper && !anyShadowMap) break;

@@ -27,9 +27,9 @@ struct ObjectShading {
 };
 
 Result<glm::vec3> albedoOf(const scene::Material& material) {
-    if (material.shader != kShader) {
-        return makeError(ErrorCode::Unsupported,
-                         "the single-pass reference has no model of shader '" + material.shader +
+    if (scene::referenceModelOf(material) != "varc-single-pass-lit") {
+        return makeError(ErrorCode::NotFound,
+                         "the single-pass reference has no model for shader '" + material.shader +
                              "' (only " + kShader + ")");
     }
     auto it = material.properties.find("_Color");

@@ -33,7 +33,8 @@ ShaderValues cameraValues(const scene::Scene& scene, const scene::CameraMatrices
         values.set(name, glm::vec4(0.0f));
     glm::vec4 ambient(scene.ambient, 1.0f);
     for (const char* name : {"glstate_lightmodel_ambient", "unity_AmbientSky",
-                             "unity_AmbientEquator", "unity_AmbientGround", "varc_LightModel"}) {
+                             "unity_AmbientEquator", "unity_AmbientGround",
+                             "varc_LightModelAmbient"}) {
         values.set(name, ambient);
     }
     values.set("unity_IndirectSpecColor", glm::vec4(0.0f));

@@ -46,4 +46,18 @@ const char* toString(LightType type) {
     return "?";
 }
 
+std::string referenceModelOf(const Material& material) {
+    if (!material.reference.empty()) return material.reference;
+    static const std::map<std::string, std::string, std::less<>> kDefaults = {
+        {"Custom/My First Lighting Shader", "seed000"},
+        {"varc/Forward", "varc-forward"},
+        {"varc/SimpleDiffuse", "varc-simple-diffuse"},
+        {"varc/GlslVertexLights", "varc-glsl-vertex-lights"},
+        {"varc/DeferredGBuffer", "varc-deferred-gbuffer"},
+        {"varc/SinglePassLit", "varc-single-pass-lit"},
+    };
+    auto it = kDefaults.find(material.shader);
+    return it == kDefaults.end() ? std::string() : it->second;
+}
+
 }  // namespace varc::scene

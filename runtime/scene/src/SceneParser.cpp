@@ -251,9 +251,13 @@ bool readProperty(Reader& r, const json& value, const std::string& p, PropertyVa
 }
 
 bool readMaterial(Reader& r, const json& value, const std::string& p, Material& m) {
-    if (!r.onlyKeys(value, p, {"shader", "properties"})) return false;
+    if (!r.onlyKeys(value, p, {"shader", "properties", "reference"})) return false;
     if (value.contains("shader") && !r.readString(value["shader"], p + "/shader", m.shader))
         return false;
+    if (value.contains("reference") &&
+        !r.readString(value["reference"], p + "/reference", m.reference)) {
+        return false;
+    }
     if (!value.contains("properties")) return true;
     const json& props = value["properties"];
     if (!props.is_object()) return r.fail(p + "/properties", "expected an object");

@@ -135,11 +135,22 @@ TEST(ReferenceRenderer, HdrKeepsValuesAboveOne) {
     EXPECT_NEAR(image->color.pixelFloat(64, 64)[0], 2.0f * 1.12f, 2e-3f);
 }
 
+TEST(ReferenceRenderer, TheMaterialsReferenceFieldPicksTheModel) {
+    scene::Scene s = centredScene("Some/User Shader");
+    EXPECT_EQ(renderReference(s).error().code, ErrorCode::NotFound);
+    s.objects[0].material.reference = "varc-forward";
+    EXPECT_TRUE(renderReference(s).ok());
+    s.objects[0].material.reference = "no-such-model";
+    auto image = renderReference(s);
+    ASSERT_FALSE(image.ok());
+    EXPECT_NE(image.error().detail.find("reference 'no-such-model'"), std::string::npos);
+}
+
 TEST(ReferenceRenderer, RejectsWhatItCannotModel) {
     scene::Scene s = centredScene("Legacy Shaders/Diffuse");
     auto image = renderReference(s);
     ASSERT_FALSE(image.ok());
-    EXPECT_EQ(image.error().code, ErrorCode::Unsupported);
+    EXPECT_EQ(image.error().code, ErrorCode::NotFound) << "no model: rendered, not compared";
     EXPECT_EQ(image.error().detail.rfind("/objects/0: ", 0), 0u);
     s = centredScene("varc/Forward");
     s.camera.path = scene::RenderPath::Deferred;

@@ -22,6 +22,8 @@ enum class ShaderModel {
     ForwardPbs,      // "Custom/My First Lighting Shader" (_Tint) and "varc/Forward" (_Color)
     SimpleDiffuse,   // "varc/SimpleDiffuse"
     GlslBlinnPhong,  // "varc/GlslVertexLights"
+    Seed001Phong,    // seed 001 as written: per-pixel Phong, 1/d point lights, 4 vertex lights
+    Seed004Diffuse,  // seed 004 as written: object-space Lambert, ambient x2 and light x2
 };
 struct MaterialParams {
     ShaderModel model = ShaderModel::ForwardPbs;
@@ -40,9 +42,12 @@ struct MaterialParams {
     bool receivesAddShadows = false;
     bool receivesBaseShadows = false;  // the main directional light's (SHADOWS_SCREEN) in ForwardBase
 };
-// The parameters of |material| with each shader's Properties defaults. _MainTex may be "white",
-// "black" or a PNG file (loaded here). Unsupported for other shaders or texture names;
-// InvalidInput for a property of the wrong kind; IoError/InvalidInput for an unreadable PNG.
+// The parameters of |material| for its reference model (scene::referenceModelOf: "seed000",
+// "varc-forward", "varc-simple-diffuse", "varc-glsl-vertex-lights", "seed001", "seed004") with
+// that shader's Properties defaults. _MainTex may be "white", "black" or a PNG file (loaded
+// here). NotFound when the material names no model the forward reference knows (the scene can
+// still be rendered, without a comparison); Unsupported for other texture names; InvalidInput
+// for a property of the wrong kind; IoError/InvalidInput for an unreadable PNG.
 Result<MaterialParams> resolveMaterial(const scene::Material& material);
 
 struct ReferenceOptions {

@@ -53,7 +53,15 @@ using PropertyValue = std::variant<float, glm::vec4, std::string>;
 struct Material {
     std::string shader;                               // e.g. "Custom/My First Lighting Shader"
     std::map<std::string, PropertyValue> properties;  // "_Tint" -> vec4, "_Smoothness" -> 0.5
+    // The CPU reference's lighting model for this material ("reference" in the scene file), e.g.
+    // "seed004"; "" = the default for the shader (referenceModelOf).
+    std::string reference;
 };
+
+// The reference model a material selects: its own `reference`, else the default for varc's
+// library shaders and the seed-000 fixture ("varc/Forward" -> "varc-forward", ...), else "" (no
+// reference model: the scene renders without a comparison).
+std::string referenceModelOf(const Material& material);
 
 struct Object {
     std::string name;  // "" allowed
