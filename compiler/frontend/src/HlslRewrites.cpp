@@ -72,6 +72,7 @@ public:
         spellOutMatrixSwizzles();
         truncateWideHexLiterals();
         dropEmptyMemberDeclarations();
+        splitSelfInitializations();
         return apply(text);
     }
 
@@ -223,6 +224,48 @@ private:
                                 : (mDepth[i] == 0 && is(i - 1, ';'));
             if (empty) mReplacements.push_back({offsetOf(i), 1, " "});
         }
+    }
+
+    // `T o = f(o);` in a function body -> `T o; o = f(o);`: HLSL puts a local in scope in its
+    // own initializer (uninitialised, fxc warns), glslang does not. Only a declaration that
+    // starts a statement, of one identifier type and one declarator, whose initializer names the
+    // variable; `const` and `static` declarations (which need their initializer) are left alone.
+    void splitSelfInitializations() {
+        static const std::set<std::string_view> kNotType = {"return", "else", "do", "case",
+                                                             "const", "static", "goto"};
+        for (size_t i = 2; i + 1 < mTokens.size(); ++i) {
+            if (mDepth[i] == 0 || mInDeclarationBody[i] || !is(i + 1, '=') ||
+                (i + 2 < mTokens.size() && is(i + 2, '=') && adjacent(i + 1, i + 2))) {
+                continue;
+            }
+            if (mTokens[i].kind != TokenKind::Identifier ||
+                mTokens[i - 1].kind != TokenKind::Identifier ||
+                kNotType.count(mTokens[i - 1].text) ||
+                !(is(i - 2, ';') || is(i - 2, '{') || is(i - 2, '}'))) {
+                continue;
+            }
+            if (initializerNames(i + 2, mTokens[i].text)) {
+                std::string name(mTokens[i].text);
+                mReplacements.push_back({endOf(i), endOf(i + 1) - endOf(i), "; " + name + " ="});
+            }
+        }
+    }
+
+    // Whether the initializer starting at |begin| (up to its ';') uses |name|; false when it
+    // has a ',' outside brackets (a further declarator) or never ends.
+    bool initializerNames(size_t begin, std::string_view name) const {
+        bool named = false;
+        int depth = 0;
+        for (size_t j = begin; j < mTokens.size(); ++j) {
+            if (is(j, '(') || is(j, '[') || is(j, '{')) ++depth;
+            if (is(j, ')') || is(j, ']') || is(j, '}')) --depth;
+            if (depth < 0) return false;
+            if (depth == 0 && is(j, ',')) return false;
+            if (depth == 0 && is(j, ';')) return named;
+            named = named || (mTokens[j].kind == TokenKind::Identifier && mTokens[j].text == name &&
+                              !is(j - 1, '.'));
+        }
+        return false;
     }
 
     // `uint facing : SV_IsFrontFace` -> `bool facing : SV_IsFrontFace`: Vulkan's FrontFacing is a

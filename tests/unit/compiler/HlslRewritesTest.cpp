@@ -111,6 +111,18 @@ TEST(HlslRewrites, EmptyMemberDeclarationsAreDropped) {
               "float g;\n  \nfloat f() { ; return 0; }\n");
 }
 
+TEST(HlslRewrites, ALocalNamedInItsOwnInitializerIsDeclaredFirst) {
+    std::string text =
+        "V g(V o, float x);\nvoid f() {\n    V o = g(o, 1);\n    float4 c = c.x;\n}\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "V g(V o, float x);\nvoid f() {\n    V o; o = g(o, 1);\n    float4 c; c = c.x;\n}\n");
+    for (std::string kept : {"float a = b.a;", "const float a = a;", "float a = 1, b = a;",
+                             "float a = a, b = 1;", "for (float a = a; ;) {}", "float a == a;"}) {
+        std::string other = "void f() { " + kept + " }\n";
+        EXPECT_EQ(rewriteHlslForGlslang(other), other) << kept;
+    }
+}
+
 TEST(HlslRewrites, FrontFaceParametersBecomeBool) {
     EXPECT_EQ(fixFrontFaceParameterTypes(
                   "float4 f(uint facing : SV_IsFrontFace) : SV_Target { return facing; }"),

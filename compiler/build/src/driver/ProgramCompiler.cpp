@@ -41,7 +41,8 @@ bool needsHlslRewrite(const StageProgram& program, const std::string& log) {
             log.find("can't modify a uniform") != std::string::npos ||
             log.find("Missing functionality: matrix swizzle") != std::string::npos ||
             log.find("hexadecimal literal too big") != std::string::npos ||
-            log.find("'member type' : Expected") != std::string::npos);
+            log.find("'member type' : Expected") != std::string::npos ||
+            log.find("unknown variable") != std::string::npos);
 }
 
 }  // namespace

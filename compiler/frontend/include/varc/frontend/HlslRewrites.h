@@ -31,6 +31,8 @@ namespace varc::compiler {
 //    do: `0x1376312589U` -> `0x76312589U`.
 //  * Empty member declarations (a lone `;` in a struct or cbuffer, often a macro that expanded
 //    to nothing) are removed.
+//  * A local named in its own initializer, which HLSL puts in scope there (uninitialised):
+//    `Out o = f(o, p);` -> `Out o; o = f(o, p);` (one declarator, not const or static).
 //
 // No line is added or removed, so every `#line` mapping still holds. Returns |text| unchanged
 // when there is nothing to rewrite or the text cannot be tokenised.
