@@ -8,6 +8,7 @@
 
 #include "varc/build/GlslangFrontend.h"
 #include "varc/build/GlslangLogParser.h"
+#include "varc/build/SpirvMatrixMath.h"
 #include "varc/build/SpirvOptimizer.h"
 #include "varc/build/SpirvReflection.h"
 #include "varc/core/JoinWords.h"
@@ -108,6 +109,7 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
         if (!diagnostic.location.isKnown()) diagnostic.location = program.origin;
     }
     if (!compiled.ok) return result;
+    compiled.spirv = splitMatrixExtendedMath(compiled.spirv);
     SpirvResult optimized = optimizeSpirv(compiled.spirv, options.optimization);
     if (!optimized.ok) return fail("SPIR-V optimisation failed: " + optimized.message);
     if (auto invalid = validateSpirv(optimized.spirv)) {
