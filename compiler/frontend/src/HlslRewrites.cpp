@@ -73,6 +73,7 @@ public:
         truncateWideHexLiterals();
         dropEmptyMemberDeclarations();
         splitSelfInitializations();
+        hoistCbufferResources();
         return apply(text);
     }
 
@@ -224,6 +225,47 @@ private:
                                 : (mDepth[i] == 0 && is(i - 1, ';'));
             if (empty) mReplacements.push_back({offsetOf(i), 1, " "});
         }
+    }
+
+    // `cbuffer M { sampler2D _A; float4 _S; };` -> `sampler2D _A; cbuffer M { float4 _S; };`
+    // (the moved text blanked in the body, its line breaks kept): the DirectX compilers take a
+    // resource declared in a cbuffer as a global, glslang makes it a member, which Vulkan forbids.
+    void hoistCbufferResources() {
+        for (const auto& [open, close] : mCbufferBodies) {
+            size_t keyword = open;
+            while (keyword > 0 && !isWord(keyword, "cbuffer") && !isWord(keyword, "tbuffer")) {
+                --keyword;
+            }
+            std::string hoistedAll;
+            size_t begin = open + 1;
+            for (size_t i = open + 1; i < close; ++i) {
+                if (!is(i, ';') || mDepth[i] != 1) continue;
+                if (isResourceDeclaration(begin, i)) {
+                    std::string declaration =
+                        mTokenizer.code().substr(offsetOf(begin), endOf(i) - offsetOf(begin));
+                    std::string hoisted(declaration), blank(declaration);
+                    for (size_t c = 0; c < declaration.size(); ++c) {
+                        bool lineBreak = declaration[c] == '\n' || declaration[c] == '\r';
+                        if (lineBreak) hoisted[c] = ' ';
+                        if (!lineBreak) blank[c] = ' ';
+                    }
+                    hoistedAll += hoisted + " ";
+                    mReplacements.push_back({offsetOf(begin), declaration.size(), blank});
+                }
+                begin = i + 1;
+            }
+            if (!hoistedAll.empty()) mInsertions.push_back({offsetOf(keyword), hoistedAll});
+        }
+    }
+
+    // Whether the statement [begin, end) declares a texture, sampler or buffer.
+    bool isResourceDeclaration(size_t begin, size_t end) const {
+        size_t type = isWord(begin, "uniform") ? begin + 1 : begin;
+        if (type >= end || mTokens[type].kind != TokenKind::Identifier) return false;
+        std::string_view name = mTokens[type].text;
+        return name.rfind("sampler", 0) == 0 || name.rfind("Texture", 0) == 0 ||
+               name.rfind("SamplerState", 0) == 0 || name.rfind("SamplerComparisonState", 0) == 0 ||
+               name.find("Buffer") != std::string_view::npos;
     }
 
     // `T o = f(o);` in a function body -> `T o; o = f(o);`: HLSL puts a local in scope in its

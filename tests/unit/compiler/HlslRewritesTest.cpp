@@ -123,6 +123,16 @@ TEST(HlslRewrites, ALocalNamedInItsOwnInitializerIsDeclaredFirst) {
     }
 }
 
+TEST(HlslRewrites, ResourcesDeclaredInACbufferMoveBeforeIt) {
+    std::string text = "cbuffer M {\n  sampler2D _A;\n  float4 _A_ST;\n  Texture2D<float4>\n _B;\n"
+                       "  uniform SamplerState sampler_B; };\ncbuffer N { float _C; };\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "sampler2D _A; Texture2D<float4>  _B; uniform SamplerState sampler_B; cbuffer M {\n"
+              "               \n  float4 _A_ST;\n" + std::string(19, ' ') + "\n" +
+                  std::string(4, ' ') + "\n" + std::string(34, ' ') + "};\n"
+              "cbuffer N { float _C; };\n");
+}
+
 TEST(HlslRewrites, FrontFaceParametersBecomeBool) {
     EXPECT_EQ(fixFrontFaceParameterTypes(
                   "float4 f(uint facing : SV_IsFrontFace) : SV_Target { return facing; }"),

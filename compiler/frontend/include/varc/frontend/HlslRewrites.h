@@ -33,6 +33,9 @@ namespace varc::compiler {
 //    to nothing) are removed.
 //  * A local named in its own initializer, which HLSL puts in scope there (uninitialised):
 //    `Out o = f(o, p);` -> `Out o; o = f(o, p);` (one declarator, not const or static).
+//  * Textures, samplers and buffers declared in a file-scope cbuffer, which the DirectX
+//    compilers take as globals and glslang as members (invalid in Vulkan): each declaration
+//    moves to just before the `cbuffer` keyword, on that line, and is blanked where it was.
 //
 // No line is added or removed, so every `#line` mapping still holds. Returns |text| unchanged
 // when there is nothing to rewrite or the text cannot be tokenised.
