@@ -80,6 +80,7 @@ public:
     // Only the front-face parameters (see fixFrontFaceParameterTypes).
     std::string rewriteFrontFaceTypes(std::string_view text) {
         makeFrontFaceParametersBool();
+        replaceFaceParameters();
         return apply(text);
     }
 
@@ -321,6 +322,46 @@ private:
         }
     }
 
+    // `float4 f(v2f i, half facing : VFACE) : SV_Target { ... }` ->
+    // `float4 f(v2f i, bool facing_varcFrontFace : SV_IsFrontFace) : SV_Target { half facing =
+    // facing_varcFrontFace ? 1 : -1; ... }`: the Direct3D 9 face register is a float, positive
+    // on front faces and negative on back faces; glslang takes VFACE for an interpolator.
+    void replaceFaceParameters() {
+        for (size_t i = 3; i < mTokens.size(); ++i) {
+            if (!isWord(i, "VFACE") || !is(i - 1, ':')) continue;
+            size_t name = i - 2, type = i - 3;
+            if (mTokens[name].kind != TokenKind::Identifier ||
+                mTokens[type].kind != TokenKind::Identifier) {
+                continue;
+            }
+            std::string bound = std::string(mTokens[name].text) + "_varcFrontFace";
+            mReplacements.push_back({offsetOf(type), endOf(i) - offsetOf(type),
+                                     "bool " + bound + " : SV_IsFrontFace"});
+            size_t body = functionBodyAfterParameter(i);
+            if (body == std::string::npos) continue;
+            mInsertions.push_back({endOf(body), " " + std::string(mTokens[type].text) + " " +
+                                                    std::string(mTokens[name].text) + " = " +
+                                                    bound + " ? 1 : -1;"});
+        }
+    }
+
+    // The '{' opening the body of the function whose parameter list holds token |i|, or npos
+    // (a prototype, or not a parameter at all).
+    size_t functionBodyAfterParameter(size_t i) const {
+        int depth = 0;
+        size_t j = i;
+        for (; j < mTokens.size(); ++j) {
+            if (is(j, '(')) ++depth;
+            if (is(j, ')') && --depth < 0) break;
+            if (depth == 0 && (is(j, ';') || is(j, '{'))) return std::string::npos;
+        }
+        for (++j; j < mTokens.size(); ++j) {
+            if (is(j, '{')) return j;
+            if (is(j, ';') || is(j, '(') || is(j, '}')) return std::string::npos;
+        }
+        return std::string::npos;
+    }
+
     bool hasUnsignedCase(size_t begin, size_t end) const {
         for (size_t i = begin; i + 1 < end; ++i) {
             if (!isWord(i, "case") || mTokens[i + 1].kind != TokenKind::Number) continue;
@@ -495,7 +536,10 @@ std::string truncateWideHexLiterals(std::string_view text) {
 }
 
 std::string fixFrontFaceParameterTypes(std::string_view text) {
-    if (text.find("SV_IsFrontFace") == std::string_view::npos) return std::string(text);
+    if (text.find("SV_IsFrontFace") == std::string_view::npos &&
+        text.find("VFACE") == std::string_view::npos) {
+        return std::string(text);
+    }
     pruner::ShaderTokenizer tokenizer;
     if (!tokenizer.tokenize(text)) return std::string(text);
     return Rewriter(tokenizer).rewriteFrontFaceTypes(text);

@@ -137,8 +137,16 @@ TEST(HlslRewrites, FrontFaceParametersBecomeBool) {
     EXPECT_EQ(fixFrontFaceParameterTypes(
                   "float4 f(uint facing : SV_IsFrontFace) : SV_Target { return facing; }"),
               "float4 f(bool facing : SV_IsFrontFace) : SV_Target { return facing; }");
-    std::string untouched = "float4 f(bool b : SV_IsFrontFace, float v : VFACE) : SV_Target;";
+    std::string untouched = "float4 f(bool b : SV_IsFrontFace) : SV_Target;";
     EXPECT_EQ(fixFrontFaceParameterTypes(untouched), untouched);
+}
+
+TEST(HlslRewrites, FaceParametersBecomeASignFromTheFrontFaceBuiltIn) {
+    EXPECT_EQ(fixFrontFaceParameterTypes("float4 f(V i, half s : VFACE) : SV_Target\n{\n"
+                                         "    return s * i.c;\n}\nfloat4 g(float t : VFACE);"),
+              "float4 f(V i, bool s_varcFrontFace : SV_IsFrontFace) : SV_Target\n{ half s = "
+              "s_varcFrontFace ? 1 : -1;\n    return s * i.c;\n}\n"
+              "float4 g(bool t_varcFrontFace : SV_IsFrontFace);");
 }
 
 TEST(HlslRewrites, NoLineIsAddedOrRemoved) {

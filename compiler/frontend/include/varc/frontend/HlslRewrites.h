@@ -51,8 +51,11 @@ std::string truncateWideHexLiterals(std::string_view text);
 
 // |text| with every `T name : SV_IsFrontFace` parameter of a type other than bool declared bool
 // (`uint facing : SV_IsFrontFace`, accepted by the DirectX compilers): Vulkan's FrontFacing
-// built-in is a bool and glslang would emit invalid SPIR-V. Text without SV_IsFrontFace is
-// returned unchanged.
+// built-in is a bool and glslang would emit invalid SPIR-V. A Direct3D 9 face parameter
+// `half facing : VFACE` (a float: positive on front faces, negative on back faces, which glslang
+// would take for an interpolator) becomes `bool facing_varcFrontFace : SV_IsFrontFace`, and the
+// function body starts with `half facing = facing_varcFrontFace ? 1 : -1;` on the same line.
+// Text without SV_IsFrontFace or VFACE is returned unchanged.
 std::string fixFrontFaceParameterTypes(std::string_view text);
 
 }  // namespace varc::compiler
