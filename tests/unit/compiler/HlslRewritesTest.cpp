@@ -133,6 +133,19 @@ TEST(HlslRewrites, ResourcesDeclaredInACbufferMoveBeforeIt) {
               "cbuffer N { float _C; };\n");
 }
 
+TEST(HlslRewrites, ArgumentsOfAnUnmatchedCallAreCastToTheParameterTypes) {
+    std::string text = "float3x3 R(const float a, in float3 axis, out float s, S t) { s = a; }\n"
+                       "float3x3 f(float4 v, S t) { float s; return R(v.xy * 2, v, s, t); }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text, {"R"}),
+              "float3x3 R(const float a, in float3 axis, out float s, S t) { s = a; }\n"
+              "float3x3 f(float4 v, S t) { float s; return R((float)(v.xy * 2), (float3)(v), s, "
+              "t); }\n");
+    EXPECT_EQ(rewriteHlslForGlslang(text), text);  // only the functions glslang named
+    std::string overloaded = "float g(float a) { return a; }\nfloat g(float2 a) { return a.x; }\n"
+                             "float f(float4 v) { return g(v); }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(overloaded, {"g"}), overloaded);
+}
+
 TEST(HlslRewrites, FrontFaceParametersBecomeBool) {
     EXPECT_EQ(fixFrontFaceParameterTypes(
                   "float4 f(uint facing : SV_IsFrontFace) : SV_Target { return facing; }"),

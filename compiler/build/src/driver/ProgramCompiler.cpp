@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "driver/ProgramCompiler.h"
 
+#include <algorithm>
 #include <cctype>
 #include <ctime>
 #include <optional>
@@ -69,7 +70,23 @@ bool needsHlslRewrite(const StageProgram& program, const Attempt& attempt) {
             log.find("Missing functionality: matrix swizzle") != std::string::npos ||
             log.find("hexadecimal literal too big") != std::string::npos ||
             log.find("'member type' : Expected") != std::string::npos ||
-            log.find("unknown variable") != std::string::npos);
+            log.find("unknown variable") != std::string::npos ||
+            log.find("no matching overloaded function found") != std::string::npos);
+}
+
+// The functions glslang found no overload for: "ERROR: 3:85: 'Linear01Depth' : no matching
+// overloaded function found" -> {"Linear01Depth"}.
+std::vector<std::string> unmatchedCalls(const std::string& log) {
+    static constexpr std::string_view kMessage = "' : no matching overloaded function found";
+    std::vector<std::string> names;
+    for (size_t at = log.find(kMessage); at != std::string::npos;
+         at = log.find(kMessage, at + 1)) {
+        size_t open = log.rfind('\'', at - 1);
+        if (open == std::string::npos) continue;
+        std::string name = log.substr(open + 1, at - open - 1);
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    return names;
 }
 
 }  // namespace
@@ -118,7 +135,8 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
                            : fixFrontFaceParameterTypes(program.text);
     Attempt attempt = compileAndValidate(program, text, options.optimization);
     if (needsHlslRewrite(program, attempt)) {
-        std::string rewritten = rewriteHlslForGlslang(text);
+        std::string rewritten =
+            rewriteHlslForGlslang(text, unmatchedCalls(attempt.compiled.log));
         // Either way the rewritten program's outcome is the one to report: its errors are the
         // ones left once the constructs Unity accepts are accepted.
         if (rewritten != text) {

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace varc::compiler {
 
@@ -36,13 +37,18 @@ namespace varc::compiler {
 //  * Textures, samplers and buffers declared in a file-scope cbuffer, which the DirectX
 //    compilers take as globals and glslang as members (invalid in Vulkan): each declaration
 //    moves to just before the `cbuffer` keyword, on that line, and is blanked where it was.
+//  * Calls of the functions named in |unmatchedCalls| (those glslang found no overload for):
+//    each argument is cast to its parameter's numeric type, `Linear01Depth(tex2D(t, uv))` ->
+//    `Linear01Depth((float)(tex2D(t, uv)))`, the implicit truncation the DirectX compilers
+//    apply. Functions with overloads, and out/inout, struct and resource parameters, are left.
 //
 // No line is added or removed, so every `#line` mapping still holds. Returns |text| unchanged
 // when there is nothing to rewrite or the text cannot be tokenised.
 // Example: "float _T;\nfloat4 f() : SV_Target { _T *= 2; switch (_T) { default: break; }
 // return _T; }" -> "float _T; static float _T_varcCopy = _T;\nfloat4 f() : SV_Target {
 // _T_varcCopy *= 2; switch ((int)(_T_varcCopy)) { default: break; } return _T_varcCopy; }".
-std::string rewriteHlslForGlslang(std::string_view text);
+std::string rewriteHlslForGlslang(std::string_view text,
+                                  const std::vector<std::string>& unmatchedCalls = {});
 
 // |text| with each hexadecimal literal wider than 32 bits cut to its low 32 bits, anywhere
 // (directives and comments included): for text before preprocessing, where glslang's
