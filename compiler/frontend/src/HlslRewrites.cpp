@@ -340,7 +340,8 @@ private:
 
     // "float", "half3", "int2x2", ... (scalar, vector and matrix types of the numeric bases).
     static bool isNumericType(std::string_view name) {
-        for (std::string_view base : {"float", "half", "int", "uint", "bool", "double", "min16float"}) {
+        for (std::string_view base :
+             {"float", "half", "int", "uint", "bool", "double", "min16float"}) {
             if (name.rfind(base, 0) != 0) continue;
             std::string_view shape = name.substr(base.size());
             bool vector = shape.size() == 1 && shape[0] >= '1' && shape[0] <= '4';
