@@ -472,6 +472,27 @@ inline float2 UnityStereoClamp(float2 uv) { return uv; }
 #define TRANSFORM_TEX_STEREO(tex, name) TRANSFORM_TEX(tex, name)
 #define UNITY_DECLARE_SCREENSPACE_SHADOWMAP_STEREO(tex) UNITY_DECLARE_SCREENSPACE_SHADOWMAP(tex)
 
+// ---------------------------------------------------------------------------------------------
+// LOD cross-fade (LOD_FADE_CROSSFADE): the two LOD levels in transition share the screen through
+// a 4x4 ordered dither at the pixel position |vpos|. unity_LODFade.x = f in (0, 1] keeps that
+// share of each 4x4 tile; -f keeps exactly the other pixels (the level fading out).
+// ---------------------------------------------------------------------------------------------
+#ifdef LOD_FADE_CROSSFADE
+// Thresholds of the 4x4 Bayer matrix, (rank + 0.5) / 16, row by row.
+static const float kUnityCrossFadeDither[16] = {
+    0.03125, 0.53125, 0.15625, 0.65625, 0.78125, 0.28125, 0.90625, 0.40625,
+    0.21875, 0.71875, 0.09375, 0.59375, 0.96875, 0.46875, 0.84375, 0.34375};
+void UnityApplyDitherCrossFade(float2 vpos) {
+    uint2 cell = uint2(vpos) & 3u;
+    float threshold = kUnityCrossFadeDither[cell.y * 4u + cell.x];
+    float fade = unity_LODFade.x;
+    clip(fade >= 0 ? fade - threshold : threshold + fade);
+}
+#define UNITY_APPLY_DITHER_CROSSFADE(vpos) UnityApplyDitherCrossFade((vpos).xy)
+#else
+#define UNITY_APPLY_DITHER_CROSSFADE(vpos)
+#endif
+
 // Set when V2F_SHADOW_CASTER_NOPOS declares nothing: always, with depth cube maps.
 #define V2F_SHADOW_CASTER_NOPOS_IS_EMPTY
 #define SHADOWS_CUBE_IN_DEPTH_TEX

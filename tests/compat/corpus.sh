@@ -128,6 +128,32 @@ pass whose \`#pragma only_renderers\` or \`exclude_renderers\` leaves Vulkan out
 as in Unity, and the table says so). The $surfaces surface shaders in \`surface/\`
 (\`#pragma surface\`) are each refused at that pragma: surface shaders are not supported.
 
+## Why the remaining files are refused
+
+Each refusal below is either a limit of varc named here or a fault in the shader that Microsoft's
+fxc (which Unity uses for Direct3D) rejects as well.
+
+* **Too many variants** (\`--max-variants\`): a full Standard-style pass of over a million
+  variants is refused before enumeration; build it with a higher limit or strip keywords.
+* **DX11-style separate textures and samplers used directly** (\`sampler_MainTex\`,
+  \`Texture2D\` parameters): varc's CG library declares every \`UNITY_DECLARE_TEX2D\` texture as a
+  combined image sampler (docs/SHADER_ABI.md §1), so the \`sampler_<name>\` object Unity declares
+  beside it on Direct3D 11 does not exist. Shaders that only use the \`UNITY_SAMPLE_TEX2D*\`
+  macros build.
+* **\`float\` then \`float3\` in a cbuffer** (HLSL packs the \`float3\` at offset 4): valid only
+  with relaxed block layout (Vulkan 1.1, VK_KHR_relaxed_block_layout); varc validates for
+  Vulkan 1.0 and refuses the program (\`must follow standard uniform buffer layout rules\`).
+* **Point-light shadow casters without \`V2F_SHADOW_CASTER\`** (\`no such field in structure
+  'vec'\` in a \`SHADOWS_CUBE\` variant): varc's point-light shadows are distance cube maps
+  (SHADER_ABI.md §6), so \`SHADOW_CASTER_FRAGMENT\` reads the \`vec\` member the caster macros
+  declare; Unity's depth cube maps on Vulkan do not need it.
+* **Faults in the shader**: a variable declared twice in one scope when two keywords are on
+  together (\`redefinition\`); \`TRANSFER_SHADOW\` in a struct without the \`pos\` member it
+  writes (\`SHADOWS_SCREEN\`); \`tex2D\` on the cube cookie \`_LightTexture0\` of a
+  \`POINT_COOKIE\` variant (\`Expected Coordinate to have at least 3 components\`); a fragment
+  program reading inputs its vertex program never writes, whose \`SHADOWS_CUBE\` variant also
+  names an undeclared \`i\`.
+
 | file | passes | variants | result |
 |---|---:|---:|---|
 EOF

@@ -64,6 +64,32 @@ std::string passMacro(std::string_view lightMode) {
     return "";
 }
 
+// The GLSL extension macros glslang's preprocessor predefines for HLSL programs too (measured
+// with glslang 12.0: `#ifdef` on each). The DirectX compilers define none of them, and code
+// written for both languages (FXAA 3.11 tests GL_ARB_gpu_shader5) takes its GLSL paths when it
+// sees one.
+constexpr const char* kGlslangPredefinedExtensions[] = {"GL_ARB_gpu_shader5",
+                                                        "GL_FRAGMENT_PRECISION_HIGH",
+                                                        "GL_core_profile",
+                                                        "GL_ARB_texture_rectangle",
+                                                        "GL_ARB_shading_language_420pack",
+                                                        "GL_ARB_texture_gather",
+                                                        "GL_ARB_shader_texture_lod",
+                                                        "GL_ARB_derivative_control",
+                                                        "GL_ARB_separate_shader_objects",
+                                                        "GL_ARB_gpu_shader_fp64",
+                                                        "GL_ARB_shader_image_load_store",
+                                                        "GL_ARB_compute_shader",
+                                                        "GL_ARB_sparse_texture2",
+                                                        "GL_AMD_gpu_shader_half_float",
+                                                        "GL_GOOGLE_include_directive",
+                                                        "GL_EXT_shader_16bit_storage",
+                                                        "GL_KHR_shader_subgroup_basic",
+                                                        "GL_EXT_nonuniform_qualifier",
+                                                        "GL_ARB_shader_draw_parameters",
+                                                        "GL_ARB_viewport_array",
+                                                        "GL_ARB_shader_bit_encoding"};
+
 std::string makePreamble(const DefineContext& context) {
     std::string text;
     auto define = [&text](const std::string& name, const std::string& value) {
@@ -83,6 +109,9 @@ std::string makePreamble(const DefineContext& context) {
         // glslang parses this HLSL intrinsic and then crashes generating SPIR-V for it; varc's
         // runtime renders with one sample per pixel (docs/SHADER_ABI.md).
         define("GetRenderTargetSampleCount()", "(1u)");
+        for (const char* name : kGlslangPredefinedExtensions) {
+            text += std::string("#undef ") + name + "\n";
+        }
     }
     for (const std::string& keyword : context.keywords) define(keyword, "1");
     return text;

@@ -65,19 +65,23 @@ public:
     explicit Rewriter(const pruner::ShaderTokenizer& tokens)
         : mTokenizer(tokens), mTokens(tokens.tokens()) {}
 
-    std::string rewrite(std::string_view text) {
+    std::string rewrite(std::string_view text, const std::vector<std::string>& unmatchedCalls) {
         markDeclarationBodies();
+        for (const std::string& function : unmatchedCalls) castCallArguments(function);
         castSwitchConditions();
         copyWrittenUniforms();
         spellOutMatrixSwizzles();
         truncateWideHexLiterals();
         dropEmptyMemberDeclarations();
+        splitSelfInitializations();
+        hoistCbufferResources();
         return apply(text);
     }
 
     // Only the front-face parameters (see fixFrontFaceParameterTypes).
     std::string rewriteFrontFaceTypes(std::string_view text) {
         makeFrontFaceParametersBool();
+        replaceFaceParameters();
         return apply(text);
     }
 
@@ -225,6 +229,171 @@ private:
         }
     }
 
+    // `cbuffer M { sampler2D _A; float4 _S; };` -> `sampler2D _A; cbuffer M { float4 _S; };`
+    // (the moved text blanked in the body, its line breaks kept): the DirectX compilers take a
+    // resource declared in a cbuffer as a global, glslang makes it a member, which Vulkan forbids.
+    void hoistCbufferResources() {
+        for (const auto& [open, close] : mCbufferBodies) {
+            size_t keyword = open;
+            while (keyword > 0 && !isWord(keyword, "cbuffer") && !isWord(keyword, "tbuffer")) {
+                --keyword;
+            }
+            std::string hoistedAll;
+            size_t begin = open + 1;
+            for (size_t i = open + 1; i < close; ++i) {
+                if (!is(i, ';') || mDepth[i] != 1) continue;
+                if (isResourceDeclaration(begin, i)) {
+                    std::string declaration =
+                        mTokenizer.code().substr(offsetOf(begin), endOf(i) - offsetOf(begin));
+                    std::string hoisted(declaration), blank(declaration);
+                    for (size_t c = 0; c < declaration.size(); ++c) {
+                        bool lineBreak = declaration[c] == '\n' || declaration[c] == '\r';
+                        if (lineBreak) hoisted[c] = ' ';
+                        if (!lineBreak) blank[c] = ' ';
+                    }
+                    hoistedAll += hoisted + " ";
+                    mReplacements.push_back({offsetOf(begin), declaration.size(), blank});
+                }
+                begin = i + 1;
+            }
+            if (!hoistedAll.empty()) mInsertions.push_back({offsetOf(keyword), hoistedAll});
+        }
+    }
+
+    // Whether the statement [begin, end) declares a texture, sampler or buffer.
+    bool isResourceDeclaration(size_t begin, size_t end) const {
+        size_t type = isWord(begin, "uniform") ? begin + 1 : begin;
+        if (type >= end || mTokens[type].kind != TokenKind::Identifier) return false;
+        std::string_view name = mTokens[type].text;
+        return name.rfind("sampler", 0) == 0 || name.rfind("Texture", 0) == 0 ||
+               name.rfind("SamplerState", 0) == 0 || name.rfind("SamplerComparisonState", 0) == 0 ||
+               name.find("Buffer") != std::string_view::npos;
+    }
+
+    // Calls of |function| get each argument cast to its parameter's type: `f(v)` with
+    // `float f(float z)` -> `f((float)(v))`, the implicit truncation (float4 -> float) the DirectX
+    // compilers apply with a warning and glslang refuses. Only for a function of one signature,
+    // and only parameters of a numeric type that are not `out` or `inout`.
+    void castCallArguments(std::string_view function) {
+        std::optional<std::vector<std::string>> casts;
+        for (size_t i = 1; i + 1 < mTokens.size(); ++i) {
+            if (!isWord(i, function) || !is(i + 1, '(') || mDepth[i] != 0 ||
+                mTokens[i - 1].kind != TokenKind::Identifier) {
+                continue;
+            }
+            std::vector<std::string> these = parameterCasts(i + 1);
+            if (casts && *casts != these) return;  // overloads: leave every call alone
+            casts = std::move(these);
+        }
+        if (!casts) return;
+        for (size_t i = 1; i + 1 < mTokens.size(); ++i) {
+            if (!isWord(i, function) || !is(i + 1, '(') || mDepth[i] == 0 || is(i - 1, '.')) {
+                continue;
+            }
+            std::vector<std::pair<size_t, size_t>> arguments = argumentsOf(i + 1);
+            if (arguments.size() != casts->size()) continue;
+            for (size_t a = 0; a < arguments.size(); ++a) {
+                if ((*casts)[a].empty()) continue;
+                mInsertions.push_back({offsetOf(arguments[a].first), "(" + (*casts)[a] + ")("});
+                mInsertions.push_back({endOf(arguments[a].second), ")"});
+            }
+        }
+    }
+
+    // The first and last token of each argument in the parentheses opened at |open|.
+    std::vector<std::pair<size_t, size_t>> argumentsOf(size_t open) const {
+        std::vector<std::pair<size_t, size_t>> arguments;
+        size_t close = matching(open);
+        if (close == std::string::npos || close == open + 1) return arguments;
+        size_t begin = open + 1;
+        int depth = 0;
+        for (size_t j = open + 1; j <= close; ++j) {
+            if (is(j, '(') || is(j, '[') || is(j, '{')) ++depth;
+            if (is(j, ')') || is(j, ']') || is(j, '}')) --depth;
+            if ((depth == 0 && is(j, ',')) || j == close) {
+                if (j == begin) return {};
+                arguments.emplace_back(begin, j - 1);
+                begin = j + 1;
+            }
+        }
+        return arguments;
+    }
+
+    // Per parameter of the declaration whose list opens at |open|: the numeric type to cast an
+    // argument to, or "" (out/inout, structs, resources, anything unusual).
+    std::vector<std::string> parameterCasts(size_t open) const {
+        std::vector<std::string> casts;
+        for (const auto& [first, last] : argumentsOf(open)) {
+            size_t type = first;
+            while (type < last && (isWord(type, "in") || isWord(type, "const") ||
+                                   isWord(type, "uniform") || isWord(type, "precise"))) {
+                ++type;
+            }
+            bool byValue = !isWord(type, "out") && !isWord(type, "inout");
+            bool named = type + 1 <= last && mTokens[type + 1].kind == TokenKind::Identifier;
+            casts.push_back(byValue && named && isNumericType(mTokens[type].text)
+                                ? std::string(mTokens[type].text)
+                                : "");
+        }
+        return casts;
+    }
+
+    // "float", "half3", "int2x2", ... (scalar, vector and matrix types of the numeric bases).
+    static bool isNumericType(std::string_view name) {
+        for (std::string_view base :
+             {"float", "half", "int", "uint", "bool", "double", "min16float"}) {
+            if (name.rfind(base, 0) != 0) continue;
+            std::string_view shape = name.substr(base.size());
+            bool vector = shape.size() == 1 && shape[0] >= '1' && shape[0] <= '4';
+            bool matrix = shape.size() == 3 && shape[0] >= '1' && shape[0] <= '4' &&
+                          shape[1] == 'x' && shape[2] >= '1' && shape[2] <= '4';
+            if (shape.empty() || vector || matrix) return true;
+        }
+        return false;
+    }
+
+    // `T o = f(o);` in a function body -> `T o; o = f(o);`: HLSL puts a local in scope in its
+    // own initializer (uninitialised, fxc warns), glslang does not. Only a declaration that
+    // starts a statement, of one identifier type and one declarator, whose initializer names the
+    // variable; `const` and `static` declarations (which need their initializer) are left alone.
+    void splitSelfInitializations() {
+        static const std::set<std::string_view> kNotType = {"return", "else", "do", "case",
+                                                             "const", "static", "goto"};
+        for (size_t i = 2; i + 1 < mTokens.size(); ++i) {
+            if (mDepth[i] == 0 || mInDeclarationBody[i] || !is(i + 1, '=') ||
+                (i + 2 < mTokens.size() && is(i + 2, '=') && adjacent(i + 1, i + 2))) {
+                continue;
+            }
+            if (mTokens[i].kind != TokenKind::Identifier ||
+                mTokens[i - 1].kind != TokenKind::Identifier ||
+                kNotType.count(mTokens[i - 1].text) ||
+                !(is(i - 2, ';') || is(i - 2, '{') || is(i - 2, '}'))) {
+                continue;
+            }
+            if (initializerNames(i + 2, mTokens[i].text)) {
+                std::string name(mTokens[i].text);
+                mReplacements.push_back({endOf(i), endOf(i + 1) - endOf(i), "; " + name + " ="});
+            }
+        }
+    }
+
+    // Whether the initializer starting at |begin| (up to its ';') uses |name|; false when it
+    // has a ',' outside brackets (a further declarator) or never ends.
+    bool initializerNames(size_t begin, std::string_view name) const {
+        bool named = false;
+        int depth = 0;
+        for (size_t j = begin; j < mTokens.size(); ++j) {
+            if (is(j, '(') || is(j, '[') || is(j, '{')) ++depth;
+            if (is(j, ')') || is(j, ']') || is(j, '}')) --depth;
+            if (depth < 0) return false;
+            if (depth == 0 && is(j, ',')) return false;
+            if (depth == 0 && is(j, ';')) return named;
+            named = named || (mTokens[j].kind == TokenKind::Identifier && mTokens[j].text == name &&
+                              !is(j - 1, '.'));
+        }
+        return false;
+    }
+
     // `uint facing : SV_IsFrontFace` -> `bool facing : SV_IsFrontFace`: Vulkan's FrontFacing is a
     // bool, and glslang passes any other type through into invalid SPIR-V.
     void makeFrontFaceParametersBool() {
@@ -234,6 +403,46 @@ private:
             if (mTokens[type].kind != TokenKind::Identifier || mTokens[type].text == "bool") continue;
             mReplacements.push_back({offsetOf(type), mTokens[type].text.size(), "bool"});
         }
+    }
+
+    // `float4 f(v2f i, half facing : VFACE) : SV_Target { ... }` ->
+    // `float4 f(v2f i, bool facing_varcFrontFace : SV_IsFrontFace) : SV_Target { half facing =
+    // facing_varcFrontFace ? 1 : -1; ... }`: the Direct3D 9 face register is a float, positive
+    // on front faces and negative on back faces; glslang takes VFACE for an interpolator.
+    void replaceFaceParameters() {
+        for (size_t i = 3; i < mTokens.size(); ++i) {
+            if (!isWord(i, "VFACE") || !is(i - 1, ':')) continue;
+            size_t name = i - 2, type = i - 3;
+            if (mTokens[name].kind != TokenKind::Identifier ||
+                mTokens[type].kind != TokenKind::Identifier) {
+                continue;
+            }
+            std::string bound = std::string(mTokens[name].text) + "_varcFrontFace";
+            mReplacements.push_back({offsetOf(type), endOf(i) - offsetOf(type),
+                                     "bool " + bound + " : SV_IsFrontFace"});
+            size_t body = functionBodyAfterParameter(i);
+            if (body == std::string::npos) continue;
+            mInsertions.push_back({endOf(body), " " + std::string(mTokens[type].text) + " " +
+                                                    std::string(mTokens[name].text) + " = " +
+                                                    bound + " ? 1 : -1;"});
+        }
+    }
+
+    // The '{' opening the body of the function whose parameter list holds token |i|, or npos
+    // (a prototype, or not a parameter at all).
+    size_t functionBodyAfterParameter(size_t i) const {
+        int depth = 0;
+        size_t j = i;
+        for (; j < mTokens.size(); ++j) {
+            if (is(j, '(')) ++depth;
+            if (is(j, ')') && --depth < 0) break;
+            if (depth == 0 && (is(j, ';') || is(j, '{'))) return std::string::npos;
+        }
+        for (++j; j < mTokens.size(); ++j) {
+            if (is(j, '{')) return j;
+            if (is(j, ';') || is(j, '(') || is(j, '}')) return std::string::npos;
+        }
+        return std::string::npos;
     }
 
     bool hasUnsignedCase(size_t begin, size_t end) const {
@@ -385,10 +594,11 @@ private:
 
 }  // namespace
 
-std::string rewriteHlslForGlslang(std::string_view text) {
+std::string rewriteHlslForGlslang(std::string_view text,
+                                  const std::vector<std::string>& unmatchedCalls) {
     pruner::ShaderTokenizer tokenizer;
     if (!tokenizer.tokenize(text)) return std::string(text);
-    return Rewriter(tokenizer).rewrite(text);
+    return Rewriter(tokenizer).rewrite(text, unmatchedCalls);
 }
 
 std::string truncateWideHexLiterals(std::string_view text) {
@@ -410,7 +620,10 @@ std::string truncateWideHexLiterals(std::string_view text) {
 }
 
 std::string fixFrontFaceParameterTypes(std::string_view text) {
-    if (text.find("SV_IsFrontFace") == std::string_view::npos) return std::string(text);
+    if (text.find("SV_IsFrontFace") == std::string_view::npos &&
+        text.find("VFACE") == std::string_view::npos) {
+        return std::string(text);
+    }
     pruner::ShaderTokenizer tokenizer;
     if (!tokenizer.tokenize(text)) return std::string(text);
     return Rewriter(tokenizer).rewriteFrontFaceTypes(text);

@@ -31,7 +31,14 @@ TEST(PassDefines, PreambleListsApiTargetPassStageAndKeywordsInOrder) {
                           shaderlab::ProgramLanguage::Cg,
                           Stage::Fragment,
                           {"POINT", "SHADOWS_CUBE"}};
-    EXPECT_EQ(makePreamble(context),
+    std::string preamble = makePreamble(context);
+    std::string defines;
+    for (size_t at = 0; at < preamble.size();) {
+        size_t end = preamble.find('\n', at) + 1;
+        if (preamble.compare(at, 7, "#define") == 0) defines += preamble.substr(at, end - at);
+        at = end;
+    }
+    EXPECT_EQ(defines,
               "#define SHADER_API_VULKAN 1\n"
               "#define SHADER_API_DESKTOP 1\n"
               "#define SHADER_TARGET 30\n"
@@ -41,6 +48,8 @@ TEST(PassDefines, PreambleListsApiTargetPassStageAndKeywordsInOrder) {
               "#define GetRenderTargetSampleCount() (1u)\n"
               "#define POINT 1\n"
               "#define SHADOWS_CUBE 1\n");
+    // HLSL sees none of the GLSL extension macros glslang predefines.
+    EXPECT_NE(preamble.find("#undef GL_ARB_gpu_shader5\n"), std::string::npos);
 }
 
 TEST(PassDefines, GlslProgramsAlsoGetTheVertexOrFragmentSelector) {
@@ -50,6 +59,7 @@ TEST(PassDefines, GlslProgramsAlsoGetTheVertexOrFragmentSelector) {
     EXPECT_EQ(preamble.find("FRAGMENT"), std::string::npos);
     EXPECT_NE(preamble.find("#define SHADER_TARGET 25\n"), std::string::npos);
     EXPECT_EQ(preamble.find("GetRenderTargetSampleCount"), std::string::npos);
+    EXPECT_EQ(preamble.find("#undef"), std::string::npos);
 }
 
 }  // namespace

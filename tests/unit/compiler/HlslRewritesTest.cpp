@@ -111,12 +111,55 @@ TEST(HlslRewrites, EmptyMemberDeclarationsAreDropped) {
               "float g;\n  \nfloat f() { ; return 0; }\n");
 }
 
+TEST(HlslRewrites, ALocalNamedInItsOwnInitializerIsDeclaredFirst) {
+    std::string text =
+        "V g(V o, float x);\nvoid f() {\n    V o = g(o, 1);\n    float4 c = c.x;\n}\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "V g(V o, float x);\nvoid f() {\n    V o; o = g(o, 1);\n    float4 c; c = c.x;\n}\n");
+    for (std::string kept : {"float a = b.a;", "const float a = a;", "float a = 1, b = a;",
+                             "float a = a, b = 1;", "for (float a = a; ;) {}", "float a == a;"}) {
+        std::string other = "void f() { " + kept + " }\n";
+        EXPECT_EQ(rewriteHlslForGlslang(other), other) << kept;
+    }
+}
+
+TEST(HlslRewrites, ResourcesDeclaredInACbufferMoveBeforeIt) {
+    std::string text = "cbuffer M {\n  sampler2D _A;\n  float4 _A_ST;\n  Texture2D<float4>\n _B;\n"
+                       "  uniform SamplerState sampler_B; };\ncbuffer N { float _C; };\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "sampler2D _A; Texture2D<float4>  _B; uniform SamplerState sampler_B; cbuffer M {\n"
+              "               \n  float4 _A_ST;\n" + std::string(19, ' ') + "\n" +
+                  std::string(4, ' ') + "\n" + std::string(34, ' ') + "};\n"
+              "cbuffer N { float _C; };\n");
+}
+
+TEST(HlslRewrites, ArgumentsOfAnUnmatchedCallAreCastToTheParameterTypes) {
+    std::string text = "float3x3 R(const float a, in float3 axis, out float s, S t) { s = a; }\n"
+                       "float3x3 f(float4 v, S t) { float s; return R(v.xy * 2, v, s, t); }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text, {"R"}),
+              "float3x3 R(const float a, in float3 axis, out float s, S t) { s = a; }\n"
+              "float3x3 f(float4 v, S t) { float s; return R((float)(v.xy * 2), (float3)(v), s, "
+              "t); }\n");
+    EXPECT_EQ(rewriteHlslForGlslang(text), text);  // only the functions glslang named
+    std::string overloaded = "float g(float a) { return a; }\nfloat g(float2 a) { return a.x; }\n"
+                             "float f(float4 v) { return g(v); }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(overloaded, {"g"}), overloaded);
+}
+
 TEST(HlslRewrites, FrontFaceParametersBecomeBool) {
     EXPECT_EQ(fixFrontFaceParameterTypes(
                   "float4 f(uint facing : SV_IsFrontFace) : SV_Target { return facing; }"),
               "float4 f(bool facing : SV_IsFrontFace) : SV_Target { return facing; }");
-    std::string untouched = "float4 f(bool b : SV_IsFrontFace, float v : VFACE) : SV_Target;";
+    std::string untouched = "float4 f(bool b : SV_IsFrontFace) : SV_Target;";
     EXPECT_EQ(fixFrontFaceParameterTypes(untouched), untouched);
+}
+
+TEST(HlslRewrites, FaceParametersBecomeASignFromTheFrontFaceBuiltIn) {
+    EXPECT_EQ(fixFrontFaceParameterTypes("float4 f(V i, half s : VFACE) : SV_Target\n{\n"
+                                         "    return s * i.c;\n}\nfloat4 g(float t : VFACE);"),
+              "float4 f(V i, bool s_varcFrontFace : SV_IsFrontFace) : SV_Target\n{ half s = "
+              "s_varcFrontFace ? 1 : -1;\n    return s * i.c;\n}\n"
+              "float4 g(bool t_varcFrontFace : SV_IsFrontFace);");
 }
 
 TEST(HlslRewrites, NoLineIsAddedOrRemoved) {

@@ -11,6 +11,7 @@
 #include "varc/build/GlslangLogParser.h"
 #include "varc/build/PassDefines.h"
 #include "varc/frontend/HlslRewrites.h"
+#include "varc/frontend/EmptyMacroArguments.h"
 #include "varc/frontend/MacroRedefinitions.h"
 #include "varc/frontend/StagePruner.h"
 #include "varc/variants/KeywordList.h"
@@ -95,6 +96,17 @@ StageResult preprocessStage(const PassJob& job, Stage stage, const std::string& 
         // The DirectX compilers keep the low 32 bits of such a literal; so does varc.
         text = truncateWideHexLiterals(text);
         pre = preprocessProgram({text, preamble, languageOf(job), stage, entry});
+    }
+    // A one-parameter macro called with an empty argument (or with `##`, as for Unity's older
+    // preprocessor): C99 and Unity take it, glslang stops.
+    if (!pre.ok && hlsl &&
+        (pre.log.find("Too few args in Macro") != std::string::npos ||
+         pre.log.find("unexpected '#'") != std::string::npos)) {
+        std::string expanded = expandEmptyMacroArguments(text);
+        if (expanded != text) {
+            text = std::move(expanded);
+            pre = preprocessProgram({text, preamble, languageOf(job), stage, entry});
+        }
     }
     // Unity's HLSL compilers warn about a macro redefined with another value and take the new
     // one; glslang stops. varc warns and #undefs before each redefinition (bounded: each round

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "driver/ProgramCompiler.h"
 
+#include <algorithm>
 #include <cctype>
 #include <ctime>
 #include <optional>
@@ -8,6 +9,7 @@
 
 #include "varc/build/GlslangFrontend.h"
 #include "varc/build/GlslangLogParser.h"
+#include "varc/build/SpirvMatrixMath.h"
 #include "varc/build/SpirvOptimizer.h"
 #include "varc/build/SpirvReflection.h"
 #include "varc/core/JoinWords.h"
@@ -32,16 +34,59 @@ std::vector<std::string> splitWords(std::string_view text) {
     return words;
 }
 
-// Whether glslang refused |program| for a construct Unity's HLSL compilers accept and
-// rewriteHlslForGlslang makes explicit. Only such programs are rewritten, so every program
-// glslang accepts as written compiles exactly as before.
-bool needsHlslRewrite(const StageProgram& program, const std::string& log) {
-    return program.language != shaderlab::ProgramLanguage::Glsl &&
+// glslang's output for one program text: compiled, then (when it compiled) optimised and
+// validated.
+struct Attempt {
+    CompileOutput compiled;
+    SpirvResult optimized;
+    std::optional<std::string> invalid;  // the validator's message
+};
+
+Attempt compileAndValidate(const StageProgram& program, const std::string& text,
+                           OptimizationLevel level) {
+    Attempt attempt;
+    attempt.compiled =
+        compileProgram({text, "", program.language, program.stage, program.entryPoint});
+    if (!attempt.compiled.ok) return attempt;
+    attempt.compiled.spirv = splitMatrixExtendedMath(attempt.compiled.spirv);
+    attempt.optimized = optimizeSpirv(attempt.compiled.spirv, level);
+    if (attempt.optimized.ok) attempt.invalid = validateSpirv(attempt.optimized.spirv);
+    return attempt;
+}
+
+// Whether glslang refused |program|, or made invalid SPIR-V of it, for a construct Unity's HLSL
+// compilers accept and rewriteHlslForGlslang makes explicit. Only such programs are rewritten,
+// so every program glslang compiles as written compiles exactly as before.
+bool needsHlslRewrite(const StageProgram& program, const Attempt& attempt) {
+    if (program.language == shaderlab::ProgramLanguage::Glsl) return false;
+    if (attempt.invalid) {
+        return attempt.invalid->find("OpTypeStruct must not contain an opaque type") !=
+               std::string::npos;
+    }
+    const std::string& log = attempt.compiled.log;
+    return !attempt.compiled.ok &&
            (log.find("condition must be a scalar integer expression") != std::string::npos ||
             log.find("can't modify a uniform") != std::string::npos ||
             log.find("Missing functionality: matrix swizzle") != std::string::npos ||
             log.find("hexadecimal literal too big") != std::string::npos ||
-            log.find("'member type' : Expected") != std::string::npos);
+            log.find("'member type' : Expected") != std::string::npos ||
+            log.find("unknown variable") != std::string::npos ||
+            log.find("no matching overloaded function found") != std::string::npos);
+}
+
+// The functions glslang found no overload for: "ERROR: 3:85: 'Linear01Depth' : no matching
+// overloaded function found" -> {"Linear01Depth"}.
+std::vector<std::string> unmatchedCalls(const std::string& log) {
+    static constexpr std::string_view kMessage = "' : no matching overloaded function found";
+    std::vector<std::string> names;
+    for (size_t at = log.find(kMessage); at != std::string::npos;
+         at = log.find(kMessage, at + 1)) {
+        size_t open = log.rfind('\'', at - 1);
+        if (open == std::string::npos) continue;
+        std::string name = log.substr(open + 1, at - open - 1);
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    return names;
 }
 
 }  // namespace
@@ -88,18 +133,17 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
     std::string text = program.language == shaderlab::ProgramLanguage::Glsl
                            ? std::string(program.text)
                            : fixFrontFaceParameterTypes(program.text);
-    CompileOutput compiled =
-        compileProgram({text, "", program.language, program.stage, program.entryPoint});
-    if (!compiled.ok && needsHlslRewrite(program, compiled.log)) {
-        std::string rewritten = rewriteHlslForGlslang(text);
+    Attempt attempt = compileAndValidate(program, text, options.optimization);
+    if (needsHlslRewrite(program, attempt)) {
+        std::string rewritten =
+            rewriteHlslForGlslang(text, unmatchedCalls(attempt.compiled.log));
+        // Either way the rewritten program's outcome is the one to report: its errors are the
+        // ones left once the constructs Unity accepts are accepted.
         if (rewritten != text) {
-            CompileOutput retried = compileProgram(
-                {rewritten, "", program.language, program.stage, program.entryPoint});
-            // Either way the rewritten program's outcome is the one to report: its errors are
-            // the ones left once the constructs Unity accepts are accepted.
-            compiled = std::move(retried);
+            attempt = compileAndValidate(program, rewritten, options.optimization);
         }
     }
+    CompileOutput& compiled = attempt.compiled;
     result.diagnostics = parseGlslangLog(compiled.log, sourceMap);
     // glslang's link and "missing functionality" messages name no line: they belong to the
     // program, so they point at its block (and get the stage and keywords note like the rest).
@@ -107,11 +151,9 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
         if (!diagnostic.location.isKnown()) diagnostic.location = program.origin;
     }
     if (!compiled.ok) return result;
-    SpirvResult optimized = optimizeSpirv(compiled.spirv, options.optimization);
+    SpirvResult& optimized = attempt.optimized;
     if (!optimized.ok) return fail("SPIR-V optimisation failed: " + optimized.message);
-    if (auto invalid = validateSpirv(optimized.spirv)) {
-        return fail("generated SPIR-V is invalid: " + *invalid);
-    }
+    if (attempt.invalid) return fail("generated SPIR-V is invalid: " + *attempt.invalid);
     std::optional<SemanticsByLocation> semantics = hlslSemantics(compiled.spirv);
     std::optional<pack::ProgramReflection> reflection;
     if (semantics) reflection = reflectSpirv(optimized.spirv, *semantics, vertex);

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace varc::compiler {
 
@@ -31,13 +32,23 @@ namespace varc::compiler {
 //    do: `0x1376312589U` -> `0x76312589U`.
 //  * Empty member declarations (a lone `;` in a struct or cbuffer, often a macro that expanded
 //    to nothing) are removed.
+//  * A local named in its own initializer, which HLSL puts in scope there (uninitialised):
+//    `Out o = f(o, p);` -> `Out o; o = f(o, p);` (one declarator, not const or static).
+//  * Textures, samplers and buffers declared in a file-scope cbuffer, which the DirectX
+//    compilers take as globals and glslang as members (invalid in Vulkan): each declaration
+//    moves to just before the `cbuffer` keyword, on that line, and is blanked where it was.
+//  * Calls of the functions named in |unmatchedCalls| (those glslang found no overload for):
+//    each argument is cast to its parameter's numeric type, `Linear01Depth(tex2D(t, uv))` ->
+//    `Linear01Depth((float)(tex2D(t, uv)))`, the implicit truncation the DirectX compilers
+//    apply. Functions with overloads, and out/inout, struct and resource parameters, are left.
 //
 // No line is added or removed, so every `#line` mapping still holds. Returns |text| unchanged
 // when there is nothing to rewrite or the text cannot be tokenised.
 // Example: "float _T;\nfloat4 f() : SV_Target { _T *= 2; switch (_T) { default: break; }
 // return _T; }" -> "float _T; static float _T_varcCopy = _T;\nfloat4 f() : SV_Target {
 // _T_varcCopy *= 2; switch ((int)(_T_varcCopy)) { default: break; } return _T_varcCopy; }".
-std::string rewriteHlslForGlslang(std::string_view text);
+std::string rewriteHlslForGlslang(std::string_view text,
+                                  const std::vector<std::string>& unmatchedCalls = {});
 
 // |text| with each hexadecimal literal wider than 32 bits cut to its low 32 bits, anywhere
 // (directives and comments included): for text before preprocessing, where glslang's
@@ -46,8 +57,11 @@ std::string truncateWideHexLiterals(std::string_view text);
 
 // |text| with every `T name : SV_IsFrontFace` parameter of a type other than bool declared bool
 // (`uint facing : SV_IsFrontFace`, accepted by the DirectX compilers): Vulkan's FrontFacing
-// built-in is a bool and glslang would emit invalid SPIR-V. Text without SV_IsFrontFace is
-// returned unchanged.
+// built-in is a bool and glslang would emit invalid SPIR-V. A Direct3D 9 face parameter
+// `half facing : VFACE` (a float: positive on front faces, negative on back faces, which glslang
+// would take for an interpolator) becomes `bool facing_varcFrontFace : SV_IsFrontFace`, and the
+// function body starts with `half facing = facing_varcFrontFace ? 1 : -1;` on the same line.
+// Text without SV_IsFrontFace or VFACE is returned unchanged.
 std::string fixFrontFaceParameterTypes(std::string_view text);
 
 }  // namespace varc::compiler
