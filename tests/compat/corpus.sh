@@ -143,10 +143,6 @@ fxc (which Unity uses for Direct3D) rejects as well.
 * **\`float\` then \`float3\` in a cbuffer** (HLSL packs the \`float3\` at offset 4): valid only
   with relaxed block layout (Vulkan 1.1, VK_KHR_relaxed_block_layout); varc validates for
   Vulkan 1.0 and refuses the program (\`must follow standard uniform buffer layout rules\`).
-* **Point-light shadow casters without \`V2F_SHADOW_CASTER\`** (\`no such field in structure
-  'vec'\` in a \`SHADOWS_CUBE\` variant): varc's point-light shadows are distance cube maps
-  (SHADER_ABI.md §6), so \`SHADOW_CASTER_FRAGMENT\` reads the \`vec\` member the caster macros
-  declare; Unity's depth cube maps on Vulkan do not need it.
 * **Faults in the shader**: a variable declared twice in one scope when two keywords are on
   together (\`redefinition\`); \`TRANSFER_SHADOW\` in a struct without the \`pos\` member it
   writes (\`SHADOWS_SCREEN\`); \`tex2D\` on the cube cookie \`_LightTexture0\` of a
