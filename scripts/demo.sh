@@ -66,6 +66,16 @@ echo
 echo "== varc validate: the single-pass forward scenes (light buffer, per-object light lists, instancing) =="
 "$varc" validate "${pack_args[@]}" --scenes tests/scenes/single_pass --out "$out/single-pass" || validate_status=$?
 
+seeds=../shared/seeds
+if [ -d "$seeds" ]; then
+    echo
+    echo "== varc validate: seeds 001 and 004 as their texts print them (assembled in $out/seed-texts) =="
+    bash tests/library/assemble_seeds.sh "$seeds" "$out/seed-texts"
+    "$varc" build -o "$out/seed-texts.svpack" "$out/seed-texts/seed001" "$out/seed-texts/seed004"
+    "$varc" validate --pack "$out/library.svpack" --pack "$out/seed-texts.svpack" \
+        --scenes tests/scenes/seeds --out "$out/seeds" || validate_status=$?
+fi
+
 echo
 echo "== summary =="
 echo "variant listings: $out/fixtures-variants.json"
@@ -75,4 +85,5 @@ for pack in "${fixture_packs[@]}"; do echo "fixture pack:     $pack"; done
 echo "rendered scenes:  $out/scenes/<scene>.png, .reference.png (CPU), .diff.png"
 echo "deferred:         $out/deferred/<scene>.png, .reference.png, .diff.png"
 echo "single-pass:      $out/single-pass/<scene>.png, .reference.png, .diff.png"
+echo "seed shaders:     $out/seeds/<scene>.png, .reference.png, .diff.png"
 exit $validate_status
