@@ -59,11 +59,17 @@ SpirvResult stripDebugInfo(const std::vector<uint32_t>& spirv) {
     return result;
 }
 
+// Uniform and storage blocks may use the relaxed block layout (VK_KHR_relaxed_block_layout, core
+// in Vulkan 1.1): HLSL's cbuffer packing puts a float3 right after a float (offset 4), which
+// glslang keeps for `cbuffer` blocks and which every HLSL shader of Unity's era relies on. The
+// runtime enables the extension (docs/SHADER_ABI.md §1).
 std::optional<std::string> validateSpirv(const std::vector<uint32_t>& spirv) {
     spvtools::SpirvTools tools(kTargetEnv);
     std::string message;
     tools.SetMessageConsumer(collectInto(message));
-    if (tools.Validate(spirv)) return std::nullopt;
+    spvtools::ValidatorOptions options;
+    options.SetRelaxBlockLayout(true);
+    if (tools.Validate(spirv.data(), spirv.size(), options)) return std::nullopt;
     return message.empty() ? std::string("invalid SPIR-V") : message;
 }
 

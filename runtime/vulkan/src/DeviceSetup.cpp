@@ -2,6 +2,7 @@
 // Physical device selection and logical device creation for VulkanContext.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ContextState.h"
@@ -115,6 +116,21 @@ Status selectPhysicalDevice(VulkanContext::State& state, const std::string& pref
     return Ok{};
 }
 
+// Device extensions varc enables when the device has them: VK_KHR_relaxed_block_layout, because
+// HLSL cbuffers keep HLSL's packing (a float3 right after a float; core in Vulkan 1.1).
+std::vector<const char*> wantedExtensions(VkPhysicalDevice device) {
+    uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> available(count);
+    vkEnumerateDeviceExtensionProperties(device, nullptr, &count, available.data());
+    std::vector<const char*> wanted;
+    for (const VkExtensionProperties& extension : available) {
+        if (std::string_view(extension.extensionName) == VK_KHR_RELAXED_BLOCK_LAYOUT_EXTENSION_NAME)
+            wanted.push_back(VK_KHR_RELAXED_BLOCK_LAYOUT_EXTENSION_NAME);
+    }
+    return wanted;
+}
+
 Status createDevice(VulkanContext::State& state) {
     float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{};
@@ -129,6 +145,9 @@ Status createDevice(VulkanContext::State& state) {
     info.queueCreateInfoCount = 1;
     info.pQueueCreateInfos = &queueInfo;
     info.pEnabledFeatures = &state.enabledFeatures;
+    const std::vector<const char*> extensions = wantedExtensions(state.physicalDevice);
+    info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
+    info.ppEnabledExtensionNames = extensions.data();
     if (Status status = checkVk(vkCreateDevice(state.physicalDevice, &info, nullptr, &state.device),
                                 "vkCreateDevice", std::source_location::current());
         !status) {
