@@ -112,6 +112,11 @@ void rasterizeScreenTriangle(std::array<ScreenVertex, 3> v, uint32_t width, uint
 
 void rasterizeTriangle(const std::array<glm::vec4, 3>& clip, uint32_t width, uint32_t height,
                        CullMode cull, const FragmentFn& emit) {
+    // A vertex that is not a finite point draws nothing (Vulkan leaves such triangles undefined).
+    for (const glm::vec4& c : clip) {
+        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || !std::isfinite(c.w))
+            return;
+    }
     std::vector<ClipVertex> polygon = {
         {clip[0], {1, 0, 0}}, {clip[1], {0, 1, 0}}, {clip[2], {0, 0, 1}}};
     polygon = clipAgainst(polygon, [](const glm::vec4& c) { return c.z; });

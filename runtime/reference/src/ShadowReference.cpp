@@ -32,7 +32,10 @@ glm::vec4 casterClip(const glm::vec3& world, const glm::vec3& normal, const glm:
         p -= normal * (bias.z * sine);
     }
     glm::vec4 clip = viewProjection * glm::vec4(p, 1.0f);
-    clip.z += std::clamp(bias.x / clip.w, 0.0f, 1.0f) * clip.w;
+    // saturate(bias.x / w): 0 when w is not positive (the vertex is clipped anyway; 0 / 0 would
+    // be NaN, which saturate turns into 0 on the GPU but std::clamp keeps).
+    const float shift = clip.w > 0.0f ? std::clamp(bias.x / clip.w, 0.0f, 1.0f) : 0.0f;
+    clip.z += shift * clip.w;
     clip.z = std::min(clip.z, clip.w);
     return clip;
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // rasterizeTriangle: coverage with the top-left rule, culling, clipping, perspective-correct
 // barycentrics; classifyPixels.
+#include <limits>
 #include <map>
 
 #include <gtest/gtest.h>
@@ -128,6 +129,17 @@ TEST(Rasterizer, CubeCreasesAreEdges) {
         }
     }
     EXPECT_GT(creases, 5);
+}
+
+TEST(Rasterizer, AVertexThatIsNotAFinitePointDrawsNothing) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    for (glm::vec4 bad : {glm::vec4(0.0f, 0.0f, nan, 1.0f), glm::vec4(inf, 0.0f, 0.5f, 1.0f)}) {
+        int fragments = 0;
+        rasterizeTriangle({glm::vec4(-1, -1, 0.5f, 1), glm::vec4(1, -1, 0.5f, 1), bad}, 8, 8,
+                          CullMode::None, [&](const Fragment&) { ++fragments; });
+        EXPECT_EQ(fragments, 0);
+    }
 }
 
 }  // namespace

@@ -32,7 +32,8 @@ using FragmentFn = std::function<void(const Fragment&)>;
 // Rasterises the triangle with clip-space vertices |clip| (Vulkan clip space: x, y in [-w, w],
 // y down, z in [0, w]) into a |width| x |height| framebuffer. The triangle is clipped against
 // 0 <= z <= w; with CullMode::Back, triangles whose framebuffer area is not clockwise (Vulkan
-// VK_FRONT_FACE_CLOCKWISE) are dropped. Calls |emit| once per covered pixel centre.
+// VK_FRONT_FACE_CLOCKWISE) are dropped. Calls |emit| once per covered pixel centre. A triangle
+// with a vertex that is not finite (NaN or infinity) draws nothing.
 void rasterizeTriangle(const std::array<glm::vec4, 3>& clip, uint32_t width, uint32_t height,
                        CullMode cull, const FragmentFn& emit);
 
