@@ -140,9 +140,6 @@ fxc (which Unity uses for Direct3D) rejects as well.
   combined image sampler (docs/SHADER_ABI.md §1), so the \`sampler_<name>\` object Unity declares
   beside it on Direct3D 11 does not exist. Shaders that only use the \`UNITY_SAMPLE_TEX2D*\`
   macros build.
-* **\`float\` then \`float3\` in a cbuffer** (HLSL packs the \`float3\` at offset 4): valid only
-  with relaxed block layout (Vulkan 1.1, VK_KHR_relaxed_block_layout); varc validates for
-  Vulkan 1.0 and refuses the program (\`must follow standard uniform buffer layout rules\`).
 * **Faults in the shader**: a variable declared twice in one scope when two keywords are on
   together (\`redefinition\`); \`TRANSFER_SHADOW\` in a struct without the \`pos\` member it
   writes (\`SHADOWS_SCREEN\`); \`tex2D\` on the cube cookie \`_LightTexture0\` of a
