@@ -8,7 +8,6 @@
 #include "varc/render/DeferredValues.h"
 #include "varc/render/RenderStateResolver.h"
 #include "varc/render/SceneValues.h"
-#include "varc/vulkan/Sampler.h"
 
 namespace varc::runtime {
 
@@ -36,12 +35,7 @@ std::vector<std::string> collectorKeywords(const scene::Light& light,
 Status ScreenShadowMasks::prepare(RendererBase& renderer, const scene::Camera& camera,
                                   const std::vector<size_t>& lights) {
     if (!mNearest) {
-        SamplerDesc nearest;
-        nearest.filter = VK_FILTER_NEAREST;
-        nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-        nearest.addressMode = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-        nearest.name = "screen shadow sampler";
-        auto sampler = createSampler(*renderer.context, nearest);
+        auto sampler = createShadowSampler(*renderer.context, "screen shadow sampler");
         if (!sampler) return sampler.error();
         mNearest = std::move(*sampler);
     }

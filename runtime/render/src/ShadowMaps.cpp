@@ -84,12 +84,7 @@ Status ShadowMaps::render(RendererBase& renderer, const scene::Scene& scene,
 
 Status ShadowMaps::prepare(RendererBase& renderer, uint32_t resolution, bool cube, LightMap& map) {
     if (!mNearest) {
-        SamplerDesc nearest;
-        nearest.filter = VK_FILTER_NEAREST;
-        nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-        nearest.addressMode = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-        nearest.name = "shadow map sampler";
-        auto sampler = createSampler(*renderer.context, nearest);
+        auto sampler = createShadowSampler(*renderer.context, "shadow map sampler");
         if (!sampler) return sampler.error();
         mNearest = std::move(*sampler);
     }
@@ -116,6 +111,16 @@ Status ShadowMaps::prepare(RendererBase& renderer, uint32_t resolution, bool cub
     if (!image) return image.error();
     map.cube.emplace(std::move(*image));
     return Ok{};
+}
+
+Result<UniqueHandle<VkSampler>> createShadowSampler(const VulkanContext& context,
+                                                    const std::string& name) {
+    SamplerDesc nearest;
+    nearest.filter = VK_FILTER_NEAREST;
+    nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    nearest.addressMode = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    nearest.name = name;
+    return createSampler(context, nearest);
 }
 
 Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
@@ -168,30 +173,7 @@ Status ShadowMaps::renderSpot(RendererBase& renderer, const scene::Scene& scene,
         !made) {
         return made;
     }
-    Status bound = Ok{};
-    uint32_t drawCount = 0;
-    const RenderTarget& target = *map.target;
-    Status submitted = renderer.context->submitAndWait([&](VkCommandBuffer commands) {
-        if (map.sampledBefore) {
-            transitionLayout(commands, target.depthImage(), kDepthStencil,
-                             backToDepth(VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
-                                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT));
-        }
-        target.begin(commands, LoadOp::Clear);
-        VkViewport viewport = target.viewport();
-        VkRect2D area = target.area();
-        vkCmdSetViewport(commands, 0, 1, &viewport);
-        vkCmdSetScissor(commands, 0, 1, &area);
-        bound = recordDraws(commands, *renderer.resources, draws, drawCount);
-        target.end(commands);
-        transitionLayout(commands, target.depthImage(), kDepthStencil,
-                         depthTo(VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
-                                 VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
-    });
-    map.sampledBefore = true;
-    if (Status reset = renderer.resources->reset(); !reset) return reset.error();
-    if (!bound) return bound.error();
-    return submitted;
+    return drawDepthPass(renderer, map, {{map.target->viewport(), map.target->area(), &draws}});
 }
 
 // Six faces, each drawn into the one face target and copied into its layer of the cube.
@@ -284,6 +266,23 @@ Status ShadowMaps::renderDirectional(RendererBase& renderer, const scene::Scene&
             return made;
         }
     }
+    std::vector<DepthTile> tiles;
+    for (int c = 0; c < setup.cascades; ++c) {
+        const glm::uvec2 origin = setup.tileOrigin[static_cast<size_t>(c)];
+        const auto size = static_cast<float>(setup.tileSize);
+        tiles.push_back({{static_cast<float>(origin.x), static_cast<float>(origin.y), size, size,
+                          0.0f, 1.0f},
+                         {{static_cast<int32_t>(origin.x), static_cast<int32_t>(origin.y)},
+                          {setup.tileSize, setup.tileSize}},
+                         &cascadeDraws[static_cast<size_t>(c)]});
+    }
+    return drawDepthPass(renderer, map, tiles);
+}
+
+// One submission: the target's depth back to an attachment if it was sampled, every tile's draws
+// in one cleared render pass, then the depth ready to be sampled.
+Status ShadowMaps::drawDepthPass(RendererBase& renderer, LightMap& map,
+                                 const std::vector<DepthTile>& tiles) {
     Status bound = Ok{};
     uint32_t drawCount = 0;
     const RenderTarget& target = *map.target;
@@ -294,19 +293,10 @@ Status ShadowMaps::renderDirectional(RendererBase& renderer, const scene::Scene&
                                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT));
         }
         target.begin(commands, LoadOp::Clear);
-        for (int c = 0; c < setup.cascades; ++c) {
-            const glm::uvec2 origin = setup.tileOrigin[static_cast<size_t>(c)];
-            const auto size = static_cast<float>(setup.tileSize);
-            VkViewport viewport{static_cast<float>(origin.x), static_cast<float>(origin.y), size,
-                                size, 0.0f, 1.0f};
-            VkRect2D area{{static_cast<int32_t>(origin.x), static_cast<int32_t>(origin.y)},
-                          {setup.tileSize, setup.tileSize}};
-            vkCmdSetViewport(commands, 0, 1, &viewport);
-            vkCmdSetScissor(commands, 0, 1, &area);
-            if (bound) {
-                bound = recordDraws(commands, *renderer.resources,
-                                    cascadeDraws[static_cast<size_t>(c)], drawCount);
-            }
+        for (const DepthTile& tile : tiles) {
+            vkCmdSetViewport(commands, 0, 1, &tile.viewport);
+            vkCmdSetScissor(commands, 0, 1, &tile.area);
+            if (bound) bound = recordDraws(commands, *renderer.resources, *tile.draws, drawCount);
         }
         target.end(commands);
         transitionLayout(commands, target.depthImage(), kDepthStencil,

@@ -25,6 +25,11 @@ Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
                          FrameStorage& storage, std::vector<Draw>& draws,
                          std::vector<std::string>& drawn);
 
+// The sampler shadow maps and screen masks are read with: nearest, clamp to edge, no compare
+// (SHADER_ABI.md §6).
+Result<UniqueHandle<VkSampler>> createShadowSampler(const VulkanContext& context,
+                                                    const std::string& name);
+
 class ShadowMaps {
 public:
     // Renders the map of every light that has shadows: a depth map per spot light
@@ -76,6 +81,14 @@ private:
                        LightMap& map);
     Status renderDirectional(RendererBase& renderer, const scene::Scene& scene, size_t light,
                              LightMap& map);
+    // A part of the map and the caster draws that go there.
+    struct DepthTile {
+        VkViewport viewport;
+        VkRect2D area;
+        const std::vector<Draw>* draws;
+    };
+    Status drawDepthPass(RendererBase& renderer, LightMap& map,
+                         const std::vector<DepthTile>& tiles);
 
     std::vector<std::string>* mDrawn = nullptr;  // during render()
 
