@@ -102,6 +102,47 @@ TEST(Png, ErrorsAreResults) {
     EXPECT_EQ(unwritable.error().code, ErrorCode::IoError);
 }
 
+// A PNG whose IHDR promises |width| x |height| RGBA8 pixels and whose one IDAT holds five zero
+// bytes (a stored zlib block): a header that promises pixels the file does not hold.
+std::string truncatedPng(uint32_t width, uint32_t height) {
+    auto crc32 = [](std::string_view bytes) {
+        uint32_t crc = 0xFFFFFFFFu;
+        for (unsigned char byte : bytes) {
+            crc ^= byte;
+            for (int bit = 0; bit < 8; ++bit) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+        }
+        return ~crc;
+    };
+    auto bigEndian = [](uint32_t value) {
+        return std::string{static_cast<char>(value >> 24), static_cast<char>(value >> 16),
+                           static_cast<char>(value >> 8), static_cast<char>(value)};
+    };
+    auto chunk = [&](const std::string& type, const std::string& data) {
+        return bigEndian(static_cast<uint32_t>(data.size())) + type + data +
+               bigEndian(crc32(type + data));
+    };
+    std::string header = bigEndian(width) + bigEndian(height) + std::string("\x08\x06\0\0\0", 5);
+    std::string fiveZeros("\x78\x01\x01\x05\x00\xfa\xff\0\0\0\0\0\x00\x05\x00\x01", 16);
+    return std::string("\x89PNG\r\n\x1a\n", 8) + chunk("IHDR", header) +
+           chunk("IDAT", fiveZeros) + chunk("IEND", "");
+}
+
+// kMaxPngPixels (docs/SECURITY.md): a header of exactly the limit gets as far as reading pixels
+// (and fails there, for want of them); one row more is refused from the header alone.
+TEST(Png, AHeaderAtThePixelLimitIsReadAndOnePastIsRefused) {
+    static_assert(uint64_t{16384} * 16384 == kMaxPngPixels);
+    Result<Image> atTheLimit = decodePng(truncatedPng(16384, 16384));
+    ASSERT_FALSE(atTheLimit.ok());
+    EXPECT_EQ(atTheLimit.error().detail.find("too large"), std::string::npos)
+        << atTheLimit.error().detail;
+    EXPECT_NE(atTheLimit.error().detail.find("corrupt PNG"), std::string::npos)
+        << atTheLimit.error().detail;
+    Result<Image> past = decodePng(truncatedPng(16384, 16385));
+    ASSERT_FALSE(past.ok());
+    EXPECT_NE(past.error().detail.find("too large"), std::string::npos) << past.error().detail;
+    EXPECT_EQ(decodePng(truncatedPng(2, 2)).error().detail.find("too large"), std::string::npos);
+}
+
 TEST(HalfFloat, ConvertsSpecialValues) {
     EXPECT_EQ(halfToFloat(0x3C00), 1.0f);
     EXPECT_EQ(halfToFloat(0xC000), -2.0f);

@@ -22,6 +22,7 @@
 #include "DiagnosticGrouper.h"
 #include "driver/PassJob.h"
 #include "driver/ProgramCompiler.h"
+#include "varc/build/CompilerException.h"
 #include "varc/build/GlslLegacyPreamble.h"
 #include "varc/build/GlslangFrontend.h"
 #include "varc/build/ParallelFor.h"
@@ -302,10 +303,17 @@ void Builder::noteCacheFailure(const Status& stored) const {
 
 CompiledSource Builder::compileSource(const SourceProgram& source) const {
     const PassJob& job = mJobs[source.job];
-    return compileStageProgram({source.text, languageOf(job), source.stage, source.entryPoint,
-                                job.pass->pass->program->origin},
-                               mOptions, mCache.get(), mSourceMap,
-                               [this](const Status& stored) { noteCacheFailure(stored); });
+    const SourceLocation& origin = job.pass->pass->program->origin;
+    try {
+        return compileStageProgram({source.text, languageOf(job), source.stage, source.entryPoint,
+                                    origin},
+                                   mOptions, mCache.get(), mSourceMap,
+                                   [this](const Status& stored) { noteCacheFailure(stored); });
+    } catch (...) {
+        CompiledSource failed;
+        failed.diagnostics.push_back(diagnosticOfCompilerException(std::current_exception(), origin));
+        return failed;
+    }
 }
 
 bool Builder::compileSources() {
