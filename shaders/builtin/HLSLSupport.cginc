@@ -77,25 +77,29 @@
 #define UNITY_DECLARE_FRAMEBUFFER_INPUT_FLOAT(idx) sampler2D _UnityFBInput##idx
 
 // ---------------------------------------------------------------------------------------------
-// Textures. Every texture is a combined image sampler (DX9-style sampler2D/samplerCUBE), so a
-// runtime binds one VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER per texture name.
-// tex2D, tex2Dbias, tex2Dlod, tex2Dproj, texCUBE, texCUBEbias, texCUBElod are glslang
-// intrinsics in DX9-compatible mode (--hlsl-dx9-compatible).
+// Textures, as on Unity's D3D11 path (UNITY_SEPARATE_TEXTURE_SAMPLER): UNITY_DECLARE_TEX2D(t)
+// declares `Texture2D t` and `SamplerState sampler_t`, and code may sample `t.Sample(sampler_t,
+// uv)` or share one texture's sampler with others (the _SAMPLER and _NOSAMPLER macros). varc's
+// compiler turns every texture into a combined image sampler named after the texture and drops
+// the SamplerStates, so a runtime still binds one VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER per
+// texture name (docs/SHADER_ABI.md §3). Plain sampler2D/samplerCUBE with tex2D, tex2Dbias,
+// tex2Dlod, tex2Dproj, texCUBE, ... (glslang's DX9-compatible intrinsics) work as before.
 // ---------------------------------------------------------------------------------------------
-#define UNITY_DECLARE_TEX2D(tex) sampler2D tex
-#define UNITY_DECLARE_TEX2D_NOSAMPLER(tex) sampler2D tex
-#define UNITY_DECLARE_TEX2D_HALF(tex) sampler2D tex
-#define UNITY_DECLARE_TEX2D_FLOAT(tex) sampler2D tex
-#define UNITY_DECLARE_TEXCUBE(tex) samplerCUBE tex
-#define UNITY_DECLARE_TEXCUBE_NOSAMPLER(tex) samplerCUBE tex
-#define UNITY_DECLARE_TEX3D(tex) sampler3D tex
-#define UNITY_SAMPLE_TEX2D(tex, coord) tex2D(tex, coord)
-#define UNITY_SAMPLE_TEX2D_SAMPLER(tex, samplertex, coord) tex2D(tex, coord)
-#define UNITY_SAMPLE_TEX2D_LOD(tex, coord, lod) tex2Dlod(tex, float4(coord, 0, lod))
-#define UNITY_SAMPLE_TEXCUBE(tex, coord) texCUBE(tex, coord)
-#define UNITY_SAMPLE_TEXCUBE_LOD(tex, coord, lod) texCUBElod(tex, float4(coord, lod))
-#define UNITY_SAMPLE_TEXCUBE_SAMPLER(tex, samplertex, coord) texCUBE(tex, coord)
-#define UNITY_SAMPLE_TEX3D(tex, coord) tex3D(tex, coord)
+#define UNITY_SEPARATE_TEXTURE_SAMPLER
+#define UNITY_DECLARE_TEX2D(tex) Texture2D tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER(tex) Texture2D tex
+#define UNITY_DECLARE_TEX2D_HALF(tex) Texture2D<half4> tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX2D_FLOAT(tex) Texture2D<float4> tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEXCUBE(tex) TextureCube tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEXCUBE_NOSAMPLER(tex) TextureCube tex
+#define UNITY_DECLARE_TEX3D(tex) Texture3D tex; SamplerState sampler##tex
+#define UNITY_SAMPLE_TEX2D(tex, coord) tex.Sample(sampler##tex, coord)
+#define UNITY_SAMPLE_TEX2D_SAMPLER(tex, samplertex, coord) tex.Sample(sampler##samplertex, coord)
+#define UNITY_SAMPLE_TEX2D_LOD(tex, coord, lod) tex.SampleLevel(sampler##tex, coord, lod)
+#define UNITY_SAMPLE_TEXCUBE(tex, coord) tex.Sample(sampler##tex, coord)
+#define UNITY_SAMPLE_TEXCUBE_LOD(tex, coord, lod) tex.SampleLevel(sampler##tex, coord, lod)
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER(tex, samplertex, coord) tex.Sample(sampler##samplertex, coord)
+#define UNITY_SAMPLE_TEX3D(tex, coord) tex.Sample(sampler##tex, coord)
 
 // Depth textures hold raw (non-linear, non-reversed) depth in .r.
 #define UNITY_DECLARE_DEPTH_TEXTURE(tex) sampler2D_float tex
@@ -125,15 +129,16 @@
 #define UNITY_outputcontrolpoints outputcontrolpoints
 #define VPOS SV_Position
 
-// More texture macros (all still combined image samplers; the "sampler" argument is ignored).
-#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) tex2Dlod(tex, float4(coord, 0, lod))
-#define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, coord, lod) texCUBElod(tex, float4(coord, lod))
-#define UNITY_SAMPLE_TEX2D_BIAS(tex, coord, bias) tex2Dbias(tex, float4(coord, 0, bias))
-#define UNITY_SAMPLE_TEXCUBE_BIAS(tex, coord, bias) texCUBEbias(tex, float4(coord, bias))
-#define UNITY_PASS_TEX2D(tex) tex
-#define UNITY_PASS_TEXCUBE(tex) tex
-#define UNITY_ARGS_TEX2D(tex) sampler2D tex
-#define UNITY_ARGS_TEXCUBE(tex) samplerCUBE tex
+// More texture macros, D3D11-style like those above.
+#define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
+#define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
+#define UNITY_SAMPLE_TEX2D_BIAS(tex, coord, bias) tex.SampleBias(sampler##tex, coord, bias)
+#define UNITY_SAMPLE_TEXCUBE_BIAS(tex, coord, bias) tex.SampleBias(sampler##tex, coord, bias)
+#define UNITY_PASS_TEX2D(tex) tex, sampler##tex
+#define UNITY_PASS_TEXCUBE(tex) tex, sampler##tex
+#define UNITY_PASS_TEXCUBE_SAMPLER(tex, samplertex) tex, sampler##samplertex
+#define UNITY_ARGS_TEX2D(tex) Texture2D tex, SamplerState sampler##tex
+#define UNITY_ARGS_TEXCUBE(tex) TextureCube tex, SamplerState sampler##tex
 // Screen-space textures (grab passes, camera targets): plain 2D textures in mono rendering.
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) tex2D(tex, uv)

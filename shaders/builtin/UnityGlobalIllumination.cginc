@@ -88,7 +88,7 @@ inline half3 UnityGI_IndirectSpecular(UnityGIInput data, half occlusion, Unity_G
         #if defined(UNITY_SPECCUBE_BOX_PROJECTION)
         glossIn.reflUVW = BoxProjectedCubemapDirection(originalReflUVW, data.worldPos, data.probePosition[1], data.boxMin[1], data.boxMax[1]);
         #endif
-        half3 env1 = Unity_GlossyEnvironment(UNITY_PASS_TEXCUBE(unity_SpecCube1), data.probeHDR[1], glossIn);
+        half3 env1 = Unity_GlossyEnvironment(UNITY_PASS_TEXCUBE_SAMPLER(unity_SpecCube1, unity_SpecCube0), data.probeHDR[1], glossIn);
         specular = lerp(env1, env0, blendLerp);
     } else {
         specular = env0;

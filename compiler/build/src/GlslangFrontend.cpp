@@ -70,6 +70,11 @@ std::unique_ptr<glslang::TShader> makeShader(const FrontendInput& input, const c
     // One descriptor set per stage (docs/SHADER_ABI.md §1): bindings are numbered per program, so
     // two stages sharing set 0 would give one binding two meanings in a pipeline layout.
     shader->setResourceSetBinding({std::to_string(descriptorSetOfStage(input.stage))});
+    // Unity's D3D11-style textures (`Texture2D t; SamplerState sampler_t; t.Sample(sampler_t, uv)`)
+    // become combined image samplers named after the texture, and the samplers go: every
+    // texture is one COMBINED_IMAGE_SAMPLER binding, whichever way it was declared
+    // (docs/SHADER_ABI.md §3).
+    if (isHlsl(input)) shader->setTextureSamplerTransformMode(EShTexSampTransUpgradeTextureRemoveSampler);
     return shader;
 }
 

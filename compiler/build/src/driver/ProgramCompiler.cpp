@@ -9,12 +9,14 @@
 
 #include "varc/build/GlslangFrontend.h"
 #include "varc/build/GlslangLogParser.h"
+#include "varc/build/SpirvImageOffsets.h"
 #include "varc/build/SpirvMatrixMath.h"
 #include "varc/build/SpirvOptimizer.h"
 #include "varc/build/SpirvReflection.h"
 #include "varc/core/JoinWords.h"
 #include "varc/frontend/EntryPointCheck.h"
 #include "varc/frontend/HlslRewrites.h"
+#include "varc/frontend/LoopVariableScope.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::compiler::detail {
@@ -50,7 +52,9 @@ Attempt compileAndValidate(const StageProgram& program, const std::string& text,
     if (!attempt.compiled.ok) return attempt;
     attempt.compiled.spirv = splitMatrixExtendedMath(attempt.compiled.spirv);
     attempt.optimized = optimizeSpirv(attempt.compiled.spirv, level);
-    if (attempt.optimized.ok) attempt.invalid = validateSpirv(attempt.optimized.spirv);
+    if (!attempt.optimized.ok) return attempt;
+    attempt.optimized.spirv = markConstantImageOffsets(attempt.optimized.spirv);
+    attempt.invalid = validateSpirv(attempt.optimized.spirv);
     return attempt;
 }
 
@@ -74,19 +78,36 @@ bool needsHlslRewrite(const StageProgram& program, const Attempt& attempt) {
             log.find("no matching overloaded function found") != std::string::npos);
 }
 
-// The functions glslang found no overload for: "ERROR: 3:85: 'Linear01Depth' : no matching
+// The names glslang quoted before |message| in |log|, each once: for
+// "' : no matching overloaded function found", "ERROR: 3:85: 'Linear01Depth' : no matching
 // overloaded function found" -> {"Linear01Depth"}.
-std::vector<std::string> unmatchedCalls(const std::string& log) {
-    static constexpr std::string_view kMessage = "' : no matching overloaded function found";
+std::vector<std::string> quotedNames(const std::string& log, std::string_view message) {
     std::vector<std::string> names;
-    for (size_t at = log.find(kMessage); at != std::string::npos;
-         at = log.find(kMessage, at + 1)) {
+    for (size_t at = log.find(message); at != std::string::npos; at = log.find(message, at + 1)) {
         size_t open = log.rfind('\'', at - 1);
         if (open == std::string::npos) continue;
         std::string name = log.substr(open + 1, at - open - 1);
         if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
     }
     return names;
+}
+
+// Appends the names in |more| that |names| does not hold yet.
+void appendNew(std::vector<std::string>& names, const std::vector<std::string>& more) {
+    for (const std::string& name : more) {
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+}
+
+// At most this many rewrites of one program (each one a glslang compile).
+constexpr int kMaxRewriteRounds = 4;
+
+// The functions glslang found no overload for, and the variables it did not know.
+std::vector<std::string> unmatchedCalls(const std::string& log) {
+    return quotedNames(log, "' : no matching overloaded function found");
+}
+std::vector<std::string> unknownVariables(const std::string& log) {
+    return quotedNames(log, "' : unknown variable");
 }
 
 }  // namespace
@@ -134,14 +155,21 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
                            ? std::string(program.text)
                            : fixFrontFaceParameterTypes(program.text);
     Attempt attempt = compileAndValidate(program, text, options.optimization);
-    if (needsHlslRewrite(program, attempt)) {
+    // glslang's HLSL parser stops at the first error, so what one rewrite fixes may uncover the
+    // next (a call needing a cast, then a loop variable used after its loop): each round
+    // rewrites the original text with everything the logs so far asked for. Either way the last
+    // program's outcome is the one to report: its errors are the ones left once the constructs
+    // Unity accepts are accepted.
+    std::vector<std::string> calls, unknownNames;
+    std::string previous = text;
+    for (int round = 0; round < kMaxRewriteRounds && needsHlslRewrite(program, attempt); ++round) {
+        appendNew(calls, unmatchedCalls(attempt.compiled.log));
+        appendNew(unknownNames, unknownVariables(attempt.compiled.log));
         std::string rewritten =
-            rewriteHlslForGlslang(text, unmatchedCalls(attempt.compiled.log));
-        // Either way the rewritten program's outcome is the one to report: its errors are the
-        // ones left once the constructs Unity accepts are accepted.
-        if (rewritten != text) {
-            attempt = compileAndValidate(program, rewritten, options.optimization);
-        }
+            hoistLoopVariables(rewriteHlslForGlslang(text, calls), unknownNames);
+        if (rewritten == previous) break;
+        attempt = compileAndValidate(program, rewritten, options.optimization);
+        previous = std::move(rewritten);
     }
     CompileOutput& compiled = attempt.compiled;
     result.diagnostics = parseGlslangLog(compiled.log, sourceMap);
