@@ -69,10 +69,11 @@ echo "== varc validate: the single-pass forward scenes (light buffer, per-object
 seeds=../shared/seeds
 if [ -d "$seeds" ]; then
     echo
-    echo "== varc validate: seeds 001 and 004 as their texts print them (assembled in $out/seed-texts) =="
+    echo "== varc validate: seeds 001 and 004 as their texts print them (assembled in $out/seed-texts),"
+    echo "   seed 002's own Custom/DeferredShading as the deferred path's light shader =="
     bash tests/library/assemble_seeds.sh "$seeds" "$out/seed-texts"
     "$varc" build -o "$out/seed-texts.svpack" "$out/seed-texts/seed001" "$out/seed-texts/seed004"
-    "$varc" validate --pack "$out/library.svpack" --pack "$out/seed-texts.svpack" \
+    "$varc" validate "${pack_args[@]}" --pack "$out/seed-texts.svpack" \
         --scenes tests/scenes/seeds --out "$out/seeds" || validate_status=$?
 fi
 

@@ -201,7 +201,8 @@ Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t inde
                                           const GBufferBindings& gbuffer, DeferredFrame& frame) {
     const scene::Light& light = scene.lights[index];
     const bool hdr = scene.camera.hdr;
-    const std::string what = "light " + std::to_string(index) + " (shader \"" + lightShader + "\")";
+    const std::string what =
+        "light " + std::to_string(index) + " (shader \"" + std::string(shader.name()) + "\")";
     std::optional<PassView> pass = shader.pass(size_t{0});
     if (!pass) return makeError(ErrorCode::NotFound, what + ": the shader has no pass 0");
     variants::LightDescription description;
@@ -280,7 +281,7 @@ Status DeferredRenderer::State::decodePhase(const std::optional<ShaderView>& sha
     std::optional<PassView> pass = shader->pass(size_t{1});
     if (!pass)
         return makeError(ErrorCode::NotFound,
-                         "deferred light shader \"" + lightShader + "\" has no pass 1");
+                         "deferred light shader \"" + std::string(shader->name()) + "\" has no pass 1");
     auto variant = pass->lookup(std::vector<std::string>{}, variants::SelectionPolicy::Closest);
     if (!variant) return makeError(variant.error().code, "LDR decode: " + variant.error().detail);
     pack::PackRenderState state = resolveRenderState(pass->renderState(), *frame.lightMaterial);
@@ -378,10 +379,12 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     frame.quadLayer = &frame.storage.values.emplace_back(fullScreenQuadValues(matrices));
     frame.lightMaterial = &frame.storage.values.emplace_back(lightPassMaterial(hdr));
     const Pack* lightPack = nullptr;
-    std::optional<ShaderView> lightShader = s.findShader(s.lightShader, &lightPack);
+    const std::string& lightShaderName =
+        scene.camera.deferredShader.empty() ? s.lightShader : scene.camera.deferredShader;
+    std::optional<ShaderView> lightShader = s.findShader(lightShaderName, &lightPack);
     if (!lightShader && (!scene.lights.empty() || !hdr)) {
         return makeError(ErrorCode::NotFound,
-                         "deferred light shader \"" + s.lightShader + "\": no pack has it");
+                         "deferred light shader \"" + lightShaderName + "\": no pack has it");
     }
     if (Status lit = s.lightPhase(scene, lightShader, lightPack, matrices, targets, frame); !lit)
         return lit.error();

@@ -171,7 +171,7 @@ bool readTransform(Reader& r, const json& value, const std::string& pointer, Tra
 bool readCamera(Reader& r, const json& value, const std::string& p, Camera& c) {
     if (!r.onlyKeys(value, p,
                     {"position", "target", "fov_y", "near", "far", "width", "height", "hdr", "path",
-                     "background"})) {
+                     "background", "deferred_shader"})) {
         return false;
     }
     if (value.contains("position") && !r.readVec3(value["position"], p + "/position", c.position))
@@ -211,6 +211,10 @@ bool readCamera(Reader& r, const json& value, const std::string& p, Camera& c) {
     }
     if (value.contains("background") &&
         !r.readColor(value["background"], p + "/background", c.background)) {
+        return false;
+    }
+    if (value.contains("deferred_shader") &&
+        !r.readString(value["deferred_shader"], p + "/deferred_shader", c.deferredShader)) {
         return false;
     }
     if (glm::length(c.target - c.position) == 0.0f) {

@@ -89,6 +89,16 @@ TEST(SceneParser, EmptyObjectGivesDefaults) {
     EXPECT_TRUE(scene->objects.empty());
 }
 
+TEST(SceneParser, DeferredShaderNamesTheLightShader) {
+    auto scene = parseScene(
+        R"({"camera":{"path":"deferred","deferred_shader":"Custom/DeferredShading"}})", "a.json");
+    ASSERT_TRUE(scene.ok());
+    EXPECT_EQ(scene->camera.deferredShader, "Custom/DeferredShading");
+    EXPECT_EQ(parseScene("{}", "a.json")->camera.deferredShader, "");  // the renderer's own
+    EXPECT_EQ(errorOf(R"({"camera":{"deferred_shader":3}})"),
+              "scenes/a.json: /camera/deferred_shader: expected a string, got number");
+}
+
 TEST(SceneParser, ColourWithThreeComponentsGetsAlphaOne) {
     auto scene = parseScene(
         R"({"objects":[{"mesh":"sphere","material":{"properties":{"_Color":[0.5,0.5,0.5]}}}]})",

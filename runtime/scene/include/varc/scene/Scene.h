@@ -44,6 +44,9 @@ struct Camera {
     bool hdr = false;
     RenderPath path = RenderPath::Forward;
     glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};  // linear clear colour
+    // The deferred path's light shader ("deferred_shader"; pass 0 lights, pass 1 decodes LDR),
+    // as Unity's Graphics settings choose it; "" = the renderer's own (varc/DeferredLight).
+    std::string deferredShader;
 };
 
 // A material property: a float, a vector/colour, or a texture: a built-in name ("white",
