@@ -29,6 +29,7 @@
 #include "varc/build/ProgramCache.h"
 #include "varc/build/StageEffects.h"
 #include "varc/core/JoinWords.h"
+#include "varc/pack/PartialPack.h"
 
 namespace varc::compiler {
 
@@ -81,12 +82,17 @@ private:
     void applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
                       const ItemOutcome& outcome);
     CompiledSource compileSource(const SourceProgram& source) const;
+    std::vector<uint32_t> shardsOfSources() const;
     // Remembers the first failure to write the cache (thread-safe); the build goes on.
     void noteCacheFailure(const Status& stored) const;
     // Where a program first used by |pass| came from, for runtime error messages.
     pack::SourceInfo sourceInfoOf(const LoadedPass& pass) const {
         SourceLocation origin = pass.pass->program->origin;
-        return {mSourceMap.path(origin.file), origin.line, pass.source.dependencies};
+        pack::SourceInfo info{mOptions.sourcePaths.map(mSourceMap.path(origin.file)), origin.line,
+                              {}};
+        for (const std::string& dependency : pass.source.dependencies)
+            info.dependencies.push_back(mOptions.sourcePaths.map(dependency));
+        return info;
     }
     void fillStats(const PassJob& job, CompiledPass& pass,
                    const std::vector<uint32_t>& finalIds) const;
@@ -316,14 +322,30 @@ CompiledSource Builder::compileSource(const SourceProgram& source) const {
     }
 }
 
+// The shard of each distinct source, by its text's length as the cost estimate (compile time
+// grows with the pruned text).
+std::vector<uint32_t> Builder::shardsOfSources() const {
+    std::vector<uint64_t> costs;
+    costs.reserve(mSources.size());
+    for (const SourceProgram& source : mSources) costs.push_back(source.text.size());
+    return assignShards(costs, mOptions.shard.count);
+}
+
 bool Builder::compileSources() {
     mCompiled.assign(mSources.size(), {});
+    std::vector<uint32_t> shardOf = shardsOfSources();
     std::atomic<bool> failed{false};
     std::atomic<size_t> done{0};
     parallelFor(
         mSources.size(), mThreads,
         [&](size_t i) {
             if (failed.load() && !mOptions.keepGoing) return;
+            if (shardOf[i] + 1 != mOptions.shard.index) {
+                mCompiled[i].ok = true;
+                mCompiled[i].otherShard = true;
+                mCompiled[i].spirv = pack::placeholderSpirv(static_cast<uint32_t>(i));
+                return;
+            }
             double start = threadCpuSeconds();
             mCompiled[i] = compileSource(mSources[i]);
             mCompiled[i].seconds = threadCpuSeconds() - start;
@@ -375,6 +397,7 @@ BuildOutput Builder::assemble() {
     output.compiledSources = mSources.size();
     for (const CompiledSource& compiled : mCompiled) output.cachedSources += compiled.fromCache;
     for (const CompiledSource& compiled : mCompiled) output.compileSeconds += compiled.seconds;
+    for (const CompiledSource& compiled : mCompiled) output.otherShardSources += compiled.otherShard;
     std::map<std::vector<uint32_t>, uint32_t> byBytes;
     std::vector<uint32_t> finalIds(mSources.size(), kNoProgram);
     for (const PassJob& job : mJobs) {

@@ -9,6 +9,7 @@
 #include "varc/build/GlslangFrontend.h"
 #include "varc/build/PropertyDefaults.h"
 #include "varc/build/SpirvOptimizer.h"
+#include "varc/build/StageInterfaces.h"
 #include "varc/packwriter/RenderStateConversion.h"
 #include "varc/variants/KeywordList.h"
 
@@ -45,11 +46,12 @@ std::optional<pack::PackPass> assemblePass(const LoadedShader& shader, const Com
 }
 
 // Hash of everything that decides the pack's bytes: every file read, options and versions.
-uint64_t inputsHash(const includes::SourceMap& sourceMap, const std::string& fingerprint) {
+uint64_t inputsHash(const includes::SourceMap& sourceMap, const includes::SourcePathMap& paths,
+                    const std::string& fingerprint) {
     XXH64_state_t* state = XXH64_createState();
     XXH64_reset(state, 0);
     for (FileId id = 0; id < sourceMap.size(); ++id) {
-        const std::string& path = sourceMap.path(id);
+        const std::string path = paths.map(sourceMap.path(id));
         const std::string& contents = sourceMap.contents(id);
         XXH64_update(state, path.data(), path.size() + 1);
         XXH64_update(state, contents.data(), contents.size());
@@ -80,6 +82,7 @@ std::vector<pack::ShaderProperty> propertiesOf(const LoadedShader& shader, Diagn
 std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& shaders,
                                                const BuildOutput& build,
                                                const includes::SourceMap& sourceMap,
+                                               const includes::SourcePathMap& paths,
                                                const std::string& optionsFingerprint,
                                                DiagnosticSink& sink) {
     pack::PackContents contents;
@@ -89,7 +92,7 @@ std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& 
     std::string fingerprint = optionsFingerprint;
     for (const pack::ToolVersion& tool : contents.toolchain)
         fingerprint += "|" + tool.name + " " + tool.version;
-    contents.inputsHash = inputsHash(sourceMap, fingerprint);
+    contents.inputsHash = inputsHash(sourceMap, paths, fingerprint);
     bool ok = true;
     std::vector<size_t> shaderSlot(shaders.size(), SIZE_MAX);
     for (const CompiledPass& compiled : build.passes) {
@@ -115,37 +118,18 @@ bool checkStageInterfaces(const std::vector<LoadedShader>& shaders, const BuildO
     bool ok = true;
     std::set<std::pair<uint32_t, uint32_t>> checked;
     for (const CompiledPass& pass : build.passes) {
-        for (const pack::PackVariant& variant : pass.variants) {
-            // The fragment stage reads what the last stage before rasterisation writes.
-            Stage producer = Stage::Vertex;
-            for (Stage stage : {Stage::Domain, Stage::Geometry}) {
-                if (variant.programs[stageIndex(stage)] != kNoProgram) producer = stage;
-            }
-            uint32_t feeding = variant.programs[stageIndex(producer)];
-            uint32_t fragment = variant.programs[stageIndex(Stage::Fragment)];
-            if (feeding == kNoProgram || fragment == kNoProgram ||
-                !checked.insert({feeding, fragment}).second)
-                continue;
-            const auto& outputs = build.programs[feeding].reflection.outputs;
-            for (const pack::StageVariable& input : build.programs[fragment].reflection.inputs) {
-                bool matched = false;
-                for (const pack::StageVariable& output : outputs) {
-                    matched =
-                        matched || (output.location == input.location && output.type == input.type);
-                }
-                if (matched) continue;
-                const LoadedShader& shader = shaders[pass.shaderIndex];
-                const LoadedPass& loaded = shader.passes[pass.passIndex];
-                sink.error(loaded.pass->program->origin,
-                           "fragment input '" + input.name + "' (location " +
-                               std::to_string(input.location) + ", " + input.type +
-                               ") is not written by the " + stageName(producer) + " program in " +
-                               describePass(shader.ast, *loaded.pass, loaded.index) +
-                               ", keywords: " +
-                               variants::joinKeywords(loaded.space->table().namesOf(variant.key)));
-                ok = false;
-            }
-        }
+        const LoadedShader& shader = shaders[pass.shaderIndex];
+        const LoadedPass& loaded = shader.passes[pass.passIndex];
+        auto report = [&](const pack::PackVariant& variant, Stage producer,
+                          const pack::StageVariable& input) {
+            sink.error(loaded.pass->program->origin,
+                       "fragment input '" + input.name + "' (location " +
+                           std::to_string(input.location) + ", " + input.type +
+                           ") is not written by the " + stageName(producer) + " program in " +
+                           describePass(shader.ast, *loaded.pass, loaded.index) + ", keywords: " +
+                           variants::joinKeywords(loaded.space->table().namesOf(variant.key)));
+        };
+        ok = checkVariantInterfaces(pass.variants, build.programs, checked, report) && ok;
     }
     return ok;
 }

@@ -26,6 +26,7 @@
 #include "varc/core/AtomicFile.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/frontend/VariantLimit.h"
+#include "varc/pack/PartialPack.h"
 #include "varc/packwriter/PackWriter.h"
 
 namespace varc::cli {
@@ -50,6 +51,18 @@ includes::IncludeOptions includeOptions(const Options& options) {
     return result;
 }
 
+// How the pack records source paths: relative to --project-root (default: the current folder),
+// with the --file-prefix-map rules (checked when parsed).
+includes::SourcePathMap sourcePathMap(const Options& options) {
+    std::error_code error;
+    std::filesystem::path root = options.projectRoot.empty()
+                                     ? std::filesystem::current_path(error)
+                                     : std::filesystem::absolute(options.projectRoot, error);
+    includes::SourcePathMap map(error ? std::string() : root.lexically_normal().string());
+    for (const std::string& rule : options.filePrefixMaps) map.addRule(rule);
+    return map;
+}
+
 // Loads every input shader; false when any failed (diagnostics are in |session|).
 bool loadAll(const Options& options, Session& session,
              std::vector<compiler::LoadedShader>& shaders) {
@@ -68,17 +81,23 @@ bool loadAll(const Options& options, Session& session,
     return !session.diagnostics.hasErrors();
 }
 
+// --max-variants for every pass of |shaders|: false (errors in |session|) when one has more.
+bool checkVariantLimits(const std::vector<compiler::LoadedShader>& shaders, const Options& options,
+                        Session& session) {
+    bool ok = true;
+    for (const compiler::LoadedShader& shader : shaders) {
+        for (const compiler::LoadedPass& pass : shader.passes) {
+            ok = compiler::checkVariantLimit(shader, pass, options.maxVariants,
+                                             session.diagnostics) && ok;
+        }
+    }
+    return ok;
+}
+
 int runVariants(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
     std::vector<compiler::LoadedShader> shaders;
     bool ok = loadAll(options, session, shaders);
-    if (ok && options.list) {
-        for (const compiler::LoadedShader& shader : shaders) {
-            for (const compiler::LoadedPass& pass : shader.passes) {
-                ok = compiler::checkVariantLimit(shader, pass, options.maxVariants,
-                                                 session.diagnostics) && ok;
-            }
-        }
-    }
+    if (ok && options.list) ok = checkVariantLimits(shaders, options, session);
     printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
     if (!ok) return kExitFailure;
     if (options.json) {
@@ -92,6 +111,8 @@ int runVariants(const Options& options, Session& session, std::ostream& out, std
 int runLock(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
     std::vector<compiler::LoadedShader> shaders;
     bool ok = loadAll(options, session, shaders);
+    // A lock records what builds: a pass that cannot be built does not belong in one.
+    if (ok) ok = checkVariantLimits(shaders, options, session);
     printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
     if (!ok) return kExitFailure;
     std::string lockDir = std::filesystem::path(options.lockPath).parent_path().string();
@@ -197,6 +218,8 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     buildOptions.maxVariantsPerPass = options.maxVariants;
     buildOptions.debugNames = options.debugNames;
     buildOptions.progress = progressPrinter(err);
+    if (!options.shard.empty()) buildOptions.shard = *compiler::parseShardSpec(options.shard);
+    buildOptions.sourcePaths = sourcePathMap(options);
     auto build = compiler::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);
     printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
     if (!build) {
@@ -206,8 +229,17 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     PackSizes sizes = measureSpirv(*build);
     std::optional<pack::PackContents> contents;
     if (compiler::checkStageInterfaces(shaders, *build, session.diagnostics)) {
+        // -g changes the SPIR-V, so it is part of what parts of one sharded build must share.
+        std::string fingerprint =
+            "optimization=" + options.optimization + (options.debugNames ? " -g" : "");
         contents = compiler::assemblePack(shaders, *build, session.sourceMap,
-                                          "optimization=" + options.optimization, session.diagnostics);
+                                          buildOptions.sourcePaths, fingerprint,
+                                          session.diagnostics);
+    }
+    if (contents && !buildOptions.shard.whole()) {
+        contents->toolchain.push_back({std::string(pack::kShardTool),
+                                       buildOptions.shard.text() + " level=" +
+                                           std::to_string(options.compressionLevel)});
     }
     if (!contents) {
         printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
@@ -233,9 +265,21 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.json) {
-        out << buildReportJson(shaders, *build, sizes, seconds).dump() << "\n";
+        nlohmann::ordered_json report = buildReportJson(shaders, *build, sizes, seconds);
+        if (!buildOptions.shard.whole()) {
+            report["shard"] = {{"shard", buildOptions.shard.text()},
+                               {"compiled", build->compiledSources - build->otherShardSources},
+                               {"left_to_other_shards", build->otherShardSources}};
+        }
+        out << report.dump() << "\n";
     } else {
         printBuildReport(shaders, *build, sizes, seconds, out);
+        if (!buildOptions.shard.whole()) {
+            out << "Shard " << buildOptions.shard.text() << ": compiled "
+                << build->compiledSources - build->otherShardSources << " of "
+                << build->compiledSources << " distinct programs; the partial pack holds "
+                << "placeholders for the others (join the parts with `varc merge`)\n";
+        }
         out << "wrote " << options.outputPath << "\n";
     }
     return kExitOk;
@@ -252,6 +296,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         case Command::Lock: return runLock(options, session, out, err);
         case Command::Check: return runCheck(options, session, out, err);
         case Command::Build: return runBuild(options, session, out, err);
+        case Command::Merge: return runMerge(options, out, err);
         case Command::Info: return runInfo(options, out, err);
         case Command::Extract: return runExtract(options, out, err);
         case Command::Lookup: return runLookup(options, out, err);

@@ -2,6 +2,9 @@
 // Command-line parsing for `varc`, through CLI11, into an Options struct.
 #include "varc/cli/Options.h"
 
+#include "varc/build/ShardPlan.h"
+#include "varc/includes/SourcePathMap.h"
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdlib>
@@ -65,6 +68,7 @@ void addVariants(CLI::App& app, Options& options) {
 void addLock(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("lock", "Write variant counts to a lock file");
     cmd->add_option("-o,--output", options.lockPath, "Lock file to write")->required();
+    addMaxVariants(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Lock; });
 }
@@ -101,8 +105,37 @@ void addBuild(CLI::App& app, Options& options) {
                     "Reuse and store compiled programs in this folder (ccache-like)")
         ->envname("VARC_CACHE_DIR")
         ->type_name("DIR");
+    cmd->add_option("--shard", options.shard,
+                    "Compile only shard K of N of the distinct programs into a partial pack "
+                    "(join the N parts with `varc merge`)")
+        ->type_name("K/N")
+        ->check([](const std::string& text) {
+            return compiler::parseShardSpec(text)
+                       ? std::string()
+                       : "expected K/N with 1 <= K <= N <= " +
+                             std::to_string(compiler::kMaxShards) + ", got '" + text + "'";
+        });
+    cmd->add_option("--file-prefix-map", options.filePrefixMaps,
+                    "Record source paths starting with OLD as starting with NEW (as GCC's "
+                    "-ffile-prefix-map; other paths inside the project root are recorded "
+                    "relative to it)")
+        ->type_name("OLD=NEW")
+        ->check([](const std::string& rule) {
+            return includes::SourcePathMap().addRule(rule) ? std::string()
+                                                           : "expected OLD=NEW, got '" + rule + "'";
+        });
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Build; });
+}
+
+void addMerge(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand(
+        "merge", "Join the partial packs of `varc build --shard K/N` into the whole build's pack");
+    cmd->add_option("-o,--output", options.outputPath, "Pack file to write")->required();
+    cmd->add_option("parts", options.inputs, "The N partial packs, in any order")
+        ->required()
+        ->type_name("PART");
+    cmd->callback([&options] { options.command = Command::Merge; });
 }
 
 void addInfo(CLI::App& app, Options& options) {
@@ -198,6 +231,7 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
     addLock(app, options);
     addCheck(app, options, growthText);
     addBuild(app, options);
+    addMerge(app, options);
     addInfo(app, options);
     addExtract(app, options);
     addLookup(app, options);

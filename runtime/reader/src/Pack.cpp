@@ -5,6 +5,7 @@
 #include "PackImage.h"
 #include "varc/core/Check.h"
 #include "varc/pack/PackTables.h"
+#include "varc/pack/PartialPack.h"
 
 namespace varc::runtime {
 
@@ -17,7 +18,16 @@ Pack::~Pack() = default;
 
 Result<Pack> Pack::load(std::unique_ptr<detail::PackImage> image, const OpenOptions& options) {
     if (Status status = image->load(options); !status) return status.error();
-    return Pack(std::move(image));
+    Pack pack(std::move(image));
+    if (!options.acceptPartial) {
+        for (const pack::ToolVersion& tool : pack.toolchain()) {
+            if (tool.name != pack::kShardTool) continue;
+            return makeError(ErrorCode::InvalidInput,
+                             "a partial pack (shard " + tool.version.substr(0, tool.version.find(' ')) +
+                                 " of `varc build --shard`): join the parts with `varc merge`");
+        }
+    }
+    return pack;
 }
 
 Result<Pack> Pack::open(const std::string& path, const OpenOptions& options) {

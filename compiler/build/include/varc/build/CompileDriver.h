@@ -9,11 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "varc/build/ShardPlan.h"
 #include "varc/build/SpirvOptimizer.h"
 #include "varc/core/Diagnostic.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/frontend/VariantLimit.h"
 #include "varc/includes/SourceMap.h"
+#include "varc/includes/SourcePathMap.h"
 #include "varc/pack/PackModel.h"
 #include "varc/variants/VariantKey.h"
 
@@ -34,6 +36,11 @@ struct BuildOptions {
     // A ProgramCache folder: programs found there are not compiled again, programs compiled are
     // stored there. "" = no cache.
     std::string cacheDirectory;
+    // Compile only this shard's share of the distinct programs (ShardPlan.h); the others become
+    // placeholders (varc/pack/PartialPack.h) for `varc merge` to fill from the other parts.
+    ShardSpec shard;
+    // How the pack records source paths (relative to the project root, prefix maps).
+    includes::SourcePathMap sourcePaths;
     // A pass with more variants is an error before anything is enumerated (VariantLimit.h).
     uint64_t maxVariantsPerPass = kDefaultMaxVariantsPerPass;
     // Called from worker threads after each distinct program compiles: (done, total). Must be
@@ -70,6 +77,7 @@ struct BuildOutput {
     size_t preprocessedPrograms = 0;        // glslang preprocessing runs (before pruning)
     size_t cachedSources = 0;               // of compiledSources, taken from the program cache
     size_t cachedStageSources = 0;          // pruned (variant, stage) sources taken from it
+    size_t otherShardSources = 0;           // of compiledSources, left to other shards
     // Sum over compiled sources of their in-process compile CPU time (glslang, optimiser,
     // validator, reflection), excluding preprocessing and dedup: divided by the thread count, the
     // floor a parallel build of these distinct programs cannot beat. Measured: not deterministic.

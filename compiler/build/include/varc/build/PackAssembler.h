@@ -10,17 +10,20 @@
 #include "varc/core/Diagnostic.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/SourceMap.h"
+#include "varc/includes/SourcePathMap.h"
 #include "varc/pack/PackModel.h"
 
 namespace varc::compiler {
 
 // Fills shaders -> passes (render state, tags, keyword table, declared sets, variants in
 // enumeration order) and programs (SPIR-V, reflection, source info), the toolchain versions and
-// a hash of every input (file contents, |optionsFingerprint|, versions). Render-state values
+// a hash of every input (file contents and their paths as |paths| records them,
+// |optionsFingerprint|, versions). Render-state values
 // that are not valid ShaderLab are reported at the pass; returns nullopt then.
 std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& shaders,
                                                const BuildOutput& build,
                                                const includes::SourceMap& sourceMap,
+                                               const includes::SourcePathMap& paths,
                                                const std::string& optionsFingerprint,
                                                DiagnosticSink& sink);
 

@@ -10,7 +10,9 @@
 
 namespace varc::cli {
 
-enum class Command { None, Variants, Lock, Check, Build, Info, Extract, Lookup, Render, Validate };
+enum class Command {
+    None, Variants, Lock, Check, Build, Merge, Info, Extract, Lookup, Render, Validate
+};
 
 // A growth allowance for `varc check --max-growth`: N variants, or N percent of the lock.
 struct GrowthLimit {
@@ -39,6 +41,9 @@ struct Options {
     uint64_t maxVariants = 10'000'000;     // --max-variants N: per pass, for build and --list
     bool debugNames = false;               // -g, --debug-names
     int compressionLevel = 19;             // --compression-level N (zstd, 1..22)
+    std::string shard;                     // --shard K/N ("" = the whole build)
+    std::vector<std::string> filePrefixMaps;  // --file-prefix-map OLD=NEW
+    // merge: the parts are |inputs|, the pack |outputPath|
     // info / extract / lookup
     std::string packPath;                  // the PACK argument
     std::string lookupShader;              // --shader NAME

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// The commands that read a built pack through the runtime library: `varc info`, `varc extract`
-// and `varc lookup`. They never compile anything; a pack that fails to open is exit code 2.
+// The commands that read a built pack through the runtime library: `varc info`, `varc extract`,
+// `varc lookup` and `varc merge`. They never compile anything; a pack that fails to open is exit
+// code 2.
 #pragma once
 
 #include <iosfwd>
@@ -21,5 +22,10 @@ int runExtract(const Options& options, std::ostream& out, std::ostream& err);
 // Finds the variant for a keyword set or a light description under a selection policy and
 // prints it with its programs. Exit 1 when the policy finds no variant.
 int runLookup(const Options& options, std::ostream& out, std::ostream& err);
+
+// Joins the partial packs of `varc build --shard K/N` (Options::inputs) into the pack the whole
+// build writes (Options::outputPath), byte for byte. Exit 1 when the parts do not make one build
+// or their programs do not fit together; nothing is written then.
+int runMerge(const Options& options, std::ostream& out, std::ostream& err);
 
 }  // namespace varc::cli

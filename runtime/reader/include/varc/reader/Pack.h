@@ -29,6 +29,9 @@ struct OpenOptions {
     // Build a hash index over the keys of every pass with 64 or more variants (16 bytes per
     // variant), so exact lookups take one probe instead of a binary search. Off: less memory.
     bool indexKeys = true;
+    // Accept a partial pack (`varc build --shard K/N`, PartialPack.h), whose placeholder programs
+    // are not SPIR-V: only for `varc merge`. Off: a part is rejected with an error that says so.
+    bool acceptPartial = false;
 };
 
 // Thread-safety contract: a Pack and every view obtained from it are immutable after open()
@@ -50,7 +53,9 @@ public:
     // structure; blob decompression (lazy) is the only remaining failure. Errors name |path| and
     // the problem: "pack.vpk: bad magic: not a varc pack", "...: unsupported pack version 2.0",
     // "...: truncated pack: 100 bytes, but the header's file size needs 4096",
-    // "...: checksum mismatch in chunk PASS". IoError when the file cannot be opened or mapped.
+    // "...: checksum mismatch in chunk PASS", "...: a partial pack (shard 2/4 of `varc build
+    // --shard`): join the parts with `varc merge`". IoError when the file cannot be opened or
+    // mapped.
     static Result<Pack> open(const std::string& path, const OpenOptions& options = {});
 
     // As open(), from bytes in memory, which are copied (into 8-aligned storage). For tests and
