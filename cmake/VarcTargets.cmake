@@ -52,7 +52,8 @@ endfunction()
 
 # varc_add_library(<name> [INTERFACE] [SOURCES src/a.cpp ...] [PUBLIC dep ...] [PRIVATE dep ...])
 # Defines the library of the current folder: target varc_<name> with alias varc::<name>, its
-# public headers in include/varc/<name>/, its private ones in src/, varc's warning set. The name,
+# public headers in include/varc/<name>/ (the install tree's include/ once installed), its private
+# ones in src/, varc's warning set. The name,
 # folder and direct links are recorded for the layout check (cmake/CheckLayout.cmake), which
 # fails when a library includes a header of a library it does not link.
 function(varc_add_library name)
@@ -60,15 +61,20 @@ function(varc_add_library name)
     set(tgt varc_${name})
     if(ARG_INTERFACE)
         add_library(${tgt} INTERFACE)
-        target_include_directories(${tgt} INTERFACE include)
+        target_include_directories(${tgt} INTERFACE
+            $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>)
         target_link_libraries(${tgt} INTERFACE ${ARG_PUBLIC})
     else()
         add_library(${tgt} STATIC ${ARG_SOURCES})
-        target_include_directories(${tgt} PUBLIC include PRIVATE src)
+        target_include_directories(${tgt}
+            PUBLIC $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+            PRIVATE src)
         target_link_libraries(${tgt} PUBLIC ${ARG_PUBLIC} PRIVATE ${ARG_PRIVATE})
         varc_target_defaults(${tgt})
     endif()
     add_library(varc::${name} ALIAS ${tgt})
+    # Installed and exported as varc::<name> too (cmake/VarcInstall.cmake).
+    set_target_properties(${tgt} PROPERTIES EXPORT_NAME ${name})
     file(RELATIVE_PATH folder "${PROJECT_SOURCE_DIR}" "${CMAKE_CURRENT_SOURCE_DIR}")
     set_property(GLOBAL APPEND PROPERTY VARC_LIBRARIES ${name})
     set_property(GLOBAL PROPERTY VARC_LIBRARY_${name}_FOLDER ${folder})

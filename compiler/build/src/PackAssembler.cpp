@@ -79,6 +79,12 @@ std::vector<pack::ShaderProperty> propertiesOf(const LoadedShader& shader, Diagn
 
 }  // namespace
 
+std::vector<pack::ToolVersion> toolchainVersions() {
+    return {{"varc", VARC_VERSION},
+            {"glslang", glslangVersionString()},
+            {"SPIRV-Tools", spirvToolsVersionString()}};
+}
+
 std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& shaders,
                                                const BuildOutput& build,
                                                const includes::SourceMap& sourceMap,
@@ -86,9 +92,7 @@ std::optional<pack::PackContents> assemblePack(const std::vector<LoadedShader>& 
                                                const std::string& optionsFingerprint,
                                                DiagnosticSink& sink) {
     pack::PackContents contents;
-    contents.toolchain = {{"varc", VARC_VERSION},
-                          {"glslang", glslangVersionString()},
-                          {"SPIRV-Tools", spirvToolsVersionString()}};
+    contents.toolchain = toolchainVersions();
     std::string fingerprint = optionsFingerprint;
     for (const pack::ToolVersion& tool : contents.toolchain)
         fingerprint += "|" + tool.name + " " + tool.version;

@@ -45,9 +45,6 @@ includes::IncludeOptions includeOptions(const Options& options) {
     result.includeDirs = options.includeDirs;
     result.builtinDir = options.builtinIncludeDir;
     result.projectRoot = options.projectRoot;
-#ifdef VARC_DEFAULT_BUILTIN_INCLUDE_DIR
-    if (result.builtinDir.empty()) result.builtinDir = VARC_DEFAULT_BUILTIN_INCLUDE_DIR;
-#endif
     return result;
 }
 
@@ -302,6 +299,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         case Command::Lookup: return runLookup(options, out, err);
         case Command::Render: return runRender(options, out, err);
         case Command::Validate: return runValidate(options, out, err);
+        case Command::Generate:  // parseOptions wrote it
         case Command::None: break;
     }
     err << "varc: error: no command given\n";

@@ -10,6 +10,12 @@
 #include <cstdlib>
 #include <ostream>
 
+#include "BashCompletion.h"
+#include "BuiltinIncludeDir.h"
+#include "ManPage.h"
+#include "varc/build/PackAssembler.h"
+#include "varc/core/AtomicFile.h"
+
 namespace varc::cli {
 
 namespace {
@@ -67,7 +73,9 @@ void addVariants(CLI::App& app, Options& options) {
 
 void addLock(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("lock", "Write variant counts to a lock file");
-    cmd->add_option("-o,--output", options.lockPath, "Lock file to write")->required();
+    cmd->add_option("-o,--output", options.lockPath, "Lock file to write")
+        ->required()
+        ->type_name("FILE");
     addMaxVariants(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Lock; });
@@ -75,9 +83,12 @@ void addLock(CLI::App& app, Options& options) {
 
 void addCheck(CLI::App& app, Options& options, std::string& growthText) {
     CLI::App* cmd = app.add_subcommand("check", "Compare variant counts with a lock file");
-    cmd->add_option("--lock", options.lockPath, "Lock file to compare with")->required();
+    cmd->add_option("--lock", options.lockPath, "Lock file to compare with")
+        ->required()
+        ->type_name("FILE");
     auto* growth = cmd->add_option("--max-growth", growthText,
-                                   "Allow each shader to grow by N variants (or N%)");
+                                   "Allow each shader to grow by N variants (or N%)")
+                      ->type_name("N|N%");
     cmd->add_option("--budget", options.budget, "Fail when a shader has more than N variants")
         ->excludes(growth);
     addInputOptions(*cmd, options);
@@ -86,12 +97,16 @@ void addCheck(CLI::App& app, Options& options, std::string& growthText) {
 
 void addBuild(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("build", "Compile every variant into a SPIR-V pack");
-    cmd->add_option("-o,--output", options.outputPath, "Pack file to write")->required();
+    cmd->add_option("-o,--output", options.outputPath, "Pack file to write")
+        ->required()
+        ->type_name("FILE");
     cmd->add_option("-j,--jobs", options.jobs, "Worker threads (default: all cores)");
     cmd->add_option("--optimization", options.optimization,
                     "Optimisation level; also written -O0, -O (default), -Os")
+        ->type_name("LEVEL")
         ->check(CLI::IsMember({"-O0", "-O", "-Os"}));
-    cmd->add_option("--depfile", options.depfilePath, "Write a Make-style dependency file");
+    cmd->add_option("--depfile", options.depfilePath, "Write a Make-style dependency file")
+        ->type_name("FILE");
     cmd->add_flag("--json", options.json, "Print the build summary as JSON");
     cmd->add_flag("--keep-going", options.keepGoing, "Compile everything to report all errors");
     cmd->add_option("--compression-level", options.compressionLevel,
@@ -158,21 +173,26 @@ void addExtract(CLI::App& app, Options& options) {
 void addLookup(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("lookup", "Find the variant for keywords or a light");
     cmd->add_option("pack", options.packPath, "Pack file")->required()->type_name("PACK");
-    cmd->add_option("--shader", options.lookupShader, "Shader name")->required();
+    cmd->add_option("--shader", options.lookupShader, "Shader name")->required()->type_name("NAME");
     cmd->add_option("--pass", options.lookupPass, "Pass index or LightMode")
         ->required()
         ->type_name("N|LIGHTMODE");
     auto* keywords =
         cmd->add_option("--keywords", options.lookupKeywords,
-                        "Enabled keywords, space-separated (with --light: the material's)");
+                        "Enabled keywords, space-separated (with --light: the material's)")
+            ->type_name("\"A B\"");
     auto* light =
-        cmd->add_option("--light", options.lookupLight, "Light type: directional, point or spot");
+        cmd->add_option("--light", options.lookupLight, "Light type: directional, point or spot")
+                     ->type_name("TYPE");
     cmd->add_flag("--cookie", options.lookupCookie, "The light has a cookie")->needs(light);
-    cmd->add_option("--shadows", options.lookupShadows, "none, hard or soft")->needs(light);
+    cmd->add_option("--shadows", options.lookupShadows, "none, hard or soft")
+        ->type_name("MODE")
+        ->needs(light);
     cmd->add_option("--vertex-lights", options.lookupVertexLights, "Point lights shaded per vertex")
         ->needs(light);
     cmd->add_flag("--hdr", options.lookupHdr, "The camera renders HDR")->needs(light);
-    cmd->add_option("--policy", options.lookupPolicy, "exact, closest (default), first or strict");
+    cmd->add_option("--policy", options.lookupPolicy, "exact, closest (default), first or strict")
+        ->type_name("POLICY");
     cmd->add_flag("--json", options.json, "Print JSON");
     cmd->callback([&options, keywords, light] {
         options.command = Command::Lookup;
@@ -185,27 +205,78 @@ void addLookup(CLI::App& app, Options& options) {
 void addRender(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("render", "Render a scene with pack variants on Vulkan");
     cmd->add_option("packs", options.packPaths, "Pack files")->required()->type_name("PACK");
-    cmd->add_option("--scene", options.scenePath, "Scene JSON")->required();
-    cmd->add_option("-o,--output", options.outputPath, "PNG to write")->required();
+    cmd->add_option("--scene", options.scenePath, "Scene JSON")->required()->type_name("FILE");
+    cmd->add_option("-o,--output", options.outputPath, "PNG to write")
+        ->required()
+        ->type_name("FILE");
     cmd->add_option("--reference", options.referencePath,
-                    "Also render the CPU reference to this PNG");
-    cmd->add_option("--diff", options.diffPath, "Also compare and write the diff image here");
+                    "Also render the CPU reference to this PNG")
+        ->type_name("FILE");
+    cmd->add_option("--diff", options.diffPath, "Also compare and write the diff image here")
+        ->type_name("FILE");
     cmd->add_option("--pipeline-cache", options.pipelineCachePath,
-                    "VkPipelineCache file to load and save");
+                    "VkPipelineCache file to load and save")
+        ->type_name("FILE");
     cmd->callback([&options] { options.command = Command::Render; });
 }
 
 void addValidate(CLI::App& app, Options& options) {
     CLI::App* cmd =
         app.add_subcommand("validate", "Render every scene and compare with the CPU reference");
-    cmd->add_option("--pack", options.packPaths, "Pack files (repeat)")->required();
-    cmd->add_option("--scenes", options.scenesDir, "Scene folder (default tests/scenes/forward)");
-    cmd->add_option("--out", options.outputPath, "Folder for the PNGs (default validate-out)");
+    cmd->add_option("--pack", options.packPaths, "Pack files (repeat)")
+        ->required()
+        ->type_name("PACK");
+    cmd->add_option("--scenes", options.scenesDir, "Scene folder (default tests/scenes/forward)")
+        ->type_name("DIR");
+    cmd->add_option("--out", options.outputPath, "Folder for the PNGs (default validate-out)")
+        ->type_name("DIR");
     cmd->add_flag("--list-uncovered", options.list,
                   "Also list each variant no matching scene drew");
     cmd->add_option("--pipeline-cache", options.pipelineCachePath,
-                    "VkPipelineCache file to load and save");
+                    "VkPipelineCache file to load and save")
+        ->type_name("FILE");
     cmd->callback([&options] { options.command = Command::Validate; });
+}
+
+// Hidden (no group, so neither --help nor the completion shows it): the build writes the man page
+// and the bash completion from this very definition.
+void addGenerate(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("_generate", "Write the man page or the bash completion");
+    cmd->group("");
+    cmd->add_option("what", options.generateWhat, "man or bash-completion")
+        ->required()
+        ->check(CLI::IsMember({"man", "bash-completion"}));
+    cmd->add_option("-o,--output", options.outputPath, "File to write")
+        ->required()
+        ->type_name("FILE");
+    cmd->callback([&options] { options.command = Command::Generate; });
+}
+
+// The built-in include folder when --builtin-include-dir is not given: $VARC_BUILTIN_INCLUDE_DIR,
+// else the installed or source-tree default.
+std::string builtinIncludeDirUnlessGiven() {
+    const char* env = std::getenv("VARC_BUILTIN_INCLUDE_DIR");
+    return env && *env ? std::string(env) : defaultBuiltinIncludeDir();
+}
+
+// `varc --version`: the versions a pack records, then where the built-in includes are read.
+std::string versionText() {
+    std::string text;
+    for (const pack::ToolVersion& tool : compiler::toolchainVersions())
+        text += tool.name + " " + tool.version + "\n";
+    return text + "built-in includes: " + builtinIncludeDirUnlessGiven();
+}
+
+// Runs `_generate`: writes the man page or completion for |app| to options.outputPath.
+int writeGenerated(const CLI::App& app, const Options& options, std::ostream& err) {
+    std::string text = options.generateWhat == "man"
+                           ? manPage(app, compiler::toolchainVersions().front().version)
+                           : bashCompletion(app);
+    if (Status written = writeFileAtomically(options.outputPath, text); !written) {
+        err << "varc: error: " << written.error().detail << "\n";
+        return kExitFailure;
+    }
+    return kExitOk;
 }
 
 // CLI11 has no multi-letter short options, so -O0/-O/-Os become --optimization=<same>.
@@ -226,6 +297,12 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
                                 std::ostream& out, std::ostream& err) {
     CLI::App app{"varc: Unity-style shader variants to SPIR-V packs", "varc"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", versionText,
+                         "Print the versions of varc, glslang and SPIRV-Tools and the built-in "
+                         "include folder");
+    app.footer(
+        "Built-in includes: --builtin-include-dir, else $VARC_BUILTIN_INCLUDE_DIR, else "
+        "<prefix>/share/varc/builtin beside an installed varc.");
     std::string growthText;
     addVariants(app, options);
     addLock(app, options);
@@ -237,6 +314,7 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
     addLookup(app, options);
     addRender(app, options);
     addValidate(app, options);
+    addGenerate(app, options);
     try {
         std::vector<std::string> args = normalizeArguments(argc, argv);
         app.parse(args);
@@ -252,10 +330,9 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
         }
     }
     if (options.builtinIncludeDir.empty()) {
-        if (const char* env = std::getenv("VARC_BUILTIN_INCLUDE_DIR")) {
-            options.builtinIncludeDir = env;
-        }
+        options.builtinIncludeDir = builtinIncludeDirUnlessGiven();
     }
+    if (options.command == Command::Generate) return writeGenerated(app, options, err);
     return std::nullopt;
 }
 

@@ -15,6 +15,10 @@
 
 namespace varc::compiler {
 
+// The versions a pack records and `varc --version` prints, in this order: varc (the project
+// version), glslang (major.minor.patch) and SPIRV-Tools (its software version string).
+std::vector<pack::ToolVersion> toolchainVersions();
+
 // Fills shaders -> passes (render state, tags, keyword table, declared sets, variants in
 // enumeration order) and programs (SPIR-V, reflection, source info), the toolchain versions and
 // a hash of every input (file contents and their paths as |paths| records them,

@@ -11,7 +11,7 @@
 namespace varc::cli {
 
 enum class Command {
-    None, Variants, Lock, Check, Build, Merge, Info, Extract, Lookup, Render, Validate
+    None, Variants, Lock, Check, Build, Merge, Info, Extract, Lookup, Render, Validate, Generate
 };
 
 // A growth allowance for `varc check --max-growth`: N variants, or N percent of the lock.
@@ -62,6 +62,8 @@ struct Options {
     std::string diffPath;                  // render --diff d.png
     std::string scenesDir;                 // validate --scenes DIR
     std::string pipelineCachePath;         // render/validate --pipeline-cache FILE
+    // _generate (hidden; the build runs it): "man" or "bash-completion", written to outputPath
+    std::string generateWhat;
 };
 
 // Exit codes shared by every subcommand.
@@ -70,7 +72,8 @@ inline constexpr int kExitFailure = 1;  // input errors; for `check`, a mismatch
 inline constexpr int kExitUsage = 2;    // bad command line; for `check`, also input errors
 
 // Parses |argv| into |options|. Returns nullopt to continue, or an exit code when parsing
-// ended the run (help printed to |out|, usage error printed to |err|).
+// ended the run (help or --version printed to |out|, usage error printed to |err|, or the
+// hidden `_generate` command wrote the man page or bash completion from this definition).
 std::optional<int> parseOptions(int argc, const char* const* argv, Options& options,
                                 std::ostream& out, std::ostream& err);
 
