@@ -135,11 +135,6 @@ fxc (which Unity uses for Direct3D) rejects as well.
 
 * **Too many variants** (\`--max-variants\`): a full Standard-style pass of over a million
   variants is refused before enumeration; build it with a higher limit or strip keywords.
-* **DX11-style separate textures and samplers used directly** (\`sampler_MainTex\`,
-  \`Texture2D\` parameters): varc's CG library declares every \`UNITY_DECLARE_TEX2D\` texture as a
-  combined image sampler (docs/SHADER_ABI.md §1), so the \`sampler_<name>\` object Unity declares
-  beside it on Direct3D 11 does not exist. Shaders that only use the \`UNITY_SAMPLE_TEX2D*\`
-  macros build.
 * **Faults in the shader**: a variable declared twice in one scope when two keywords are on
   together (\`redefinition\`); \`TRANSFER_SHADOW\` in a struct without the \`pos\` member it
   writes (\`SHADOWS_SCREEN\`); \`tex2D\` on the cube cookie \`_LightTexture0\` of a
