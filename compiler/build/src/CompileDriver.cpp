@@ -60,7 +60,9 @@ public:
         : mSourceMap(sourceMap),
           mOptions(options),
           mThreads(options.jobs ? options.jobs : defaultThreadCount()) {
-        if (!options.cacheDirectory.empty()) {
+        if (options.cache) {
+            mCache = std::make_unique<ProgramCache>(options.cache);
+        } else if (!options.cacheDirectory.empty()) {
             mCache = std::make_unique<ProgramCache>(options.cacheDirectory);
         }
     }
@@ -73,6 +75,12 @@ public:
 
     size_t preprocessedPrograms() const { return mPreprocessed; }
     const std::string& cacheError() const { return mCacheError; }
+    std::vector<cache::CacheLevelStats> cacheStats() const {
+        return mCache ? mCache->chain().stats() : std::vector<cache::CacheLevelStats>{};
+    }
+    std::vector<std::string> cacheWarnings() const {
+        return mCache ? mCache->chain().warnings() : std::vector<std::string>{};
+    }
     size_t cachedStageSources() const { return mCachedStageSources; }
 
 private:
@@ -102,7 +110,7 @@ private:
     size_t mCachedStageSources = 0;  // pruned sources read from the cache
     std::vector<CompiledSource> mCompiled;
     DiagnosticGrouper mGrouper;
-    std::unique_ptr<ProgramCache> mCache;  // null without BuildOptions::cacheDirectory
+    std::unique_ptr<ProgramCache> mCache;  // null without a cache in BuildOptions
     mutable std::mutex mCacheErrorMutex;
     mutable std::string mCacheError;  // the first failure to store an entry
 };
@@ -427,10 +435,13 @@ std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shader
     if (!builder.cacheError().empty()) {
         sink.warning({}, "the program cache is not updated: " + builder.cacheError());
     }
+    // One warning per cache level that failed or refused writes; the build went on without it.
+    for (const std::string& warning : builder.cacheWarnings()) sink.warning({}, warning);
     if (!ok) return std::nullopt;
     BuildOutput output = builder.assemble();
     output.preprocessedPrograms = builder.preprocessedPrograms();
     output.cachedStageSources = builder.cachedStageSources();
+    output.cacheLevels = builder.cacheStats();
     return output;
 }
 

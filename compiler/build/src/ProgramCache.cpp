@@ -7,9 +7,8 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 
-#include "varc/core/AtomicFile.h"
+#include "varc/cache/DirectoryStorage.h"
 #include "varc/core/FileRead.h"
 
 namespace varc::compiler {
@@ -131,8 +130,43 @@ std::string ProgramCacheKey::hex() const {
     return text;
 }
 
+namespace {
+
+std::shared_ptr<cache::CacheChain> directoryChain(const std::string& directory) {
+    std::vector<std::unique_ptr<cache::CacheStorage>> levels;
+    levels.push_back(std::make_unique<cache::DirectoryStorage>(directory, "file:" + directory,
+                                                               /*readOnly=*/false));
+    return std::make_shared<cache::CacheChain>(std::move(levels));
+}
+
+// The payload of a sound entry for |key| (see the layout above), or nullopt.
+std::optional<std::string_view> payloadOf(std::string_view bytes, const ProgramCacheKey& key,
+                                          std::string_view magic) {
+    if (bytes.size() < kEntryOverhead) return std::nullopt;
+    std::string_view body = bytes.substr(0, bytes.size() - 8);
+    Reader checksum(bytes.substr(bytes.size() - 8));
+    uint64_t expected = 0;
+    if (!checksum.u64(expected) || XXH64(body.data(), body.size(), 0) != expected)
+        return std::nullopt;
+    Reader in(body);
+    std::string_view storedMagic;
+    ProgramCacheKey stored;
+    if (!in.bytes(magic.size(), storedMagic) || storedMagic != magic || !in.u64(stored.low) ||
+        !in.u64(stored.high) || !(stored == key)) {
+        return std::nullopt;
+    }
+    return body.substr(in.offset());
+}
+
+}  // namespace
+
 ProgramCache::ProgramCache(std::string directory)
-    : mDirectory(std::move(directory)), mToolchain(executableHash()) {}
+    : mDirectory(std::move(directory)),
+      mChain(directoryChain(mDirectory)),
+      mToolchain(executableHash()) {}
+
+ProgramCache::ProgramCache(std::shared_ptr<cache::CacheChain> chain)
+    : mChain(std::move(chain)), mToolchain(executableHash()) {}
 
 ProgramCacheKey ProgramCache::hashText(std::string_view text) { return hash128(text); }
 
@@ -164,30 +198,24 @@ ProgramCacheKey ProgramCache::sourceKeyOf(const SourceCacheInput& input) const {
     return hash128(text);
 }
 
+std::string ProgramCache::entryName(const ProgramCacheKey& key, std::string_view extension) {
+    return key.hex() + std::string(extension);
+}
+
 std::string ProgramCache::pathOf(const ProgramCacheKey& key, std::string_view extension) const {
     std::string hex = key.hex();
-    return mDirectory + "/" + hex.substr(0, 2) + "/" + hex + std::string(extension);
+    return mDirectory + "/" + hex.substr(0, 2) + "/" + entryName(key, extension);
 }
 
 std::optional<std::string> ProgramCache::loadPayload(const ProgramCacheKey& key,
                                                      std::string_view magic,
                                                      std::string_view extension) const {
-    std::optional<std::string> file = readBytes(pathOf(key, extension));
-    if (!file || file->size() < kEntryOverhead) return std::nullopt;
-    std::string_view bytes(*file);
-    std::string_view body = bytes.substr(0, bytes.size() - 8);
-    Reader checksum(bytes.substr(bytes.size() - 8));
-    uint64_t expected = 0;
-    if (!checksum.u64(expected) || XXH64(body.data(), body.size(), 0) != expected)
-        return std::nullopt;
-    Reader in(body);
-    std::string_view storedMagic;
-    ProgramCacheKey stored;
-    if (!in.bytes(magic.size(), storedMagic) || storedMagic != magic || !in.u64(stored.low) ||
-        !in.u64(stored.high) || !(stored == key)) {
-        return std::nullopt;
-    }
-    return std::string(body.substr(in.offset()));
+    std::optional<std::string> entry =
+        mChain->get(entryName(key, extension), [&](std::string_view bytes) {
+            return payloadOf(bytes, key, magic).has_value();
+        });
+    if (!entry) return std::nullopt;
+    return std::string(*payloadOf(*entry, key, magic));
 }
 
 Status ProgramCache::storePayload(const ProgramCacheKey& key, std::string_view magic,
@@ -197,14 +225,7 @@ Status ProgramCache::storePayload(const ProgramCacheKey& key, std::string_view m
     putU64(bytes, key.high);
     bytes += payload;
     putU64(bytes, XXH64(bytes.data(), bytes.size(), 0));
-    const std::string path = pathOf(key, extension);
-    std::error_code error;
-    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), error);
-    if (error) {
-        return makeError(ErrorCode::IoError, "cannot create the program cache folder for " + path +
-                                                 ": " + error.message());
-    }
-    return writeFileAtomically(path, bytes);
+    return mChain->put(entryName(key, extension), bytes);
 }
 
 std::optional<CachedProgram> ProgramCache::load(const ProgramCacheKey& key) const {

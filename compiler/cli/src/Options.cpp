@@ -3,6 +3,8 @@
 #include "varc/cli/Options.h"
 
 #include <CLI/CLI.hpp>
+#include "varc/cache/CacheSpec.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <ostream>
@@ -80,6 +82,29 @@ void addCheck(CLI::App& app, Options& options, std::string& growthText) {
     cmd->callback([&options] { options.command = Command::Check; });
 }
 
+// --cache URL, repeatable, levels in order (VARC_CACHE when absent, read in parseOptions).
+void addCacheUrls(CLI::App& command, Options& options) {
+    command
+        .add_option("--cache", options.cacheUrls,
+                    "Program cache level, in order (repeat): file:DIR or "
+                    "redis://HOST[:PORT][/DB], each with |read-only, |prefix=, |ttl=, "
+                    "|connect-timeout=MS, |operation-timeout=MS (default: $VARC_CACHE)")
+        ->type_name("URL")
+        ->allow_extra_args(false);
+}
+
+void addCache(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("cache", "Inspect or empty program cache levels");
+    cmd->require_subcommand(1);
+    CLI::App* stats = cmd->add_subcommand("stats", "Entries and bytes in each cache level");
+    addCacheUrls(*stats, options);
+    stats->add_flag("--json", options.json, "Print JSON");
+    stats->callback([&options] { options.command = Command::CacheStats; });
+    CLI::App* clear = cmd->add_subcommand("clear", "Remove every entry varc stored in each level");
+    addCacheUrls(*clear, options);
+    clear->callback([&options] { options.command = Command::CacheClear; });
+}
+
 void addBuild(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("build", "Compile every variant into a SPIR-V pack");
     cmd->add_option("-o,--output", options.outputPath, "Pack file to write")->required();
@@ -101,6 +126,7 @@ void addBuild(CLI::App& app, Options& options) {
                     "Reuse and store compiled programs in this folder (ccache-like)")
         ->envname("VARC_CACHE_DIR")
         ->type_name("DIR");
+    addCacheUrls(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Build; });
 }
@@ -203,6 +229,7 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
     addLookup(app, options);
     addRender(app, options);
     addValidate(app, options);
+    addCache(app, options);
     try {
         std::vector<std::string> args = normalizeArguments(argc, argv);
         app.parse(args);
@@ -216,6 +243,9 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
             err << "varc: error: --max-growth expects N or N%, got '" << growthText << "'\n";
             return kExitUsage;
         }
+    }
+    if (options.cacheUrls.empty()) {
+        if (const char* env = std::getenv("VARC_CACHE")) options.cacheUrls = cache::splitCacheList(env);
     }
     if (options.builtinIncludeDir.empty()) {
         if (const char* env = std::getenv("VARC_BUILTIN_INCLUDE_DIR")) {

@@ -12,9 +12,14 @@
 // (temporary file, then rename), so concurrent builds can share a directory; an entry that is
 // truncated, corrupt or for another key is ignored and recompiled, never trusted. Failed compiles
 // are not cached. Nothing is ever evicted: delete the directory to reclaim space.
+//
+// Where entries live is a cache::CacheChain (a local folder, then shared levels such as Redis,
+// each entry named "<key hex>.program" or ".source"); this class computes keys, (de)serialises
+// entries and checks them, so a damaged value from any level is a miss.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -22,6 +27,7 @@
 
 #include "varc/build/SpirvOptimizer.h"
 #include "varc/build/SpirvReflection.h"
+#include "varc/cache/CacheChain.h"
 #include "varc/core/Result.h"
 #include "varc/core/Stage.h"
 #include "varc/shaderlab/ShaderAst.h"
@@ -63,8 +69,10 @@ struct SourceCacheInput {
 
 class ProgramCache {
 public:
-    // Uses |directory| (created on the first store).
+    // Uses |directory| (created on the first store) as the only level.
     explicit ProgramCache(std::string directory);
+    // Uses the levels of |chain|, shared with whoever reads its statistics afterwards.
+    explicit ProgramCache(std::shared_ptr<cache::CacheChain> chain);
 
     ProgramCacheKey keyOf(const ProgramCacheInput& input) const;
     ProgramCacheKey sourceKeyOf(const SourceCacheInput& input) const;
@@ -80,10 +88,13 @@ public:
     std::optional<std::string> loadSource(const ProgramCacheKey& key) const;
     Status storeSource(const ProgramCacheKey& key, std::string_view text) const;
 
-    // Where an entry lives: <directory>/<2 hex>/<32 hex><extension> (".program", ".source").
+    // An entry's name in every level: <32 hex><extension> (".program", ".source").
+    static std::string entryName(const ProgramCacheKey& key, std::string_view extension);
+    // With the directory constructor, where an entry lives: <directory>/<2 hex>/<entryName>.
     std::string pathOf(const ProgramCacheKey& key, std::string_view extension = ".program") const;
 
     const std::string& directory() const { return mDirectory; }
+    cache::CacheChain& chain() const { return *mChain; }
 
 private:
     std::optional<std::string> loadPayload(const ProgramCacheKey& key, std::string_view magic,
@@ -91,7 +102,8 @@ private:
     Status storePayload(const ProgramCacheKey& key, std::string_view magic,
                         std::string_view extension, std::string_view payload) const;
 
-    std::string mDirectory;
+    std::string mDirectory;  // "" unless built from a directory
+    std::shared_ptr<cache::CacheChain> mChain;
     ProgramCacheKey mToolchain;  // hash of the running executable
 };
 
