@@ -33,7 +33,7 @@ url="redis://127.0.0.1:$port/0"
     >"$tmp/fake.json" 2>"$tmp/fake.err" || fail "the build against garbage failed: $(cat "$tmp/fake.err")"
 same_pack "$tmp/fake.svpack"
 [ "$(grep -c warning "$tmp/fake.err")" = 1 ] || fail "not exactly one warning: $(cat "$tmp/fake.err")"
-[ "$(warnings_in "$tmp/fake.err" "the cache $url failed (GET failed: Protocol error")" = 1 ] ||
+[ "$(warnings_in "$tmp/fake.err" "the cache $url failed (MGET failed: Protocol error")" = 1 ] ||
     fail "the warning does not say why: $(cat "$tmp/fake.err")"
 [ "$(json_field "$tmp/fake.json" 'j["cache"][1]["failed"] and j["cache"][1]["errors"] == 1')" = True ] ||
     fail "the failure is not counted once: $(cat "$tmp/fake.json")"

@@ -89,6 +89,8 @@ private:
     void applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
                       const ItemOutcome& outcome);
     CompiledSource compileSource(const SourceProgram& source) const;
+    // Reads the cache entries of sources [first, first + count) in one batch.
+    void prefetchPrograms(size_t first, size_t count) const;
     // Remembers the first failure to write the cache (thread-safe); the build goes on.
     void noteCacheFailure(const Status& stored) const;
     // Where a program first used by |pass| came from, for runtime error messages.
@@ -235,12 +237,15 @@ bool Builder::internChunk(size_t jobIndex, size_t firstItem, size_t count) {
             sourceKeys[p] =
                 mCache->sourceKeyOf({job.textHash, languageOf(job), stage, entry,
                                      preambles[pending[p].preprocess], mOptions.pruneStages});
-            if (std::optional<std::string> text = mCache->loadSource(sourceKeys[p])) {
-                pending[p].result.ok = true;
-                pending[p].result.text = std::move(*text);
-                resolved[p] = 1;
-            }
         });
+        // One batch per chunk: a remote level answers it in one round trip.
+        std::vector<std::optional<std::string>> texts = mCache->loadSources(sourceKeys);
+        for (size_t p = 0; p < pending.size(); ++p) {
+            if (!texts[p]) continue;
+            pending[p].result.ok = true;
+            pending[p].result.text = std::move(*texts[p]);
+            resolved[p] = 1;
+        }
     }
     std::vector<size_t> needed;  // the preprocessings some unresolved item needs
     std::vector<char> isNeeded(preambles.size(), 0);
@@ -309,6 +314,16 @@ void Builder::noteCacheFailure(const Status& stored) const {
     if (mCacheError.empty()) mCacheError = stored.error().detail;
 }
 
+void Builder::prefetchPrograms(size_t first, size_t count) const {
+    std::vector<ProgramCacheKey> keys(count);
+    parallelFor(count, mThreads, [&](size_t n) {
+        const SourceProgram& source = mSources[first + n];
+        keys[n] = mCache->keyOf({mOptions.optimization, languageOf(mJobs[source.job]),
+                                 source.stage, source.entryPoint, source.text});
+    });
+    mCache->prefetch(keys);
+}
+
 CompiledSource Builder::compileSource(const SourceProgram& source) const {
     const PassJob& job = mJobs[source.job];
     const SourceLocation& origin = job.pass->pass->program->origin;
@@ -328,17 +343,25 @@ bool Builder::compileSources() {
     mCompiled.assign(mSources.size(), {});
     std::atomic<bool> failed{false};
     std::atomic<size_t> done{0};
-    parallelFor(
-        mSources.size(), mThreads,
-        [&](size_t i) {
-            if (failed.load() && !mOptions.keepGoing) return;
-            double start = threadCpuSeconds();
-            mCompiled[i] = compileSource(mSources[i]);
-            mCompiled[i].seconds = threadCpuSeconds() - start;
-            if (!mCompiled[i].ok) failed.store(true);
-            if (mOptions.progress) mOptions.progress(done.fetch_add(1) + 1, mSources.size());
-        },
-        /*firstAlone=*/true);
+    // In chunks, each chunk's cache entries fetched in one batch first (one round trip per
+    // remote level), so a warm shared cache costs no round trip per program.
+    for (size_t first = 0; first < mSources.size(); first += kChunkSize) {
+        const size_t count = std::min(kChunkSize, mSources.size() - first);
+        if (mCache) prefetchPrograms(first, count);
+        parallelFor(
+            count, mThreads,
+            [&](size_t n) {
+                const size_t i = first + n;
+                if (failed.load() && !mOptions.keepGoing) return;
+                double start = threadCpuSeconds();
+                mCompiled[i] = compileSource(mSources[i]);
+                mCompiled[i].seconds = threadCpuSeconds() - start;
+                if (!mCompiled[i].ok) failed.store(true);
+                if (mOptions.progress) mOptions.progress(done.fetch_add(1) + 1, mSources.size());
+            },
+            /*firstAlone=*/first == 0);
+        if (failed.load() && !mOptions.keepGoing) break;
+    }
     // The variants behind each program with diagnostics, to count each affected variant once.
     std::vector<std::vector<uint64_t>> variantsOf(mSources.size());
     for (size_t j = 0; j < mJobs.size(); ++j) {

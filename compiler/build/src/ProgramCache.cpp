@@ -158,6 +158,39 @@ std::optional<std::string_view> payloadOf(std::string_view bytes, const ProgramC
     return body.substr(in.offset());
 }
 
+// A program entry's payload (see the layout above) as a CachedProgram, or nullopt.
+std::optional<CachedProgram> parseProgram(std::string_view payload) {
+    Reader in(payload);
+    uint32_t logBytes = 0, semantics = 0, words = 0, strippedWords = 0;
+    if (!in.u32(logBytes) || !in.u32(semantics) || !in.u32(words) || !in.u32(strippedWords) ||
+        logBytes > kMaxField || semantics > kMaxField || words > kMaxField ||
+        strippedWords > kMaxField) {
+        return std::nullopt;
+    }
+    CachedProgram program;
+    std::string_view log;
+    if (!in.bytes(logBytes, log)) return std::nullopt;
+    program.log = log;
+    for (uint32_t i = 0; i < semantics; ++i) {
+        uint32_t location = 0, length = 0;
+        std::string_view name;
+        if (!in.u32(location) || !in.u32(length) || !in.bytes(length, name)) return std::nullopt;
+        program.semantics.emplace(location, std::string(name));
+    }
+    program.spirv.resize(words);
+    for (uint32_t& word : program.spirv) {
+        if (!in.u32(word)) return std::nullopt;
+    }
+    program.stripped.resize(strippedWords);
+    for (uint32_t& word : program.stripped) {
+        if (!in.u32(word)) return std::nullopt;
+    }
+    if (in.offset() != payload.size() || program.spirv.empty() || program.stripped.empty()) {
+        return std::nullopt;
+    }
+    return program;
+}
+
 }  // namespace
 
 ProgramCache::ProgramCache(std::string directory)
@@ -207,15 +240,20 @@ std::string ProgramCache::pathOf(const ProgramCacheKey& key, std::string_view ex
     return mDirectory + "/" + hex.substr(0, 2) + "/" + entryName(key, extension);
 }
 
-std::optional<std::string> ProgramCache::loadPayload(const ProgramCacheKey& key,
-                                                     std::string_view magic,
-                                                     std::string_view extension) const {
-    std::optional<std::string> entry =
-        mChain->get(entryName(key, extension), [&](std::string_view bytes) {
-            return payloadOf(bytes, key, magic).has_value();
+std::vector<std::optional<std::string>> ProgramCache::loadPayloads(
+    const std::vector<ProgramCacheKey>& keys, std::string_view magic,
+    std::string_view extension) const {
+    std::vector<std::string> names;
+    names.reserve(keys.size());
+    for (const ProgramCacheKey& key : keys) names.push_back(entryName(key, extension));
+    std::vector<std::optional<std::string>> entries =
+        mChain->getMany(names, [&](size_t k, std::string_view bytes) {
+            return payloadOf(bytes, keys[k], magic).has_value();
         });
-    if (!entry) return std::nullopt;
-    return std::string(*payloadOf(*entry, key, magic));
+    for (size_t k = 0; k < keys.size(); ++k) {
+        if (entries[k]) entries[k] = std::string(*payloadOf(*entries[k], keys[k], magic));
+    }
+    return entries;
 }
 
 Status ProgramCache::storePayload(const ProgramCacheKey& key, std::string_view magic,
@@ -228,38 +266,26 @@ Status ProgramCache::storePayload(const ProgramCacheKey& key, std::string_view m
     return mChain->put(entryName(key, extension), bytes);
 }
 
+void ProgramCache::prefetch(const std::vector<ProgramCacheKey>& keys) const {
+    std::vector<std::optional<std::string>> payloads = loadPayloads(keys, kProgramMagic, ".program");
+    std::lock_guard<std::mutex> lock(mPrefetchMutex);
+    for (size_t k = 0; k < keys.size(); ++k) mPrefetched[keys[k].hex()] = std::move(payloads[k]);
+}
+
 std::optional<CachedProgram> ProgramCache::load(const ProgramCacheKey& key) const {
-    std::optional<std::string> payload = loadPayload(key, kProgramMagic, ".program");
+    std::optional<std::string> payload;
+    bool prefetched = false;
+    {
+        std::lock_guard<std::mutex> lock(mPrefetchMutex);
+        if (auto it = mPrefetched.find(key.hex()); it != mPrefetched.end()) {
+            prefetched = true;
+            payload = std::move(it->second);
+            mPrefetched.erase(it);
+        }
+    }
+    if (!prefetched) payload = std::move(loadPayloads({key}, kProgramMagic, ".program")[0]);
     if (!payload) return std::nullopt;
-    Reader in(*payload);
-    uint32_t logBytes = 0, semantics = 0, words = 0, strippedWords = 0;
-    if (!in.u32(logBytes) || !in.u32(semantics) || !in.u32(words) || !in.u32(strippedWords) ||
-        logBytes > kMaxField || semantics > kMaxField || words > kMaxField ||
-        strippedWords > kMaxField) {
-        return std::nullopt;
-    }
-    CachedProgram program;
-    std::string_view log;
-    if (!in.bytes(logBytes, log)) return std::nullopt;
-    program.log = log;
-    for (uint32_t i = 0; i < semantics; ++i) {
-        uint32_t location = 0, length = 0;
-        std::string_view name;
-        if (!in.u32(location) || !in.u32(length) || !in.bytes(length, name)) return std::nullopt;
-        program.semantics.emplace(location, std::string(name));
-    }
-    program.spirv.resize(words);
-    for (uint32_t& word : program.spirv) {
-        if (!in.u32(word)) return std::nullopt;
-    }
-    program.stripped.resize(strippedWords);
-    for (uint32_t& word : program.stripped) {
-        if (!in.u32(word)) return std::nullopt;
-    }
-    if (in.offset() != payload->size() || program.spirv.empty() || program.stripped.empty()) {
-        return std::nullopt;
-    }
-    return program;
+    return parseProgram(*payload);
 }
 
 Status ProgramCache::store(const ProgramCacheKey& key, const CachedProgram& program) const {
@@ -280,7 +306,12 @@ Status ProgramCache::store(const ProgramCacheKey& key, const CachedProgram& prog
 }
 
 std::optional<std::string> ProgramCache::loadSource(const ProgramCacheKey& key) const {
-    return loadPayload(key, kSourceMagic, ".source");
+    return std::move(loadPayloads({key}, kSourceMagic, ".source")[0]);
+}
+
+std::vector<std::optional<std::string>> ProgramCache::loadSources(
+    const std::vector<ProgramCacheKey>& keys) const {
+    return loadPayloads(keys, kSourceMagic, ".source");
 }
 
 Status ProgramCache::storeSource(const ProgramCacheKey& key, std::string_view text) const {

@@ -8,26 +8,48 @@ CacheChain::CacheChain(std::vector<std::unique_ptr<CacheStorage>> levels)
 
 std::optional<std::string> CacheChain::get(std::string_view key,
                                            const std::function<bool(std::string_view)>& accept) {
-    for (size_t i = 0; i < mLevels.size(); ++i) {
+    return getMany({std::string(key)},
+                   [&](size_t, std::string_view value) { return accept(value); })[0];
+}
+
+std::vector<std::optional<std::string>> CacheChain::getMany(
+    const std::vector<std::string>& keys,
+    const std::function<bool(size_t, std::string_view)>& accept) {
+    std::vector<std::optional<std::string>> found(keys.size());
+    std::vector<size_t> pending(keys.size());
+    for (size_t k = 0; k < keys.size(); ++k) pending[k] = k;
+    for (size_t i = 0; i < mLevels.size() && !pending.empty(); ++i) {
         CacheStorage& level = *mLevels[i];
         if (level.failed()) continue;
-        std::optional<std::string> value = level.get(key);
-        if (value && !accept(*value)) {
-            level.countDamaged();
-            value.reset();
+        std::vector<std::string> asked;
+        for (size_t k : pending) asked.push_back(keys[k]);
+        std::vector<std::optional<std::string>> values = level.getMany(asked);
+        std::vector<size_t> missed;
+        for (size_t n = 0; n < pending.size(); ++n) {
+            std::optional<std::string>& value = values[n];
+            if (value && !accept(pending[n], *value)) {
+                level.countDamaged();
+                value.reset();
+            }
+            if (!value) {
+                level.countMiss();
+                missed.push_back(pending[n]);
+                continue;
+            }
+            level.countHit();
+            writeBack(i, keys[pending[n]], *value);
+            found[pending[n]] = std::move(value);
         }
-        if (!value) {
-            level.countMiss();
-            continue;
-        }
-        level.countHit();
-        // A hit in a shared level fills the local ones, so the next build finds it locally.
-        for (size_t j = 0; j < i; ++j) {
-            if (!mLevels[j]->readOnly() && !mLevels[j]->failed()) (void)mLevels[j]->put(key, *value);
-        }
-        return value;
+        pending = std::move(missed);
     }
-    return std::nullopt;
+    return found;
+}
+
+void CacheChain::writeBack(size_t level, std::string_view key, std::string_view value) {
+    // A hit in a shared level fills the local ones, so the next build finds it locally.
+    for (size_t j = 0; j < level; ++j) {
+        if (!mLevels[j]->readOnly() && !mLevels[j]->failed()) (void)mLevels[j]->put(key, value);
+    }
 }
 
 Status CacheChain::put(std::string_view key, std::string_view value) {

@@ -3,6 +3,14 @@
 
 namespace varc::cache {
 
+std::vector<std::optional<std::string>> CacheStorage::getMany(
+    const std::vector<std::string>& keys) {
+    std::vector<std::optional<std::string>> values;
+    values.reserve(keys.size());
+    for (const std::string& key : keys) values.push_back(get(key));
+    return values;
+}
+
 std::string CacheStorage::failure() const {
     std::lock_guard<std::mutex> lock(mFailureMutex);
     return mFailure;

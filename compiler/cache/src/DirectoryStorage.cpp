@@ -61,7 +61,9 @@ Status DirectoryStorage::put(std::string_view key, std::string_view value) {
         return makeError(ErrorCode::IoError, "cannot create the program cache folder for " + path +
                                                  ": " + error.message());
     }
-    Status written = writeFileAtomically(path, value);
+    // No fsync: an entry a crash leaves torn fails its checksum and is a miss (ccache does the
+    // same); an fsync per entry would cost more than reading the entry back saves.
+    Status written = writeFileAtomically(path, value, Durability::Unsynced);
     if (written) countWrite(value.size());
     return written;
 }

@@ -5,6 +5,7 @@
 #include <pthread.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <ctime>
 
@@ -134,21 +135,48 @@ std::unique_ptr<RedisStorage::Reply> RedisStorage::commandLocked(
     return reply;
 }
 
-std::optional<std::string> RedisStorage::get(std::string_view key) {
-    std::lock_guard<std::mutex> lock(mMutex);
-    if (!connectionLocked()) return std::nullopt;
-    std::string name = mSpec.prefix + std::string(key);
-    std::unique_ptr<Reply> reply = commandLocked({"GET", name});
-    if (!reply) return std::nullopt;
-    const redisReply& r = *reply->reply;
+std::optional<std::string> RedisStorage::valueLocked(const redisReply& r) {
     if (r.type == REDIS_REPLY_NIL) return std::nullopt;
     if (r.type != REDIS_REPLY_STRING) {
-        failLocked("GET answered " + (r.type == REDIS_REPLY_ERROR ? std::string(r.str, r.len)
+        failLocked("MGET answered " + (r.type == REDIS_REPLY_ERROR ? std::string(r.str, r.len)
                                                                   : std::string("no string")));
         return std::nullopt;
     }
     countRead(r.len);
     return std::string(r.str, r.len);
+}
+
+std::optional<std::string> RedisStorage::get(std::string_view key) {
+    return getMany({std::string(key)})[0];
+}
+
+std::vector<std::optional<std::string>> RedisStorage::getMany(
+    const std::vector<std::string>& keys) {
+    // MGET, not pipelined GETs: hiredis 0.14 moves its read buffer after every reply, which
+    // makes a long pipeline of large values quadratic; one array reply is read once.
+    constexpr size_t kBatch = 512;
+    std::vector<std::optional<std::string>> values(keys.size());
+    std::lock_guard<std::mutex> lock(mMutex);
+    for (size_t first = 0; first < keys.size(); first += kBatch) {
+        if (!connectionLocked()) break;
+        const size_t count = std::min(kBatch, keys.size() - first);
+        std::vector<std::string> names;
+        names.reserve(count);
+        std::vector<std::string_view> args = {"MGET"};
+        for (size_t k = first; k < first + count; ++k) names.push_back(mSpec.prefix + keys[k]);
+        args.insert(args.end(), names.begin(), names.end());
+        std::unique_ptr<Reply> reply = commandLocked(args);
+        if (!reply) break;
+        const redisReply& r = *reply->reply;
+        if (r.type != REDIS_REPLY_ARRAY || r.elements != count) {
+            failLocked("MGET answered " + (r.type == REDIS_REPLY_ERROR ? std::string(r.str, r.len)
+                                                                       : std::string("nonsense")));
+            break;
+        }
+        for (size_t k = 0; k < count && !failed(); ++k)
+            values[first + k] = valueLocked(*r.element[k]);
+    }
+    return values;
 }
 
 Status RedisStorage::put(std::string_view key, std::string_view value) {

@@ -62,9 +62,10 @@ std::string kibibytes(uint64_t bytes) {
     return out.str();
 }
 
-// "Cache file:/c: 12 hits, 3 misses; read 4.0 KiB, wrote 1.0 KiB" (+ damaged, errors, failed).
-void printCacheLevel(const cache::CacheLevelStats& level, std::ostream& out) {
-    out << "Cache " << level.name << ": " << level.hits << " hits, " << level.misses << " misses";
+// "Cache level 1 (file:/c): 12 hits, 3 misses; read 4.0 KiB, wrote 1.0 KiB" (+ damaged,
+// errors and timeouts, failed).
+void printCacheLevel(size_t index, const cache::CacheLevelStats& level, std::ostream& out) {
+    out << "Cache level " << index + 1 << " (" << level.name << "): " << level.hits << " hits, " << level.misses << " misses";
     if (level.damaged) out << " (" << level.damaged << " damaged)";
     out << "; read " << kibibytes(level.bytesRead) << ", wrote " << kibibytes(level.bytesWritten);
     if (level.errors || level.timeouts)
@@ -113,7 +114,8 @@ void printBuildReport(const std::vector<compiler::LoadedShader>& shaders,
         << std::setprecision(2) << seconds << " s; raw SPIR-V " << kibibytes(sizes.rawSpirvBytes)
         << ", unique " << kibibytes(sizes.uniqueSpirvBytes) << ", pack "
         << kibibytes(sizes.packBytes) << "\n";
-    for (const cache::CacheLevelStats& level : build.cacheLevels) printCacheLevel(level, out);
+    for (size_t i = 0; i < build.cacheLevels.size(); ++i)
+        printCacheLevel(i, build.cacheLevels[i], out);
 }
 
 Json buildReportJson(const std::vector<compiler::LoadedShader>& shaders,

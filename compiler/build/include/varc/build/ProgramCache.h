@@ -20,9 +20,11 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "varc/build/SpirvOptimizer.h"
@@ -84,8 +86,14 @@ public:
     // Writes the entry for |key| atomically. Errors name the file and the reason.
     Status store(const ProgramCacheKey& key, const CachedProgram& program) const;
 
-    // The pruned source for |key|, or nullopt; and storing one.
+    // Fetches the program entries for |keys| from every level at once (one round trip per remote
+    // level, not one per key); load() then takes each from memory. Thread-safe.
+    void prefetch(const std::vector<ProgramCacheKey>& keys) const;
+
+    // The pruned source for |key|, or nullopt; many at once (batched like prefetch); storing one.
     std::optional<std::string> loadSource(const ProgramCacheKey& key) const;
+    std::vector<std::optional<std::string>> loadSources(
+        const std::vector<ProgramCacheKey>& keys) const;
     Status storeSource(const ProgramCacheKey& key, std::string_view text) const;
 
     // An entry's name in every level: <32 hex><extension> (".program", ".source").
@@ -97,14 +105,18 @@ public:
     cache::CacheChain& chain() const { return *mChain; }
 
 private:
-    std::optional<std::string> loadPayload(const ProgramCacheKey& key, std::string_view magic,
-                                           std::string_view extension) const;
+    std::vector<std::optional<std::string>> loadPayloads(const std::vector<ProgramCacheKey>& keys,
+                                                         std::string_view magic,
+                                                         std::string_view extension) const;
     Status storePayload(const ProgramCacheKey& key, std::string_view magic,
                         std::string_view extension, std::string_view payload) const;
 
     std::string mDirectory;  // "" unless built from a directory
     std::shared_ptr<cache::CacheChain> mChain;
     ProgramCacheKey mToolchain;  // hash of the running executable
+    mutable std::mutex mPrefetchMutex;
+    // Program payloads prefetch() read, by key hex, until load() takes them (nullopt: a miss).
+    mutable std::unordered_map<std::string, std::optional<std::string>> mPrefetched;
 };
 
 }  // namespace varc::compiler

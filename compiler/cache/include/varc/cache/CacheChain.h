@@ -30,6 +30,12 @@ public:
     std::optional<std::string> get(std::string_view key,
                                    const std::function<bool(std::string_view)>& accept);
 
+    // get() of many keys at once, level by level, so a remote answers each level's misses in one
+    // round trip; |accept| gets the key's index and the value.
+    std::vector<std::optional<std::string>> getMany(
+        const std::vector<std::string>& keys,
+        const std::function<bool(size_t, std::string_view)>& accept);
+
     // Stores |value| in every writable level; returns the first local write error.
     Status put(std::string_view key, std::string_view value);
 
@@ -41,6 +47,9 @@ public:
     const std::vector<std::unique_ptr<CacheStorage>>& levels() const { return mLevels; }
 
 private:
+    // Writes a hit in |level| to the writable levels before it.
+    void writeBack(size_t level, std::string_view key, std::string_view value);
+
     std::vector<std::unique_ptr<CacheStorage>> mLevels;
 };
 

@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "varc/core/Result.h"
 
@@ -46,6 +47,9 @@ public:
     // error or a failed level. Counts bytes read; hits and misses are counted by the caller, who
     // alone knows whether the value is sound.
     virtual std::optional<std::string> get(std::string_view key) = 0;
+
+    // get() of every key, in order; a remote answers them in one round trip (pipelined).
+    virtual std::vector<std::optional<std::string>> getMany(const std::vector<std::string>& keys);
 
     // Stores |value| under |key| (nothing on a read-only or failed level). A local level's write
     // error is returned (the caller warns that the cache is not updated); a remote's is counted,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // DirectoryStorage: a cache level in a local folder, one file per entry at
 // <directory>/<first 2 characters of the key>/<key>, written atomically (temporary + rename), so
-// concurrent builds can share the folder.
+// concurrent builds can share the folder; not flushed to disk (a torn entry is a miss).
 #pragma once
 
 #include <string>
