@@ -13,9 +13,14 @@ reference_build "$@"
 start_redis "$tmp/redis" --maxmemory 1mb --maxmemory-policy noeviction
 port=$(cat "$tmp/redis/port")
 # Fill it to the limit first, so the build's first write is refused.
+# Fill it past the limit first (Redis refuses writes once used memory exceeds maxmemory), so
+# the build's first write is refused.
 filler=$(printf '%01000d' 0)
-for i in $(seq 3000); do echo "SET filler:$i $filler"; done | redis-cli -p "$port" >/dev/null 2>&1
-redis-cli -p "$port" set probe x | grep -q OOM || fail "Redis is not full: $(redis-cli -p "$port" info memory | grep used_memory:)"
+full=no
+for i in $(seq 5000); do
+    if redis-cli -p "$port" set "filler:$i" "$filler" | grep -q OOM; then full=yes; break; fi
+done
+[ $full = yes ] || fail "Redis is not full: $(redis-cli -p "$port" info memory | grep used_memory:)"
 url="redis://127.0.0.1:$port/0"
 "$varc" build --json --cache "file:$tmp/local" --cache "$url" -o "$tmp/out.svpack" "$@" \
     >"$tmp/out.json" 2>"$tmp/err.log" || fail "the build failed: $(cat "$tmp/err.log")"
