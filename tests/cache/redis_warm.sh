@@ -46,4 +46,14 @@ same_pack "$tmp/local.svpack"
 "$varc" cache clear --cache "$url" >"$tmp/clear.log" || fail "cache clear"
 grep -qF "removed $writes entries" "$tmp/clear.log" || fail "cache clear: $(cat "$tmp/clear.log")"
 [ "$(redis-cli -p "$port" -n 1 dbsize)" = 0 ] || fail "entries left in Redis after clear"
+
+# Attributes: a read-only level is never written; prefix= and ttl= shape the keys.
+"$varc" build --json --cache "$url|read-only" -o "$tmp/ro.svpack" "$@" >"$tmp/ro.json" || fail "read-only build"
+[ "$(redis-cli -p "$port" -n 1 dbsize)" = 0 ] || fail "a read-only Redis level was written"
+"$varc" build --cache "$url|prefix=team:|ttl=600" -o "$tmp/ttl.svpack" "$@" >/dev/null || fail "prefix/ttl build"
+key=$(redis-cli -p "$port" -n 1 --scan | head -1)
+case $key in team:*) ;; *) fail "key '$key' lacks the prefix team:" ;; esac
+[ "$(redis-cli -p "$port" -n 1 --scan | grep -vc '^team:')" = 0 ] || fail "keys without the prefix"
+ttl=$(redis-cli -p "$port" -n 1 ttl "$key")
+[ "$ttl" -gt 0 ] && [ "$ttl" -le 600 ] || fail "key '$key' has TTL $ttl, not 1-600"
 echo "warm Redis: 0 programs compiled, same pack, written back locally; stats and clear agree"
