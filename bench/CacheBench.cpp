@@ -40,7 +40,8 @@ Inputs& inputs() {
     static Inputs* loaded = [] {
         auto* in = new Inputs;
         std::vector<std::string> files;
-        for (const char* root : {VARC_SOURCE_DIR "/../shared/fixtures", VARC_SOURCE_DIR "/shaders"}) {
+        for (const char* root :
+             {VARC_SOURCE_DIR "/../shared/fixtures", VARC_SOURCE_DIR "/shaders"}) {
             if (!fs::is_directory(root)) continue;
             for (const auto& entry : fs::recursive_directory_iterator(root)) {
                 if (entry.path().extension() == ".shader") files.push_back(entry.path().string());
@@ -75,7 +76,8 @@ struct Redis {
         ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length);
         ::close(fd);
         std::string port = std::to_string(ntohs(address.sin_port));
-        dir = (fs::temp_directory_path() / ("varc-bench-redis-" + std::to_string(::getpid()))).string();
+        dir = (fs::temp_directory_path() / ("varc-bench-redis-" + std::to_string(::getpid())))
+                  .string();
         fs::create_directories(dir);
         std::string start = "redis-server --bind 127.0.0.1 --port " + port +
                             " --save '' --appendonly no --daemonize yes --pidfile " + dir +
@@ -128,8 +130,7 @@ std::optional<compiler::BuildOutput> build(const std::string& local, unsigned jo
 }
 
 void report(benchmark::State& state, const compiler::BuildOutput& output) {
-    state.counters["compiled"] =
-        static_cast<double>(output.compiledSources - output.cachedSources);
+    state.counters["compiled"] = static_cast<double>(output.compiledSources - output.cachedSources);
     state.counters["modules"] = static_cast<double>(output.programs.size());
 }
 

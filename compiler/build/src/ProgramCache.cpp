@@ -267,7 +267,8 @@ Status ProgramCache::storePayload(const ProgramCacheKey& key, std::string_view m
 }
 
 void ProgramCache::prefetch(const std::vector<ProgramCacheKey>& keys) const {
-    std::vector<std::optional<std::string>> payloads = loadPayloads(keys, kProgramMagic, ".program");
+    std::vector<std::optional<std::string>> payloads =
+        loadPayloads(keys, kProgramMagic, ".program");
     std::lock_guard<std::mutex> lock(mPrefetchMutex);
     for (size_t k = 0; k < keys.size(); ++k) mPrefetched[keys[k].hex()] = std::move(payloads[k]);
 }

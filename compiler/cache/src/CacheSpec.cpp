@@ -88,7 +88,8 @@ Result<CacheSpec> parseCacheSpec(std::string_view url) {
     CacheSpec spec;
     spec.url = url;
     auto fail = [&](const std::string& reason) {
-        return makeError(ErrorCode::InvalidInput, "cache URL '" + std::string(url) + "': " + reason);
+        return makeError(ErrorCode::InvalidInput,
+                         "cache URL '" + std::string(url) + "': " + reason);
     };
     std::vector<std::string_view> parts = split(url, '|');
     std::string_view location = parts[0];

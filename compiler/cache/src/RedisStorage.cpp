@@ -72,7 +72,8 @@ struct RedisStorage::Reply {
     }
 };
 
-RedisStorage::RedisStorage(CacheSpec spec) : CacheStorage(spec.url, spec.readOnly), mSpec(std::move(spec)) {}
+RedisStorage::RedisStorage(CacheSpec spec)
+    : CacheStorage(spec.url, spec.readOnly), mSpec(std::move(spec)) {}
 
 RedisStorage::~RedisStorage() = default;
 
@@ -90,8 +91,8 @@ RedisStorage::Connection* RedisStorage::connectionLocked() {
     if (failed()) return nullptr;
     if (mConnection) return mConnection.get();
     mConnection = std::make_unique<Connection>();
-    mConnection->context = redisConnectWithTimeout(mSpec.host.c_str(), mSpec.port,
-                                                   toTimeval(mSpec.connectTimeoutMs));
+    mConnection->context =
+        redisConnectWithTimeout(mSpec.host.c_str(), mSpec.port, toTimeval(mSpec.connectTimeoutMs));
     if (!mConnection->context || mConnection->context->err) {
         failLocked("cannot connect to " + mSpec.host + ":" + std::to_string(mSpec.port));
         return nullptr;
@@ -139,7 +140,7 @@ std::optional<std::string> RedisStorage::valueLocked(const redisReply& r) {
     if (r.type == REDIS_REPLY_NIL) return std::nullopt;
     if (r.type != REDIS_REPLY_STRING) {
         failLocked("MGET answered " + (r.type == REDIS_REPLY_ERROR ? std::string(r.str, r.len)
-                                                                  : std::string("no string")));
+                                                                   : std::string("no string")));
         return std::nullopt;
     }
     countRead(r.len);

@@ -65,7 +65,8 @@ std::string kibibytes(uint64_t bytes) {
 // "Cache level 1 (file:/c): 12 hits, 3 misses; read 4.0 KiB, wrote 1.0 KiB" (+ damaged,
 // errors and timeouts, failed).
 void printCacheLevel(size_t index, const cache::CacheLevelStats& level, std::ostream& out) {
-    out << "Cache level " << index + 1 << " (" << level.name << "): " << level.hits << " hits, " << level.misses << " misses";
+    out << "Cache level " << index + 1 << " (" << level.name << "): " << level.hits << " hits, "
+        << level.misses << " misses";
     if (level.damaged) out << " (" << level.damaged << " damaged)";
     out << "; read " << kibibytes(level.bytesRead) << ", wrote " << kibibytes(level.bytesWritten);
     if (level.errors || level.timeouts)

@@ -2,7 +2,6 @@
 #include "varc/cli/CacheCommands.h"
 
 #include <nlohmann/json.hpp>
-
 #include <ostream>
 
 #include "varc/cache/CacheChain.h"

@@ -245,7 +245,8 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
         }
     }
     if (options.cacheUrls.empty()) {
-        if (const char* env = std::getenv("VARC_CACHE")) options.cacheUrls = cache::splitCacheList(env);
+        if (const char* env = std::getenv("VARC_CACHE"))
+            options.cacheUrls = cache::splitCacheList(env);
     }
     if (options.builtinIncludeDir.empty()) {
         if (const char* env = std::getenv("VARC_BUILTIN_INCLUDE_DIR")) {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // CacheChain: levels in order, write-back of shared hits, damaged values are misses, and a
 // failed level is skipped with one warning while the build goes on.
-#include "varc/cache/CacheChain.h"
-
 #include <gtest/gtest.h>
 
 #include <map>
+
+#include "varc/cache/CacheChain.h"
 
 namespace varc::cache {
 namespace {
@@ -100,7 +100,8 @@ TEST(CacheChainTest, ADamagedValueIsAMissAndTheNextLevelIsTried) {
 TEST(CacheChainTest, AFailedLevelIsSkippedWithOneWarning) {
     Chain c = makeChain();
     c.shared->breakOnUse = true;
-    for (int i = 0; i < 5; ++i) EXPECT_EQ(c.chain.get("k" + std::to_string(i), acceptAll), std::nullopt);
+    for (int i = 0; i < 5; ++i)
+        EXPECT_EQ(c.chain.get("k" + std::to_string(i), acceptAll), std::nullopt);
     EXPECT_EQ(c.shared->gets, 1) << "a failed level is not asked again";
     ASSERT_TRUE(c.chain.put("k", "v"));
     EXPECT_EQ(c.local->values["k"], "v") << "the local level goes on";

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // CacheSpec: the URLs `--cache` and VARC_CACHE accept, their defaults and their errors.
-#include "varc/cache/CacheSpec.h"
-
 #include <gtest/gtest.h>
+
+#include "varc/cache/CacheSpec.h"
 
 namespace varc::cache {
 namespace {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // DirectoryStorage: values round-trip through files, and stats/clear touch only varc's entries.
-#include "varc/cache/DirectoryStorage.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+
+#include "varc/cache/DirectoryStorage.h"
 
 namespace varc::cache {
 namespace {
@@ -18,8 +18,9 @@ class DirectoryStorageTest : public ::testing::Test {
 protected:
     void SetUp() override {
         mDir = fs::temp_directory_path() /
-               ("varc-dirstorage-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+               ("varc-dirstorage-" +
+                std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
         fs::remove_all(mDir);
     }
     void TearDown() override { fs::remove_all(mDir); }

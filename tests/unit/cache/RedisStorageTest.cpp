@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // RedisStorage without a server: an unreachable or silent remote fails fast, once, and never
 // throws or stalls; SIGPIPE never ends the process. (Against a real redis-server: tests/cache.)
-#include "varc/cache/RedisStorage.h"
-
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <chrono>
+
+#include "varc/cache/RedisStorage.h"
 
 namespace varc::cache {
 namespace {
@@ -51,9 +51,8 @@ TEST(RedisStorageTest, AServerThatNeverAnswersTimesOut) {
     ASSERT_EQ(::listen(fd, 4), 0);  // the kernel accepts; nobody ever answers
     socklen_t length = sizeof(address);
     ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length);
-    Result<CacheSpec> spec = parseCacheSpec("redis://127.0.0.1:" +
-                                            std::to_string(ntohs(address.sin_port)) +
-                                            "|operation-timeout=200");
+    Result<CacheSpec> spec = parseCacheSpec(
+        "redis://127.0.0.1:" + std::to_string(ntohs(address.sin_port)) + "|operation-timeout=200");
     ASSERT_TRUE(spec);
     RedisStorage storage(*spec);
     auto start = std::chrono::steady_clock::now();

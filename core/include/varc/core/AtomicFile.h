@@ -15,8 +15,9 @@ namespace varc {
 enum class Durability { Synced, Unsynced };
 
 // Writes |contents| to a temporary file next to |path| (unique per process and call, created
-// exclusively), flushes it (fsync, unless Durability::Unsynced), then renames it over |path|. On failure the temporary is removed and
-// |path| is untouched; the error names the path and the system's reason.
+// exclusively), flushes it (fsync, unless Durability::Unsynced), then renames it over |path|.
+// On failure the temporary is removed and |path| is untouched; the error names the path and the
+// system's reason.
 //
 // Only regular files are ever replaced: when |path| is a character device, FIFO or socket
 // (`-o /dev/null`), |contents| are written into it and it stays what it was; a symbolic link

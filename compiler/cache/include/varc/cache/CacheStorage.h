@@ -38,7 +38,8 @@ struct CacheUsage {
 
 class CacheStorage {
 public:
-    explicit CacheStorage(std::string name, bool readOnly) : mName(std::move(name)), mReadOnly(readOnly) {}
+    explicit CacheStorage(std::string name, bool readOnly)
+        : mName(std::move(name)), mReadOnly(readOnly) {}
     virtual ~CacheStorage() = default;
     CacheStorage(const CacheStorage&) = delete;
     CacheStorage& operator=(const CacheStorage&) = delete;

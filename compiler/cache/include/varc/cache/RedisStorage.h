@@ -40,7 +40,8 @@ private:
     struct Reply;
     std::unique_ptr<Reply> commandLocked(const std::vector<std::string_view>& args);
     void failLocked(const std::string& what);
-    // The value of one of MGET's replies, or nullopt (nil; anything else fails the level). Mutex held.
+    // The value of one of MGET's replies, or nullopt (nil; anything else fails the level). Mutex
+    // held.
     std::optional<std::string> valueLocked(const redisReply& reply);
     // Visits every key under the prefix (SCAN); stops at the first error |visit| returns.
     Status scanLocked(const std::function<Status(std::string_view)>& visit);
