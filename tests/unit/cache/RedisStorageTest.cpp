@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
-// RedisStorage without a server: an unreachable or silent remote fails fast, once, and never
-// throws or stalls; SIGPIPE never ends the process. (Against a real redis-server: tests/cache.)
+// RedisStorage: an unreachable or silent remote fails fast, once, and never throws or stalls;
+// against a redis-server of its own (skipped, saying so, when none is installed): values
+// round-trip in batches, prefix, read-only, stats and clear, a full server refuses writes only.
+// The builds against Redis are in tests/cache.
 #include <gtest/gtest.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
 
 #include "varc/cache/RedisStorage.h"
 
@@ -62,6 +68,102 @@ TEST(RedisStorageTest, AServerThatNeverAnswersTimesOut) {
     EXPECT_TRUE(storage.failed());
     EXPECT_EQ(storage.stats().timeouts, 1u) << storage.failure();
     ::close(fd);
+}
+
+// A redis-server on a free loopback port for one test, stopped (by its pid) at the end.
+class RedisServer {
+public:
+    explicit RedisServer(const std::string& options = "") {
+        if (std::system("command -v redis-server >/dev/null 2>&1") != 0) return;
+        mPort = closedPort();
+        mDir = std::filesystem::temp_directory_path() /
+               ("varc-redis-test-" + std::to_string(::getpid()) + "-" + std::to_string(mPort));
+        std::filesystem::create_directories(mDir);
+        std::string start = "redis-server --bind 127.0.0.1 --port " + std::to_string(mPort) +
+                            " --save '' --appendonly no --daemonize yes --pidfile " + pidFile() +
+                            " --logfile " + (mDir / "log").string() + " --dir " + mDir.string() +
+                            " " + options;
+        std::string wait = "for i in $(seq 50); do redis-cli -p " + std::to_string(mPort) +
+                           " ping >/dev/null 2>&1 && exit 0; sleep 0.1; done; exit 1";
+        mRunning = std::system(start.c_str()) == 0 && std::system(wait.c_str()) == 0;
+    }
+    ~RedisServer() {
+        if (!mDir.empty()) {
+            (void)std::system(("kill $(cat " + pidFile() + ") 2>/dev/null").c_str());
+            std::error_code ignored;
+            std::filesystem::remove_all(mDir, ignored);
+        }
+    }
+    bool running() const { return mRunning; }
+    std::string url(const std::string& attributes = "") const {
+        return "redis://127.0.0.1:" + std::to_string(mPort) + "/0" + attributes;
+    }
+
+private:
+    std::string pidFile() const { return (mDir / "pid").string(); }
+    uint16_t mPort = 0;
+    std::filesystem::path mDir;
+    bool mRunning = false;
+};
+
+#define VARC_REQUIRE_REDIS(server)                                              \
+    if (std::system("command -v redis-server >/dev/null 2>&1") != 0)            \
+        GTEST_SKIP() << "redis-server not installed (scripts/install-deps.sh)"; \
+    ASSERT_TRUE((server).running()) << "redis-server did not start"
+
+TEST(RedisStorageTest, ValuesRoundTripInBatchesUnderThePrefix) {
+    RedisServer server;
+    VARC_REQUIRE_REDIS(server);
+    RedisStorage storage(*parseCacheSpec(server.url("|prefix=t:")));
+    ASSERT_TRUE(storage.put("a.program", std::string("bytes\0with nul", 14)));
+    ASSERT_TRUE(storage.put("b.source", "text"));
+    std::vector<std::string> keys;
+    for (int i = 0; i < 1100; ++i)
+        keys.push_back(i == 7 ? "a.program" : "missing" + std::to_string(i));
+    keys.push_back("b.source");
+    std::vector<std::optional<std::string>> values = storage.getMany(keys);
+    ASSERT_EQ(values.size(), keys.size());
+    EXPECT_EQ(values[7], std::string("bytes\0with nul", 14));
+    EXPECT_EQ(values.back(), "text");
+    EXPECT_EQ(std::count(values.begin(), values.end(), std::nullopt), 1099);
+    EXPECT_FALSE(storage.failed()) << storage.failure();
+    CacheLevelStats stats = storage.stats();
+    EXPECT_EQ(stats.bytesRead, 18u);
+    EXPECT_EQ(stats.bytesWritten, 18u);
+    Result<CacheUsage> usage = storage.usage();
+    ASSERT_TRUE(usage) << usage.error().detail;
+    EXPECT_EQ(usage->entries, 2u);
+    EXPECT_EQ(usage->bytes, 18u);
+    RedisStorage other(*parseCacheSpec(server.url("|prefix=u:")));
+    ASSERT_TRUE(other.put("c.program", "other"));
+    Result<uint64_t> removed = storage.clear();
+    ASSERT_TRUE(removed) << removed.error().detail;
+    EXPECT_EQ(*removed, 2u);
+    EXPECT_EQ(other.get("c.program"), "other") << "clear removes only its own prefix";
+}
+
+TEST(RedisStorageTest, AReadOnlyLevelNeverWrites) {
+    RedisServer server;
+    VARC_REQUIRE_REDIS(server);
+    RedisStorage readOnly(*parseCacheSpec(server.url("|read-only")));
+    ASSERT_TRUE(readOnly.put("k", "v"));
+    RedisStorage reader(*parseCacheSpec(server.url()));
+    EXPECT_EQ(reader.get("k"), std::nullopt);
+    EXPECT_EQ(readOnly.stats().writes, 0u);
+}
+
+TEST(RedisStorageTest, AFullServerRefusesWritesOnlyAndOnce) {
+    RedisServer server("--maxmemory 1mb --maxmemory-policy noeviction");
+    VARC_REQUIRE_REDIS(server);
+    RedisStorage storage(*parseCacheSpec(server.url()));
+    const std::string big(64 * 1024, 'x');
+    ASSERT_TRUE(storage.put("first", "kept"));
+    for (int i = 0; i < 64 && storage.failure().empty(); ++i)
+        ASSERT_TRUE(storage.put("big" + std::to_string(i), big));
+    EXPECT_NE(storage.failure().find("OOM"), std::string::npos) << storage.failure();
+    EXPECT_FALSE(storage.failed()) << "a full server still serves reads";
+    EXPECT_EQ(storage.stats().errors, 1u);
+    EXPECT_EQ(storage.get("first"), "kept");
 }
 
 }  // namespace
