@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "varc/cache/CacheSpec.h"
 
+#include <algorithm>
 #include <charconv>
 #include <optional>
 
@@ -82,23 +83,43 @@ std::string applyAttribute(std::string_view attribute, CacheSpec& spec) {
            "' (known: read-only; for redis: prefix=, ttl=, connect-timeout=, operation-timeout=)";
 }
 
+// Takes "[[USER:]PASSWORD@]" off the front of a Redis |address| into |spec|, and returns the URL
+// to print instead of |url|: the password replaced by "***".
+std::string takeCredentials(std::string_view url, std::string_view& address, CacheSpec& spec) {
+    size_t at = address.rfind('@');
+    if (at == std::string_view::npos) return std::string(url);
+    std::string_view credentials = address.substr(0, at);
+    size_t colon = credentials.find(':');
+    std::string masked = "***";
+    if (colon != std::string_view::npos) {
+        spec.username = credentials.substr(0, colon);
+        masked = spec.username + ":***";
+    }
+    spec.password = colon == std::string_view::npos ? credentials : credentials.substr(colon + 1);
+    address = address.substr(at + 1);
+    size_t start = std::string_view("redis://").size();
+    return std::string(url.substr(0, start)) + masked + "@" +
+           std::string(url.substr(start + at + 1));
+}
+
 }  // namespace
 
 Result<CacheSpec> parseCacheSpec(std::string_view url) {
     CacheSpec spec;
-    spec.url = url;
-    auto fail = [&](const std::string& reason) {
-        return makeError(ErrorCode::InvalidInput,
-                         "cache URL '" + std::string(url) + "': " + reason);
-    };
     std::vector<std::string_view> parts = split(url, '|');
     std::string_view location = parts[0];
+    std::string_view address = location.substr(std::min<size_t>(location.size(), 8));
+    spec.url = location.substr(0, 8) == "redis://" ? takeCredentials(url, address, spec)
+                                                   : std::string(url);
+    auto fail = [&](const std::string& reason) {
+        return makeError(ErrorCode::InvalidInput, "cache URL '" + spec.url + "': " + reason);
+    };
     if (location.substr(0, 5) == "file:") {
         spec.directory = location.substr(5);
         if (spec.directory.empty()) return fail("no folder after 'file:'");
     } else if (location.substr(0, 8) == "redis://") {
         spec.kind = CacheSpec::Kind::Redis;
-        if (std::string reason = parseRedisAddress(location.substr(8), spec); !reason.empty())
+        if (std::string reason = parseRedisAddress(address, spec); !reason.empty())
             return fail(reason);
     } else {
         return fail("expected file:DIR or redis://HOST[:PORT][/DB]");

@@ -101,6 +101,19 @@ RedisStorage::Connection* RedisStorage::connectionLocked() {
         failLocked("cannot set the operation timeout");
         return nullptr;
     }
+    if (!mSpec.password.empty()) {
+        std::unique_ptr<Reply> auth = mSpec.username.empty()
+                                          ? commandLocked({"AUTH", mSpec.password})
+                                          : commandLocked({"AUTH", mSpec.username, mSpec.password});
+        if (!auth) return nullptr;
+        if (auth->reply->type != REDIS_REPLY_STATUS) {
+            const redisReply& r = *auth->reply;
+            failLocked("AUTH refused" + (r.type == REDIS_REPLY_ERROR
+                                             ? " (" + std::string(r.str, r.len) + ")"
+                                             : std::string()));
+            return nullptr;
+        }
+    }
     if (mSpec.database != 0) {
         std::string db = std::to_string(mSpec.database);
         std::unique_ptr<Reply> selected = commandLocked({"SELECT", db});

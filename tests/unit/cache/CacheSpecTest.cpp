@@ -45,6 +45,24 @@ TEST(CacheSpecTest, EveryRedisPartAndAttributeIsRead) {
     EXPECT_EQ(spec->operationTimeoutMs, 250u);
 }
 
+TEST(CacheSpecTest, CredentialsAreReadAndNeverPrinted) {
+    Result<CacheSpec> spec = parseCacheSpec("redis://ci:s3cr@t@cache.example:7000/2|read-only");
+    ASSERT_TRUE(spec) << spec.error().detail;
+    EXPECT_EQ(spec->username, "ci");
+    EXPECT_EQ(spec->password, "s3cr@t");
+    EXPECT_EQ(spec->host, "cache.example");
+    EXPECT_EQ(spec->port, 7000);
+    EXPECT_EQ(spec->url, "redis://ci:***@cache.example:7000/2|read-only");
+    Result<CacheSpec> password = parseCacheSpec("redis://hunter2@h");
+    ASSERT_TRUE(password);
+    EXPECT_EQ(password->username, "");
+    EXPECT_EQ(password->password, "hunter2");
+    EXPECT_EQ(password->url, "redis://***@h");
+    Result<CacheSpec> bad = parseCacheSpec("redis://hunter2@h:0");
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().detail.find("hunter2"), std::string::npos) << bad.error().detail;
+}
+
 TEST(CacheSpecTest, BadUrlsAreErrorsThatQuoteThem) {
     const std::pair<const char*, const char*> cases[] = {
         {"/tmp/c", "expected file:DIR or redis://"},

@@ -142,6 +142,21 @@ TEST(RedisStorageTest, ValuesRoundTripInBatchesUnderThePrefix) {
     EXPECT_EQ(other.get("c.program"), "other") << "clear removes only its own prefix";
 }
 
+TEST(RedisStorageTest, APasswordIsSentAndAWrongOneFailsTheLevel) {
+    RedisServer server("--requirepass s3cret");
+    VARC_REQUIRE_REDIS(server);
+    const std::string port = server.url().substr(18);  // "PORT/0" after "redis://127.0.0.1:"
+    RedisStorage good(*parseCacheSpec("redis://s3cret@127.0.0.1:" + port));
+    ASSERT_TRUE(good.put("k", "v"));
+    EXPECT_EQ(good.get("k"), "v");
+    EXPECT_FALSE(good.failed()) << good.failure();
+    RedisStorage wrong(*parseCacheSpec("redis://wrong@127.0.0.1:" + port));
+    EXPECT_EQ(wrong.get("k"), std::nullopt);
+    EXPECT_TRUE(wrong.failed());
+    EXPECT_NE(wrong.failure().find("AUTH"), std::string::npos) << wrong.failure();
+    EXPECT_EQ(wrong.name().find("wrong"), std::string::npos) << "the password is never printed";
+}
+
 TEST(RedisStorageTest, AReadOnlyLevelNeverWrites) {
     RedisServer server;
     VARC_REQUIRE_REDIS(server);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // CacheSpec: one cache level as the user names it (`--cache URL`, `VARC_CACHE`), ccache style:
 //   file:DIR[|attribute...]                        a local folder
-//   redis://[HOST][:PORT][/DB][|attribute...]      a Redis server (default 127.0.0.1:6379/0)
+//   redis://[[USER:]PASSWORD@][HOST][:PORT][/DB][|attribute...]
+//                                                  a Redis server (default 127.0.0.1:6379/0)
 // Attributes: read-only; prefix=TEXT (Redis key prefix, default "varc:"); ttl=SECONDS (Redis
 // expiry, default none); connect-timeout=MS (default 100); operation-timeout=MS (default 1000).
 #pragma once
@@ -18,11 +19,13 @@ namespace varc::cache {
 struct CacheSpec {
     enum class Kind { Directory, Redis };
     Kind kind = Kind::Directory;
-    std::string url;        // as written, for messages
+    std::string url;        // as written, for messages, with any password replaced by "***"
     std::string directory;  // Directory
     std::string host = "127.0.0.1";
     uint16_t port = 6379;
     uint32_t database = 0;
+    std::string username;  // Redis 6 ACL user ("" = the default user)
+    std::string password;  // "" = no AUTH
     std::string prefix = "varc:";
     bool readOnly = false;
     uint32_t ttlSeconds = 0;  // 0 = entries never expire
