@@ -43,7 +43,7 @@ real="redis://127.0.0.1:$(cat "$tmp/redis/port")/0"
 "$varc" build --json --cache "$real" -o "$tmp/cold.svpack" "$@" >"$tmp/cold.json" || fail "cold build"
 keys=$(redis-cli -p "$(cat "$tmp/redis/port")" --scan --pattern 'varc:*')
 [ -n "$keys" ] || fail "the cold build stored nothing in Redis"
-for key in $keys; do redis-cli -p "$(cat "$tmp/redis/port")" set "$key" "garbage" >/dev/null; done
+for key in $keys; do echo "SET $key garbage"; done | redis-cli -p "$(cat "$tmp/redis/port")" >/dev/null
 "$varc" build --json --cache "file:$tmp/fresh" --cache "$real" -o "$tmp/damaged.svpack" "$@" \
     >"$tmp/damaged.json" 2>"$tmp/damaged.err" || fail "the build over damaged values failed"
 same_pack "$tmp/damaged.svpack"
