@@ -88,7 +88,8 @@ Status writeInPlace(const std::string& path, std::string_view contents) {
 }
 
 // Writes |contents| to a new temporary file next to |path| and renames it over |path|.
-Status replaceRegularFile(const std::string& path, std::string_view contents) {
+Status replaceRegularFile(const std::string& path, std::string_view contents,
+                          Durability durability) {
     const std::string temp = temporaryPathFor(path);
     TrackedTemporary tracked(temp);
     int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
@@ -97,7 +98,8 @@ Status replaceRegularFile(const std::string& path, std::string_view contents) {
         return makeError(ErrorCode::IoError, "cannot write '" + path + "' (its temporary '" + temp +
                                                  "' cannot be created): " + std::strerror(error));
     }
-    bool written = writeAll(fd, contents) && ::fsync(fd) == 0;
+    bool written =
+        writeAll(fd, contents) && (durability == Durability::Unsynced || ::fsync(fd) == 0);
     int error = errno;
     if (::close(fd) != 0 && written) {
         written = false;
@@ -124,7 +126,8 @@ void removeTemporariesOnTerminationSignals() {
     for (int signal : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signal, &action, nullptr);
 }
 
-Status writeFileAtomically(const std::string& path, std::string_view contents) {
+Status writeFileAtomically(const std::string& path, std::string_view contents,
+                           Durability durability) {
     // A symbolic link stays a link: the file it names is replaced.
     std::error_code ignored;
     std::string target = path;
@@ -138,7 +141,7 @@ Status writeFileAtomically(const std::string& path, std::string_view contents) {
             return makeError(ErrorCode::IoError, "cannot write '" + path + "': it is a directory");
         if (!S_ISREG(info.st_mode)) return writeInPlace(target, contents);
     }
-    return replaceRegularFile(target, contents);
+    return replaceRegularFile(target, contents, durability);
 }
 
 }  // namespace varc

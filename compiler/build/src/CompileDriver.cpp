@@ -61,7 +61,9 @@ public:
         : mSourceMap(sourceMap),
           mOptions(options),
           mThreads(options.jobs ? options.jobs : defaultThreadCount()) {
-        if (!options.cacheDirectory.empty()) {
+        if (options.cache) {
+            mCache = std::make_unique<ProgramCache>(options.cache);
+        } else if (!options.cacheDirectory.empty()) {
             mCache = std::make_unique<ProgramCache>(options.cacheDirectory);
         }
     }
@@ -74,6 +76,12 @@ public:
 
     size_t preprocessedPrograms() const { return mPreprocessed; }
     const std::string& cacheError() const { return mCacheError; }
+    std::vector<cache::CacheLevelStats> cacheStats() const {
+        return mCache ? mCache->chain().stats() : std::vector<cache::CacheLevelStats>{};
+    }
+    std::vector<std::string> cacheWarnings() const {
+        return mCache ? mCache->chain().warnings() : std::vector<std::string>{};
+    }
     size_t cachedStageSources() const { return mCachedStageSources; }
 
 private:
@@ -83,6 +91,8 @@ private:
                       const ItemOutcome& outcome);
     CompiledSource compileSource(const SourceProgram& source) const;
     std::vector<uint32_t> shardsOfSources() const;
+    // Reads the cache entries of sources [first, first + count) in one batch.
+    void prefetchPrograms(size_t first, size_t count) const;
     // Remembers the first failure to write the cache (thread-safe); the build goes on.
     void noteCacheFailure(const Status& stored) const;
     // Where a program first used by |pass| came from, for runtime error messages.
@@ -108,7 +118,7 @@ private:
     size_t mCachedStageSources = 0;  // pruned sources read from the cache
     std::vector<CompiledSource> mCompiled;
     DiagnosticGrouper mGrouper;
-    std::unique_ptr<ProgramCache> mCache;  // null without BuildOptions::cacheDirectory
+    std::unique_ptr<ProgramCache> mCache;  // null without a cache in BuildOptions
     mutable std::mutex mCacheErrorMutex;
     mutable std::string mCacheError;  // the first failure to store an entry
 };
@@ -233,12 +243,15 @@ bool Builder::internChunk(size_t jobIndex, size_t firstItem, size_t count) {
             sourceKeys[p] =
                 mCache->sourceKeyOf({job.textHash, languageOf(job), stage, entry,
                                      preambles[pending[p].preprocess], mOptions.pruneStages});
-            if (std::optional<std::string> text = mCache->loadSource(sourceKeys[p])) {
-                pending[p].result.ok = true;
-                pending[p].result.text = std::move(*text);
-                resolved[p] = 1;
-            }
         });
+        // One batch per chunk: a remote level answers it in one round trip.
+        std::vector<std::optional<std::string>> texts = mCache->loadSources(sourceKeys);
+        for (size_t p = 0; p < pending.size(); ++p) {
+            if (!texts[p]) continue;
+            pending[p].result.ok = true;
+            pending[p].result.text = std::move(*texts[p]);
+            resolved[p] = 1;
+        }
     }
     std::vector<size_t> needed;  // the preprocessings some unresolved item needs
     std::vector<char> isNeeded(preambles.size(), 0);
@@ -307,6 +320,16 @@ void Builder::noteCacheFailure(const Status& stored) const {
     if (mCacheError.empty()) mCacheError = stored.error().detail;
 }
 
+void Builder::prefetchPrograms(size_t first, size_t count) const {
+    std::vector<ProgramCacheKey> keys(count);
+    parallelFor(count, mThreads, [&](size_t n) {
+        const SourceProgram& source = mSources[first + n];
+        keys[n] = mCache->keyOf({mOptions.optimization, languageOf(mJobs[source.job]),
+                                 source.stage, source.entryPoint, source.text});
+    });
+    mCache->prefetch(keys);
+}
+
 CompiledSource Builder::compileSource(const SourceProgram& source) const {
     const PassJob& job = mJobs[source.job];
     const SourceLocation& origin = job.pass->pass->program->origin;
@@ -336,23 +359,31 @@ bool Builder::compileSources() {
     std::vector<uint32_t> shardOf = shardsOfSources();
     std::atomic<bool> failed{false};
     std::atomic<size_t> done{0};
-    parallelFor(
-        mSources.size(), mThreads,
-        [&](size_t i) {
-            if (failed.load() && !mOptions.keepGoing) return;
-            if (shardOf[i] + 1 != mOptions.shard.index) {
-                mCompiled[i].ok = true;
-                mCompiled[i].otherShard = true;
-                mCompiled[i].spirv = pack::placeholderSpirv(static_cast<uint32_t>(i));
-                return;
-            }
-            double start = threadCpuSeconds();
-            mCompiled[i] = compileSource(mSources[i]);
-            mCompiled[i].seconds = threadCpuSeconds() - start;
-            if (!mCompiled[i].ok) failed.store(true);
-            if (mOptions.progress) mOptions.progress(done.fetch_add(1) + 1, mSources.size());
-        },
-        /*firstAlone=*/true);
+    // In chunks, each chunk's cache entries fetched in one batch first (one round trip per
+    // remote level), so a warm shared cache costs no round trip per program.
+    for (size_t first = 0; first < mSources.size(); first += kChunkSize) {
+        const size_t count = std::min(kChunkSize, mSources.size() - first);
+        if (mCache) prefetchPrograms(first, count);
+        parallelFor(
+            count, mThreads,
+            [&](size_t n) {
+                const size_t i = first + n;
+                if (failed.load() && !mOptions.keepGoing) return;
+                if (shardOf[i] + 1 != mOptions.shard.index) {
+                    mCompiled[i].ok = true;
+                    mCompiled[i].otherShard = true;
+                    mCompiled[i].spirv = pack::placeholderSpirv(static_cast<uint32_t>(i));
+                    return;
+                }
+                double start = threadCpuSeconds();
+                mCompiled[i] = compileSource(mSources[i]);
+                mCompiled[i].seconds = threadCpuSeconds() - start;
+                if (!mCompiled[i].ok) failed.store(true);
+                if (mOptions.progress) mOptions.progress(done.fetch_add(1) + 1, mSources.size());
+            },
+            /*firstAlone=*/first == 0);
+        if (failed.load() && !mOptions.keepGoing) break;
+    }
     // The variants behind each program with diagnostics, to count each affected variant once.
     std::vector<std::vector<uint64_t>> variantsOf(mSources.size());
     for (size_t j = 0; j < mJobs.size(); ++j) {
@@ -450,10 +481,13 @@ std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shader
     if (!builder.cacheError().empty()) {
         sink.warning({}, "the program cache is not updated: " + builder.cacheError());
     }
+    // One warning per cache level that failed or refused writes; the build went on without it.
+    for (const std::string& warning : builder.cacheWarnings()) sink.warning({}, warning);
     if (!ok) return std::nullopt;
     BuildOutput output = builder.assemble();
     output.preprocessedPrograms = builder.preprocessedPrograms();
     output.cachedStageSources = builder.cachedStageSources();
+    output.cacheLevels = builder.cacheStats();
     return output;
 }
 

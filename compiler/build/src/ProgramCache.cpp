@@ -7,9 +7,8 @@
 
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 
-#include "varc/core/AtomicFile.h"
+#include "varc/cache/DirectoryStorage.h"
 #include "varc/core/FileRead.h"
 
 namespace varc::compiler {
@@ -131,8 +130,76 @@ std::string ProgramCacheKey::hex() const {
     return text;
 }
 
+namespace {
+
+std::shared_ptr<cache::CacheChain> directoryChain(const std::string& directory) {
+    std::vector<std::unique_ptr<cache::CacheStorage>> levels;
+    levels.push_back(std::make_unique<cache::DirectoryStorage>(directory, "file:" + directory,
+                                                               /*readOnly=*/false));
+    return std::make_shared<cache::CacheChain>(std::move(levels));
+}
+
+// The payload of a sound entry for |key| (see the layout above), or nullopt.
+std::optional<std::string_view> payloadOf(std::string_view bytes, const ProgramCacheKey& key,
+                                          std::string_view magic) {
+    if (bytes.size() < kEntryOverhead) return std::nullopt;
+    std::string_view body = bytes.substr(0, bytes.size() - 8);
+    Reader checksum(bytes.substr(bytes.size() - 8));
+    uint64_t expected = 0;
+    if (!checksum.u64(expected) || XXH64(body.data(), body.size(), 0) != expected)
+        return std::nullopt;
+    Reader in(body);
+    std::string_view storedMagic;
+    ProgramCacheKey stored;
+    if (!in.bytes(magic.size(), storedMagic) || storedMagic != magic || !in.u64(stored.low) ||
+        !in.u64(stored.high) || !(stored == key)) {
+        return std::nullopt;
+    }
+    return body.substr(in.offset());
+}
+
+// A program entry's payload (see the layout above) as a CachedProgram, or nullopt.
+std::optional<CachedProgram> parseProgram(std::string_view payload) {
+    Reader in(payload);
+    uint32_t logBytes = 0, semantics = 0, words = 0, strippedWords = 0;
+    if (!in.u32(logBytes) || !in.u32(semantics) || !in.u32(words) || !in.u32(strippedWords) ||
+        logBytes > kMaxField || semantics > kMaxField || words > kMaxField ||
+        strippedWords > kMaxField) {
+        return std::nullopt;
+    }
+    CachedProgram program;
+    std::string_view log;
+    if (!in.bytes(logBytes, log)) return std::nullopt;
+    program.log = log;
+    for (uint32_t i = 0; i < semantics; ++i) {
+        uint32_t location = 0, length = 0;
+        std::string_view name;
+        if (!in.u32(location) || !in.u32(length) || !in.bytes(length, name)) return std::nullopt;
+        program.semantics.emplace(location, std::string(name));
+    }
+    program.spirv.resize(words);
+    for (uint32_t& word : program.spirv) {
+        if (!in.u32(word)) return std::nullopt;
+    }
+    program.stripped.resize(strippedWords);
+    for (uint32_t& word : program.stripped) {
+        if (!in.u32(word)) return std::nullopt;
+    }
+    if (in.offset() != payload.size() || program.spirv.empty() || program.stripped.empty()) {
+        return std::nullopt;
+    }
+    return program;
+}
+
+}  // namespace
+
 ProgramCache::ProgramCache(std::string directory)
-    : mDirectory(std::move(directory)), mToolchain(executableHash()) {}
+    : mDirectory(std::move(directory)),
+      mChain(directoryChain(mDirectory)),
+      mToolchain(executableHash()) {}
+
+ProgramCache::ProgramCache(std::shared_ptr<cache::CacheChain> chain)
+    : mChain(std::move(chain)), mToolchain(executableHash()) {}
 
 ProgramCacheKey ProgramCache::hashText(std::string_view text) { return hash128(text); }
 
@@ -164,30 +231,29 @@ ProgramCacheKey ProgramCache::sourceKeyOf(const SourceCacheInput& input) const {
     return hash128(text);
 }
 
-std::string ProgramCache::pathOf(const ProgramCacheKey& key, std::string_view extension) const {
-    std::string hex = key.hex();
-    return mDirectory + "/" + hex.substr(0, 2) + "/" + hex + std::string(extension);
+std::string ProgramCache::entryName(const ProgramCacheKey& key, std::string_view extension) {
+    return key.hex() + std::string(extension);
 }
 
-std::optional<std::string> ProgramCache::loadPayload(const ProgramCacheKey& key,
-                                                     std::string_view magic,
-                                                     std::string_view extension) const {
-    std::optional<std::string> file = readBytes(pathOf(key, extension));
-    if (!file || file->size() < kEntryOverhead) return std::nullopt;
-    std::string_view bytes(*file);
-    std::string_view body = bytes.substr(0, bytes.size() - 8);
-    Reader checksum(bytes.substr(bytes.size() - 8));
-    uint64_t expected = 0;
-    if (!checksum.u64(expected) || XXH64(body.data(), body.size(), 0) != expected)
-        return std::nullopt;
-    Reader in(body);
-    std::string_view storedMagic;
-    ProgramCacheKey stored;
-    if (!in.bytes(magic.size(), storedMagic) || storedMagic != magic || !in.u64(stored.low) ||
-        !in.u64(stored.high) || !(stored == key)) {
-        return std::nullopt;
+std::string ProgramCache::pathOf(const ProgramCacheKey& key, std::string_view extension) const {
+    std::string hex = key.hex();
+    return mDirectory + "/" + hex.substr(0, 2) + "/" + entryName(key, extension);
+}
+
+std::vector<std::optional<std::string>> ProgramCache::loadPayloads(
+    const std::vector<ProgramCacheKey>& keys, std::string_view magic,
+    std::string_view extension) const {
+    std::vector<std::string> names;
+    names.reserve(keys.size());
+    for (const ProgramCacheKey& key : keys) names.push_back(entryName(key, extension));
+    std::vector<std::optional<std::string>> entries =
+        mChain->getMany(names, [&](size_t k, std::string_view bytes) {
+            return payloadOf(bytes, keys[k], magic).has_value();
+        });
+    for (size_t k = 0; k < keys.size(); ++k) {
+        if (entries[k]) entries[k] = std::string(*payloadOf(*entries[k], keys[k], magic));
     }
-    return std::string(body.substr(in.offset()));
+    return entries;
 }
 
 Status ProgramCache::storePayload(const ProgramCacheKey& key, std::string_view magic,
@@ -197,48 +263,30 @@ Status ProgramCache::storePayload(const ProgramCacheKey& key, std::string_view m
     putU64(bytes, key.high);
     bytes += payload;
     putU64(bytes, XXH64(bytes.data(), bytes.size(), 0));
-    const std::string path = pathOf(key, extension);
-    std::error_code error;
-    std::filesystem::create_directories(std::filesystem::path(path).parent_path(), error);
-    if (error) {
-        return makeError(ErrorCode::IoError, "cannot create the program cache folder for " + path +
-                                                 ": " + error.message());
-    }
-    return writeFileAtomically(path, bytes);
+    return mChain->put(entryName(key, extension), bytes);
+}
+
+void ProgramCache::prefetch(const std::vector<ProgramCacheKey>& keys) const {
+    std::vector<std::optional<std::string>> payloads =
+        loadPayloads(keys, kProgramMagic, ".program");
+    std::lock_guard<std::mutex> lock(mPrefetchMutex);
+    for (size_t k = 0; k < keys.size(); ++k) mPrefetched[keys[k].hex()] = std::move(payloads[k]);
 }
 
 std::optional<CachedProgram> ProgramCache::load(const ProgramCacheKey& key) const {
-    std::optional<std::string> payload = loadPayload(key, kProgramMagic, ".program");
+    std::optional<std::string> payload;
+    bool prefetched = false;
+    {
+        std::lock_guard<std::mutex> lock(mPrefetchMutex);
+        if (auto it = mPrefetched.find(key.hex()); it != mPrefetched.end()) {
+            prefetched = true;
+            payload = std::move(it->second);
+            mPrefetched.erase(it);
+        }
+    }
+    if (!prefetched) payload = std::move(loadPayloads({key}, kProgramMagic, ".program")[0]);
     if (!payload) return std::nullopt;
-    Reader in(*payload);
-    uint32_t logBytes = 0, semantics = 0, words = 0, strippedWords = 0;
-    if (!in.u32(logBytes) || !in.u32(semantics) || !in.u32(words) || !in.u32(strippedWords) ||
-        logBytes > kMaxField || semantics > kMaxField || words > kMaxField ||
-        strippedWords > kMaxField) {
-        return std::nullopt;
-    }
-    CachedProgram program;
-    std::string_view log;
-    if (!in.bytes(logBytes, log)) return std::nullopt;
-    program.log = log;
-    for (uint32_t i = 0; i < semantics; ++i) {
-        uint32_t location = 0, length = 0;
-        std::string_view name;
-        if (!in.u32(location) || !in.u32(length) || !in.bytes(length, name)) return std::nullopt;
-        program.semantics.emplace(location, std::string(name));
-    }
-    program.spirv.resize(words);
-    for (uint32_t& word : program.spirv) {
-        if (!in.u32(word)) return std::nullopt;
-    }
-    program.stripped.resize(strippedWords);
-    for (uint32_t& word : program.stripped) {
-        if (!in.u32(word)) return std::nullopt;
-    }
-    if (in.offset() != payload->size() || program.spirv.empty() || program.stripped.empty()) {
-        return std::nullopt;
-    }
-    return program;
+    return parseProgram(*payload);
 }
 
 Status ProgramCache::store(const ProgramCacheKey& key, const CachedProgram& program) const {
@@ -259,7 +307,12 @@ Status ProgramCache::store(const ProgramCacheKey& key, const CachedProgram& prog
 }
 
 std::optional<std::string> ProgramCache::loadSource(const ProgramCacheKey& key) const {
-    return loadPayload(key, kSourceMagic, ".source");
+    return std::move(loadPayloads({key}, kSourceMagic, ".source")[0]);
+}
+
+std::vector<std::optional<std::string>> ProgramCache::loadSources(
+    const std::vector<ProgramCacheKey>& keys) const {
+    return loadPayloads(keys, kSourceMagic, ".source");
 }
 
 Status ProgramCache::storeSource(const ProgramCacheKey& key, std::string_view text) const {

@@ -62,6 +62,27 @@ std::string kibibytes(uint64_t bytes) {
     return out.str();
 }
 
+// "Cache level 1 (file:/c): 12 hits, 3 misses; read 4.0 KiB, wrote 1.0 KiB" (+ damaged,
+// errors and timeouts, failed).
+void printCacheLevel(size_t index, const cache::CacheLevelStats& level, std::ostream& out) {
+    out << "Cache level " << index + 1 << " (" << level.name << "): " << level.hits << " hits, "
+        << level.misses << " misses";
+    if (level.damaged) out << " (" << level.damaged << " damaged)";
+    out << "; read " << kibibytes(level.bytesRead) << ", wrote " << kibibytes(level.bytesWritten);
+    if (level.errors || level.timeouts)
+        out << "; " << level.errors << " errors, " << level.timeouts << " timeouts";
+    if (level.failed) out << "; failed, not used for the rest of the build";
+    out << "\n";
+}
+
+Json cacheLevelJson(const cache::CacheLevelStats& level) {
+    return {{"url", level.name},         {"hits", level.hits},
+            {"misses", level.misses},    {"damaged", level.damaged},
+            {"writes", level.writes},    {"bytes_read", level.bytesRead},
+            {"bytes_written", level.bytesWritten}, {"errors", level.errors},
+            {"timeouts", level.timeouts}, {"failed", level.failed}};
+}
+
 }  // namespace
 
 void printBuildReport(const std::vector<compiler::LoadedShader>& shaders,
@@ -94,6 +115,8 @@ void printBuildReport(const std::vector<compiler::LoadedShader>& shaders,
         << std::setprecision(2) << seconds << " s; raw SPIR-V " << kibibytes(sizes.rawSpirvBytes)
         << ", unique " << kibibytes(sizes.uniqueSpirvBytes) << ", pack "
         << kibibytes(sizes.packBytes) << "\n";
+    for (size_t i = 0; i < build.cacheLevels.size(); ++i)
+        printCacheLevel(i, build.cacheLevels[i], out);
 }
 
 Json buildReportJson(const std::vector<compiler::LoadedShader>& shaders,
@@ -121,12 +144,18 @@ Json buildReportJson(const std::vector<compiler::LoadedShader>& shaders,
                           {"programs", programs},
                           {"unaffected", unaffected}});
     }
+    Json cacheJson = Json::array();
+    for (const cache::CacheLevelStats& level : build.cacheLevels)
+        cacheJson.push_back(cacheLevelJson(level));
     return {{"passes", passes},
             {"programs", build.programs.size()},
             {"compiled_sources", build.compiledSources},
             {"preprocessed", build.preprocessedPrograms},
             {"cached_sources", build.cachedSources},
             {"cached_stage_sources", build.cachedStageSources},
+            // Programs glslang compiled in this build (0 when the cache served them all).
+            {"compiled_programs", build.compiledSources - build.cachedSources},
+            {"cache", cacheJson},
             {"bytes",
              {{"raw", sizes.rawSpirvBytes},
               {"unique", sizes.uniqueSpirvBytes},

@@ -15,6 +15,7 @@
 #include "varc/build/Depfile.h"
 #include "varc/build/PackAssembler.h"
 #include "varc/cli/BuildReport.h"
+#include "varc/cli/CacheCommands.h"
 #include "varc/cli/DiagnosticPrinter.h"
 #include "varc/cli/LockCheck.h"
 #include "varc/cli/LockFile.h"
@@ -207,11 +208,16 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
         printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
         return kExitFailure;
     }
+    Result<std::shared_ptr<cache::CacheChain>> cacheLevels = openCacheLevels(options);
+    if (!cacheLevels) {
+        err << "varc: error: " << cacheLevels.error().detail << "\n";
+        return kExitUsage;
+    }
     compiler::BuildOptions buildOptions;
+    buildOptions.cache = *cacheLevels;
     buildOptions.optimization = *compiler::parseOptimizationLevel(options.optimization);
     buildOptions.jobs = options.jobs;
     buildOptions.keepGoing = options.keepGoing;
-    buildOptions.cacheDirectory = options.cacheDirectory;
     buildOptions.maxVariantsPerPass = options.maxVariants;
     buildOptions.debugNames = options.debugNames;
     buildOptions.progress = progressPrinter(err);
@@ -299,6 +305,8 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         case Command::Lookup: return runLookup(options, out, err);
         case Command::Render: return runRender(options, out, err);
         case Command::Validate: return runValidate(options, out, err);
+        case Command::CacheStats: return runCacheStats(options, out, err);
+        case Command::CacheClear: return runCacheClear(options, out, err);
         case Command::Generate:  // parseOptions wrote it
         case Command::None: break;
     }

@@ -6,6 +6,8 @@
 #include "varc/includes/SourcePathMap.h"
 
 #include <CLI/CLI.hpp>
+#include "varc/cache/CacheSpec.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <ostream>
@@ -95,6 +97,29 @@ void addCheck(CLI::App& app, Options& options, std::string& growthText) {
     cmd->callback([&options] { options.command = Command::Check; });
 }
 
+// --cache URL, repeatable, levels in order (VARC_CACHE when absent, read in parseOptions).
+void addCacheUrls(CLI::App& command, Options& options) {
+    command
+        .add_option("--cache", options.cacheUrls,
+                    "Program cache level, in order (repeat): file:DIR or "
+                    "redis://HOST[:PORT][/DB], each with |read-only, |prefix=, |ttl=, "
+                    "|connect-timeout=MS, |operation-timeout=MS (default: $VARC_CACHE)")
+        ->type_name("URL")
+        ->allow_extra_args(false);
+}
+
+void addCache(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand("cache", "Inspect or empty program cache levels");
+    cmd->require_subcommand(1);
+    CLI::App* stats = cmd->add_subcommand("stats", "Entries and bytes in each cache level");
+    addCacheUrls(*stats, options);
+    stats->add_flag("--json", options.json, "Print JSON");
+    stats->callback([&options] { options.command = Command::CacheStats; });
+    CLI::App* clear = cmd->add_subcommand("clear", "Remove every entry varc stored in each level");
+    addCacheUrls(*clear, options);
+    clear->callback([&options] { options.command = Command::CacheClear; });
+}
+
 void addBuild(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("build", "Compile every variant into a SPIR-V pack");
     cmd->add_option("-o,--output", options.outputPath, "Pack file to write")
@@ -139,6 +164,7 @@ void addBuild(CLI::App& app, Options& options) {
             return includes::SourcePathMap().addRule(rule) ? std::string()
                                                            : "expected OLD=NEW, got '" + rule + "'";
         });
+    addCacheUrls(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Build; });
 }
@@ -315,6 +341,7 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
     addRender(app, options);
     addValidate(app, options);
     addGenerate(app, options);
+    addCache(app, options);
     try {
         std::vector<std::string> args = normalizeArguments(argc, argv);
         app.parse(args);
@@ -328,6 +355,10 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
             err << "varc: error: --max-growth expects N or N%, got '" << growthText << "'\n";
             return kExitUsage;
         }
+    }
+    if (options.cacheUrls.empty()) {
+        if (const char* env = std::getenv("VARC_CACHE"))
+            options.cacheUrls = cache::splitCacheList(env);
     }
     if (options.builtinIncludeDir.empty()) {
         options.builtinIncludeDir = builtinIncludeDirUnlessGiven();

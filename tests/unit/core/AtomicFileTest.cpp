@@ -50,6 +50,14 @@ TEST_F(AtomicFileTest, ReplacesExistingContentsWhole) {
     EXPECT_EQ(std::distance(fs::directory_iterator(mDir), fs::directory_iterator()), 1);
 }
 
+TEST_F(AtomicFileTest, AnUnsyncedWriteIsAsWholeAndLeavesNoTemporary) {
+    fs::path path = mDir / "entry.program";
+    ASSERT_TRUE(writeFileAtomically(path.string(), "old", Durability::Unsynced).ok());
+    ASSERT_TRUE(writeFileAtomically(path.string(), "new contents", Durability::Unsynced).ok());
+    EXPECT_EQ(readAll(path), "new contents");
+    EXPECT_EQ(std::distance(fs::directory_iterator(mDir), fs::directory_iterator()), 1);
+}
+
 TEST_F(AtomicFileTest, FailsWithPathInMessageAndLeavesNoFile) {
     fs::path path = mDir / "missing-dir" / "out.bin";
     Status status = writeFileAtomically(path.string(), "x");

@@ -5,12 +5,14 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "varc/build/ShardPlan.h"
 #include "varc/build/SpirvOptimizer.h"
+#include "varc/cache/CacheChain.h"
 #include "varc/core/Diagnostic.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/frontend/VariantLimit.h"
@@ -41,6 +43,9 @@ struct BuildOptions {
     ShardSpec shard;
     // How the pack records source paths (relative to the project root, prefix maps).
     includes::SourcePathMap sourcePaths;
+    // The cache levels (`--cache`): used instead of cacheDirectory when set. The caller keeps a
+    // reference to read the levels' statistics and warnings after the build.
+    std::shared_ptr<cache::CacheChain> cache;
     // A pass with more variants is an error before anything is enumerated (VariantLimit.h).
     uint64_t maxVariantsPerPass = kDefaultMaxVariantsPerPass;
     // Called from worker threads after each distinct program compiles: (done, total). Must be
@@ -78,6 +83,7 @@ struct BuildOutput {
     size_t cachedSources = 0;               // of compiledSources, taken from the program cache
     size_t cachedStageSources = 0;          // pruned (variant, stage) sources taken from it
     size_t otherShardSources = 0;           // of compiledSources, left to other shards
+    std::vector<cache::CacheLevelStats> cacheLevels;  // per cache level, in order (none: empty)
     // Sum over compiled sources of their in-process compile CPU time (glslang, optimiser,
     // validator, reflection), excluding preprocessing and dedup: divided by the thread count, the
     // floor a parallel build of these distinct programs cannot beat. Measured: not deterministic.

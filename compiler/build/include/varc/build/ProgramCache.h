@@ -12,16 +12,24 @@
 // (temporary file, then rename), so concurrent builds can share a directory; an entry that is
 // truncated, corrupt or for another key is ignored and recompiled, never trusted. Failed compiles
 // are not cached. Nothing is ever evicted: delete the directory to reclaim space.
+//
+// Where entries live is a cache::CacheChain (a local folder, then shared levels such as Redis,
+// each entry named "<key hex>.program" or ".source"); this class computes keys, (de)serialises
+// entries and checks them, so a damaged value from any level is a miss.
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "varc/build/SpirvOptimizer.h"
 #include "varc/build/SpirvReflection.h"
+#include "varc/cache/CacheChain.h"
 #include "varc/core/Result.h"
 #include "varc/core/Stage.h"
 #include "varc/shaderlab/ShaderAst.h"
@@ -63,8 +71,10 @@ struct SourceCacheInput {
 
 class ProgramCache {
 public:
-    // Uses |directory| (created on the first store).
+    // Uses |directory| (created on the first store) as the only level.
     explicit ProgramCache(std::string directory);
+    // Uses the levels of |chain|, shared with whoever reads its statistics afterwards.
+    explicit ProgramCache(std::shared_ptr<cache::CacheChain> chain);
 
     ProgramCacheKey keyOf(const ProgramCacheInput& input) const;
     ProgramCacheKey sourceKeyOf(const SourceCacheInput& input) const;
@@ -76,23 +86,37 @@ public:
     // Writes the entry for |key| atomically. Errors name the file and the reason.
     Status store(const ProgramCacheKey& key, const CachedProgram& program) const;
 
-    // The pruned source for |key|, or nullopt; and storing one.
+    // Fetches the program entries for |keys| from every level at once (one round trip per remote
+    // level, not one per key); load() then takes each from memory. Thread-safe.
+    void prefetch(const std::vector<ProgramCacheKey>& keys) const;
+
+    // The pruned source for |key|, or nullopt; many at once (batched like prefetch); storing one.
     std::optional<std::string> loadSource(const ProgramCacheKey& key) const;
+    std::vector<std::optional<std::string>> loadSources(
+        const std::vector<ProgramCacheKey>& keys) const;
     Status storeSource(const ProgramCacheKey& key, std::string_view text) const;
 
-    // Where an entry lives: <directory>/<2 hex>/<32 hex><extension> (".program", ".source").
+    // An entry's name in every level: <32 hex><extension> (".program", ".source").
+    static std::string entryName(const ProgramCacheKey& key, std::string_view extension);
+    // With the directory constructor, where an entry lives: <directory>/<2 hex>/<entryName>.
     std::string pathOf(const ProgramCacheKey& key, std::string_view extension = ".program") const;
 
     const std::string& directory() const { return mDirectory; }
+    cache::CacheChain& chain() const { return *mChain; }
 
 private:
-    std::optional<std::string> loadPayload(const ProgramCacheKey& key, std::string_view magic,
-                                           std::string_view extension) const;
+    std::vector<std::optional<std::string>> loadPayloads(const std::vector<ProgramCacheKey>& keys,
+                                                         std::string_view magic,
+                                                         std::string_view extension) const;
     Status storePayload(const ProgramCacheKey& key, std::string_view magic,
                         std::string_view extension, std::string_view payload) const;
 
-    std::string mDirectory;
+    std::string mDirectory;  // "" unless built from a directory
+    std::shared_ptr<cache::CacheChain> mChain;
     ProgramCacheKey mToolchain;  // hash of the running executable
+    mutable std::mutex mPrefetchMutex;
+    // Program payloads prefetch() read, by key hex, until load() takes them (nullopt: a miss).
+    mutable std::unordered_map<std::string, std::optional<std::string>> mPrefetched;
 };
 
 }  // namespace varc::compiler

@@ -11,7 +11,8 @@
 namespace varc::cli {
 
 enum class Command {
-    None, Variants, Lock, Check, Build, Merge, Info, Extract, Lookup, Render, Validate, Generate
+    None, Variants, Lock, Check, Build, Merge, Info, Extract, Lookup, Render, Validate, Generate,
+    CacheStats, CacheClear
 };
 
 // A growth allowance for `varc check --max-growth`: N variants, or N percent of the lock.
@@ -37,7 +38,8 @@ struct Options {
     unsigned jobs = 0;                     // -j N; 0 = hardware concurrency
     std::string optimization = "-O";       // -O0 | -O | -Os
     bool keepGoing = false;                // --keep-going
-    std::string cacheDirectory;            // --cache-dir DIR or VARC_CACHE_DIR
+    std::string cacheDirectory;            // --cache-dir DIR or VARC_CACHE_DIR (= file:DIR)
+    std::vector<std::string> cacheUrls;    // --cache URL (repeat; build, cache) or VARC_CACHE
     uint64_t maxVariants = 10'000'000;     // --max-variants N: per pass, for build and --list
     bool debugNames = false;               // -g, --debug-names
     int compressionLevel = 19;             // --compression-level N (zstd, 1..22)
