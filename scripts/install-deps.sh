@@ -10,6 +10,7 @@ packages=(
     libglm-dev nlohmann-json3-dev libcli11-dev libzstd-dev libxxhash-dev libpng-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     groff-base file dpkg-dev
+    python3-jsonschema npm
     clang-14 libclang-rt-14-dev
 )
 

@@ -15,7 +15,7 @@
 #include "varc/build/Depfile.h"
 #include "varc/build/PackAssembler.h"
 #include "varc/cli/BuildReport.h"
-#include "varc/cli/DiagnosticPrinter.h"
+#include "varc/cli/DiagnosticOutput.h"
 #include "varc/cli/LockCheck.h"
 #include "varc/cli/LockFile.h"
 #include "varc/cli/Options.h"
@@ -33,11 +33,26 @@ namespace varc::cli {
 
 namespace {
 
-// State shared by the commands: the files read and the diagnostics reported so far.
+// State shared by the commands: the files read, the diagnostics reported so far and where they
+// are written.
 struct Session {
+    explicit Session(const Options& options, std::ostream& err)
+        : output(options.diagnosticsFormat, sourceMap, err) {}
+
     includes::DiskFileSystem fileSystem;
     includes::SourceMap sourceMap;
     DiagnosticList diagnostics;
+    DiagnosticOutput output;
+    size_t printed = 0;  // diagnostics already written
+
+    // Writes the diagnostics reported since the last call, as found by |rule|.
+    void printNew(DiagnosticRule rule) {
+        const std::vector<Diagnostic>& all = diagnostics.diagnostics();
+        output.print(std::vector<Diagnostic>(all.begin() + static_cast<std::ptrdiff_t>(printed),
+                                             all.end()),
+                     rule);
+        printed = all.size();
+    }
 };
 
 includes::IncludeOptions includeOptions(const Options& options) {
@@ -91,11 +106,11 @@ bool checkVariantLimits(const std::vector<compiler::LoadedShader>& shaders, cons
     return ok;
 }
 
-int runVariants(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
+int runVariants(const Options& options, Session& session, std::ostream& out) {
     std::vector<compiler::LoadedShader> shaders;
     bool ok = loadAll(options, session, shaders);
     if (ok && options.list) ok = checkVariantLimits(shaders, options, session);
-    printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+    session.printNew(DiagnosticRule::Input);
     if (!ok) return kExitFailure;
     if (options.json) {
         out << variantsJson(shaders, options.list).dump() << "\n";
@@ -105,52 +120,54 @@ int runVariants(const Options& options, Session& session, std::ostream& out, std
     return kExitOk;
 }
 
-int runLock(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
+int runLock(const Options& options, Session& session, std::ostream& out) {
     std::vector<compiler::LoadedShader> shaders;
     bool ok = loadAll(options, session, shaders);
     // A lock records what builds: a pass that cannot be built does not belong in one.
     if (ok) ok = checkVariantLimits(shaders, options, session);
-    printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+    session.printNew(DiagnosticRule::Input);
     if (!ok) return kExitFailure;
     std::string lockDir = std::filesystem::path(options.lockPath).parent_path().string();
     LockFile lock = makeLock(shaders, lockDir);
     Status written = writeFileAtomically(options.lockPath, serializeLock(lock));
     if (!written) {
-        err << "varc: error: " << written.error().detail << "\n";
+        session.output.error(written.error().detail);
         return kExitFailure;
     }
     out << "wrote " << options.lockPath << ": " << lock.shaders.size() << " shaders\n";
     return kExitOk;
 }
 
-std::optional<LockFile> readLock(const std::string& path, Session& session, std::ostream& err) {
+std::optional<LockFile> readLock(const std::string& path, Session& session) {
     auto text = session.fileSystem.read(path);
     if (!text) {
-        err << "varc: error: cannot read lock file '" << path << "'\n";
+        session.output.error("cannot read lock file '" + path + "'");
         return std::nullopt;
     }
     Result<LockFile> lock = parseLock(*text, path);
     if (!lock) {
-        err << "varc: error: " << lock.error().detail << "\n";
+        session.output.error(lock.error().detail);
         return std::nullopt;
     }
     return std::move(lock).value();
 }
 
-int runCheck(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
-    std::optional<LockFile> lock = readLock(options.lockPath, session, err);
+int runCheck(const Options& options, Session& session, std::ostream& out) {
+    std::optional<LockFile> lock = readLock(options.lockPath, session);
     if (!lock) return kExitUsage;
     std::vector<compiler::LoadedShader> shaders;
     if (!loadAll(options, session, shaders)) {
-        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+        session.printNew(DiagnosticRule::Input);
         return kExitUsage;
     }
+    session.printNew(DiagnosticRule::Input);  // warnings
     DiagnosticList findings;
     bool passed = checkAgainstLock(*lock, shaders, {options.maxGrowth, options.budget}, findings);
-    printDiagnostics(findings.diagnostics(), session.sourceMap, err);
+    session.output.print(findings.diagnostics(), DiagnosticRule::Lock);
     if (!passed) {
-        err << "varc check: variant counts differ from " << options.lockPath
-            << "; if the change is intended, run `varc lock -o " << options.lockPath << "`\n";
+        session.output.summary("varc check: variant counts differ from " + options.lockPath +
+                               "; if the change is intended, run `varc lock -o " +
+                               options.lockPath + "`");
         return kExitFailure;
     }
     out << "varc check: " << shaders.size() << " shaders match " << options.lockPath << "\n";
@@ -204,9 +221,10 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     auto start = std::chrono::steady_clock::now();
     std::vector<compiler::LoadedShader> shaders;
     if (!loadAll(options, session, shaders)) {
-        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+        session.printNew(DiagnosticRule::Input);
         return kExitFailure;
     }
+    session.printNew(DiagnosticRule::Input);  // warnings
     compiler::BuildOptions buildOptions;
     buildOptions.optimization = *compiler::parseOptimizationLevel(options.optimization);
     buildOptions.jobs = options.jobs;
@@ -214,13 +232,13 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     buildOptions.cacheDirectory = options.cacheDirectory;
     buildOptions.maxVariantsPerPass = options.maxVariants;
     buildOptions.debugNames = options.debugNames;
-    buildOptions.progress = progressPrinter(err);
+    if (!session.output.isDocument()) buildOptions.progress = progressPrinter(err);
     if (!options.shard.empty()) buildOptions.shard = *compiler::parseShardSpec(options.shard);
     buildOptions.sourcePaths = sourcePathMap(options);
     auto build = compiler::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);
-    printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+    session.printNew(DiagnosticRule::Compile);
     if (!build) {
-        err << "varc build: failed; " << options.outputPath << " was not written\n";
+        session.output.summary("varc build: failed; " + options.outputPath + " was not written");
         return kExitFailure;
     }
     PackSizes sizes = measureSpirv(*build);
@@ -239,16 +257,17 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
                                            std::to_string(options.compressionLevel)});
     }
     if (!contents) {
-        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
-        err << "varc build: failed; " << options.outputPath << " was not written\n";
+        session.printNew(DiagnosticRule::Compile);
+        session.output.summary("varc build: failed; " + options.outputPath + " was not written");
         return kExitFailure;
     }
+    session.printNew(DiagnosticRule::Compile);  // warnings
     compiler::PackWriteStats stats;
     compiler::PackWriteOptions writeOptions;
     writeOptions.compressionLevel = options.compressionLevel;
     Status written = compiler::writePack(options.outputPath, *contents, writeOptions, &stats);
     if (!written) {
-        err << "varc: error: " << written.error().detail << "\n";
+        session.output.error(written.error().detail);
         return kExitFailure;
     }
     sizes.packBytes = stats.packBytes;
@@ -256,7 +275,7 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
         Status depfile = writeFileAtomically(
             options.depfilePath, compiler::makeDepfile(options.outputPath, buildDependencies(shaders)));
         if (!depfile) {
-            err << "varc: error: " << depfile.error().detail << "\n";
+            session.output.error(depfile.error().detail);
             return kExitFailure;
         }
     }
@@ -287,18 +306,24 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
     Options options;
     if (auto exitCode = parseOptions(argc, argv, options, out, err)) return *exitCode;
-    Session session;
+    Session session(options, err);
+    // The shader commands end by writing the JSON or SARIF document, whatever path they took.
+    auto shaderCommand = [&session](int exitCode) {
+        session.output.finish();
+        return exitCode;
+    };
     switch (options.command) {
-        case Command::Variants: return runVariants(options, session, out, err);
-        case Command::Lock: return runLock(options, session, out, err);
-        case Command::Check: return runCheck(options, session, out, err);
-        case Command::Build: return runBuild(options, session, out, err);
+        case Command::Variants: return shaderCommand(runVariants(options, session, out));
+        case Command::Lock: return shaderCommand(runLock(options, session, out));
+        case Command::Check: return shaderCommand(runCheck(options, session, out));
+        case Command::Build: return shaderCommand(runBuild(options, session, out, err));
         case Command::Merge: return runMerge(options, out, err);
         case Command::Info: return runInfo(options, out, err);
         case Command::Extract: return runExtract(options, out, err);
         case Command::Lookup: return runLookup(options, out, err);
         case Command::Render: return runRender(options, out, err);
         case Command::Validate: return runValidate(options, out, err);
+        case Command::Explain:  // TODO
         case Command::Generate:  // parseOptions wrote it
         case Command::None: break;
     }

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <ostream>
 
 #include "BashCompletion.h"
@@ -62,11 +63,28 @@ void addMaxVariants(CLI::App& command, Options& options) {
         ->check(CLI::PositiveNumber);
 }
 
+void addDiagnosticsFormat(CLI::App& command, Options& options) {
+    static const std::map<std::string, DiagnosticsFormat> kFormats = {
+        {"clang", DiagnosticsFormat::Clang},
+        {"json", DiagnosticsFormat::Json},
+        {"github", DiagnosticsFormat::Github},
+        {"sarif", DiagnosticsFormat::Sarif}};
+    command
+        .add_option_function<std::string>(
+            "--diagnostics-format",
+            [&options](const std::string& name) { options.diagnosticsFormat = kFormats.at(name); },
+            "How errors and warnings are written to standard error: clang (default), json, "
+            "github (Actions annotations) or sarif (SARIF 2.1.0)")
+        ->type_name("FORMAT")
+        ->check(CLI::IsMember({"clang", "json", "github", "sarif"}));
+}
+
 void addVariants(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("variants", "List passes, keyword sets and variant counts");
     cmd->add_flag("--json", options.json, "Print JSON");
     cmd->add_flag("--list", options.list, "List every variant in enumeration order");
     addMaxVariants(*cmd, options);
+    addDiagnosticsFormat(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Variants; });
 }
@@ -77,6 +95,7 @@ void addLock(CLI::App& app, Options& options) {
         ->required()
         ->type_name("FILE");
     addMaxVariants(*cmd, options);
+    addDiagnosticsFormat(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Lock; });
 }
@@ -91,6 +110,7 @@ void addCheck(CLI::App& app, Options& options, std::string& growthText) {
                       ->type_name("N|N%");
     cmd->add_option("--budget", options.budget, "Fail when a shader has more than N variants")
         ->excludes(growth);
+    addDiagnosticsFormat(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Check; });
 }
@@ -139,6 +159,7 @@ void addBuild(CLI::App& app, Options& options) {
             return includes::SourcePathMap().addRule(rule) ? std::string()
                                                            : "expected OLD=NEW, got '" + rule + "'";
         });
+    addDiagnosticsFormat(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Build; });
 }

@@ -11,8 +11,13 @@
 namespace varc::cli {
 
 enum class Command {
-    None, Variants, Lock, Check, Build, Merge, Info, Extract, Lookup, Render, Validate, Generate
+    None, Variants, Lock, Check, Build, Merge, Info, Extract, Lookup, Render, Validate, Explain,
+    Generate
 };
+
+// How diagnostics are written to standard error (`--diagnostics-format`): clang style (the
+// default, for people), one JSON document, GitHub Actions workflow commands, or SARIF 2.1.0.
+enum class DiagnosticsFormat { Clang, Json, Github, Sarif };
 
 // A growth allowance for `varc check --max-growth`: N variants, or N percent of the lock.
 struct GrowthLimit {
@@ -27,6 +32,7 @@ struct Options {
     std::string projectRoot;               // --project-root ("" = found from each shader)
     std::string builtinIncludeDir;         // --builtin-include-dir or VARC_BUILTIN_INCLUDE_DIR
     bool json = false;                     // --json
+    DiagnosticsFormat diagnosticsFormat = DiagnosticsFormat::Clang;  // --diagnostics-format
     bool list = false;                     // --list (variants), --list-uncovered (validate)
     std::string lockPath;                  // lock: -o; check: --lock
     std::optional<GrowthLimit> maxGrowth;  // check --max-growth N|N%
