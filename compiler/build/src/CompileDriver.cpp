@@ -94,6 +94,7 @@ private:
             info.dependencies.push_back(mOptions.sourcePaths.map(dependency));
         return info;
     }
+    static std::array<uint32_t, kStageCount> sourcesOf(const PassJob& job, size_t v);
     void fillStats(const PassJob& job, CompiledPass& pass,
                    const std::vector<uint32_t>& finalIds) const;
 
@@ -391,6 +392,16 @@ void Builder::fillStats(const PassJob& job, CompiledPass& pass,
     }
 }
 
+// Per stage slot: the source id variant |v| of |job| compiled, or kNoProgram.
+std::array<uint32_t, kStageCount> Builder::sourcesOf(const PassJob& job, size_t v) {
+    std::array<uint32_t, kStageCount> ids;
+    ids.fill(kNoProgram);
+    for (size_t s = 0; s < job.stages.size(); ++s) {
+        ids[stageIndex(job.stages[s].first)] = job.sourceIds[v * job.stages.size() + s];
+    }
+    return ids;
+}
+
 // Interns SPIR-V bytes in enumeration order, so program ids never depend on thread timing.
 BuildOutput Builder::assemble() {
     BuildOutput output;
@@ -414,6 +425,9 @@ BuildOutput Builder::assemble() {
             finalIds[source] = it->second;
         }
     }
+    if (mOptions.keepPrunedSources) {
+        for (const SourceProgram& source : mSources) output.prunedSources.push_back(source.text);
+    }
     for (const PassJob& job : mJobs) {
         CompiledPass pass;
         pass.shaderIndex = job.shaderIndex;
@@ -426,6 +440,7 @@ BuildOutput Builder::assemble() {
                     finalIds[job.sourceIds[v * job.stages.size() + s]];
             }
             pass.variants.push_back(variant);
+            if (mOptions.keepPrunedSources) pass.variantSources.push_back(sourcesOf(job, v));
         }
         fillStats(job, pass, finalIds);
         pass.setStageEffects = computeSetStageEffects(*job.pass->space, pass.variants);

@@ -4,18 +4,22 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <mutex>
 #include <ostream>
+#include <sstream>
 
 #include "varc/build/CompileDriver.h"
 #include "varc/build/Depfile.h"
 #include "varc/build/PackAssembler.h"
 #include "varc/cli/BuildReport.h"
 #include "varc/cli/DiagnosticOutput.h"
+#include "varc/cli/ExplainReport.h"
+#include "varc/cli/ExplainText.h"
 #include "varc/cli/LockCheck.h"
 #include "varc/cli/LockFile.h"
 #include "varc/cli/Options.h"
@@ -23,6 +27,7 @@
 #include "varc/cli/RenderCommands.h"
 #include "varc/cli/ShaderInputs.h"
 #include "varc/cli/VariantReport.h"
+#include "varc/core/AsciiCase.h"
 #include "varc/core/AtomicFile.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/frontend/VariantLimit.h"
@@ -301,6 +306,93 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     return kExitOk;
 }
 
+// The pass of |shader| that --pass names: its index, else its LightMode; -1 when none does.
+int findLoadedPass(const compiler::LoadedShader& shader, const std::string& selector) {
+    for (size_t p = 0; p < shader.passes.size(); ++p) {
+        const compiler::LoadedPass& pass = shader.passes[p];
+        if (std::to_string(pass.index) == selector ||
+            (!pass.pass->lightMode().empty() &&
+             equalsIgnoreAsciiCase(pass.pass->lightMode(), selector))) {
+            return static_cast<int>(p);
+        }
+    }
+    return -1;
+}
+
+std::vector<std::string> splitKeywords(const std::string& text) {
+    std::vector<std::string> words;
+    std::istringstream in(text);
+    for (std::string word; in >> word;) words.push_back(word);
+    return words;
+}
+
+// The variant of |compiled| with exactly |keywords| (declared ones), or an error reported.
+std::optional<size_t> explainedVariant(const compiler::LoadedPass& pass,
+                                       const compiler::CompiledPass& compiled,
+                                       const std::string& keywords, Session& session) {
+    std::optional<size_t> variant = findVariant(pass, compiled, splitKeywords(keywords));
+    if (!variant) {
+        session.output.error("no variant of this pass has exactly the keywords \"" + keywords +
+                             "\" (see `varc variants --list`)");
+    }
+    return variant;
+}
+
+int runExplain(const Options& options, Session& session, std::ostream& out) {
+    std::vector<compiler::LoadedShader> shaders;
+    bool loaded = loadAll(options, session, shaders);
+    session.printNew(DiagnosticRule::Input);
+    if (!loaded) return kExitFailure;
+    auto shader = std::find_if(shaders.begin(), shaders.end(), [&](const auto& candidate) {
+        return candidate.ast.name == options.lookupShader;
+    });
+    if (shader == shaders.end()) {
+        session.output.error("no shader named \"" + options.lookupShader + "\" in the inputs");
+        return kExitFailure;
+    }
+    int passPosition = findLoadedPass(*shader, options.lookupPass);
+    if (passPosition < 0) {
+        session.output.error("shader \"" + options.lookupShader + "\" has no pass '" +
+                             options.lookupPass + "' with a program");
+        return kExitFailure;
+    }
+    std::vector<compiler::LoadedShader> one;
+    one.push_back(std::move(*shader));  // LoadedPass::pass stays valid: the AST moves whole
+    compiler::BuildOptions buildOptions;
+    buildOptions.jobs = options.jobs;
+    buildOptions.maxVariantsPerPass = options.maxVariants;
+    buildOptions.keepPrunedSources = true;
+    auto build = compiler::buildPrograms(one, session.sourceMap, buildOptions, session.diagnostics);
+    session.printNew(DiagnosticRule::Compile);
+    if (!build) return kExitFailure;
+    auto compiled = std::find_if(build->passes.begin(), build->passes.end(), [&](const auto& p) {
+        return p.passIndex == static_cast<size_t>(passPosition);
+    });
+    if (compiled == build->passes.end()) {
+        session.output.error("pass '" + options.lookupPass + "' is not built for Vulkan");
+        return kExitFailure;
+    }
+    const compiler::LoadedPass& pass = one.front().passes[static_cast<size_t>(passPosition)];
+    ExplainRequest request{&one.front(), &pass, &*compiled, &*build, std::nullopt, std::nullopt};
+    if (options.explainVariant) {
+        request.variant = explainedVariant(pass, *compiled, *options.explainVariant, session);
+        if (!request.variant) return kExitFailure;
+    }
+    if (options.explainDiff.size() == 2) {
+        auto a = explainedVariant(pass, *compiled, options.explainDiff[0], session);
+        auto b = explainedVariant(pass, *compiled, options.explainDiff[1], session);
+        if (!a || !b) return kExitFailure;
+        request.diff = std::make_pair(*a, *b);
+    }
+    nlohmann::ordered_json report = explainJson(request, session.sourceMap);
+    if (options.json) {
+        out << report.dump() << "\n";
+    } else {
+        printExplainText(report, out);
+    }
+    return kExitOk;
+}
+
 }  // namespace
 
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
@@ -323,7 +415,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         case Command::Lookup: return runLookup(options, out, err);
         case Command::Render: return runRender(options, out, err);
         case Command::Validate: return runValidate(options, out, err);
-        case Command::Explain:  // TODO
+        case Command::Explain: return shaderCommand(runExplain(options, session, out));
         case Command::Generate:  // parseOptions wrote it
         case Command::None: break;
     }

@@ -223,6 +223,29 @@ void addLookup(CLI::App& app, Options& options) {
     });
 }
 
+void addExplain(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand(
+        "explain", "Show which keywords change which stage's program in a pass, and why a "
+                   "variant exists");
+    cmd->add_option("--shader", options.lookupShader, "Shader name")->required()->type_name("NAME");
+    cmd->add_option("--pass", options.lookupPass, "Pass index or LightMode")
+        ->required()
+        ->type_name("N|LIGHTMODE");
+    cmd->add_option("--variant", options.explainVariant,
+                    "Explain this variant: its keywords, space-separated (\"\" = none)")
+        ->type_name("\"A B\"");
+    cmd->add_option("--diff", options.explainDiff,
+                    "Compare the pruned sources of two variants, stage by stage")
+        ->expected(2)
+        ->type_name("\"A B\" \"C D\"");
+    cmd->add_option("-j,--jobs", options.jobs, "Worker threads (default: all cores)");
+    cmd->add_flag("--json", options.json, "Print JSON");
+    addMaxVariants(*cmd, options);
+    addDiagnosticsFormat(*cmd, options);
+    addInputOptions(*cmd, options);
+    cmd->callback([&options] { options.command = Command::Explain; });
+}
+
 void addRender(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("render", "Render a scene with pack variants on Vulkan");
     cmd->add_option("packs", options.packPaths, "Pack files")->required()->type_name("PACK");
@@ -333,6 +356,7 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
     addInfo(app, options);
     addExtract(app, options);
     addLookup(app, options);
+    addExplain(app, options);
     addRender(app, options);
     addValidate(app, options);
     addGenerate(app, options);

@@ -61,6 +61,9 @@ struct Options {
     int lookupVertexLights = 0;            // --vertex-lights N
     bool lookupHdr = false;                // --hdr
     std::string lookupPolicy = "closest";  // --policy exact|closest|first|strict
+    // explain: inputs, --shader and --pass as for lookup
+    std::optional<std::string> explainVariant;  // --variant "A B"
+    std::vector<std::string> explainDiff;       // --diff "A B" "C D"
     // render / validate
     std::vector<std::string> packPaths;    // render: PACK...; validate: --pack P...
     std::string scenePath;                 // render --scene S.json
