@@ -10,7 +10,6 @@
 #include "varc/build/CompileDriver.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/SourceMap.h"
-#include "varc/variants/VariantKey.h"
 
 namespace varc::cli {
 
