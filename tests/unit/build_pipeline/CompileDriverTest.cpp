@@ -109,6 +109,35 @@ TEST_F(CompileDriverTest, KeywordsTouchingOneStageEachGiveTwoProgramsPerStage) {
     EXPECT_EQ(pass.setStageEffects[1], stageBit(Stage::Fragment));
 }
 
+TEST_F(CompileDriverTest, KeptPrunedSourcesFollowTheKeywordsEachStageSees) {
+    BuildOptions options;
+    options.keepPrunedSources = true;
+    auto output = build(kTwoKeywordShader, options);
+    ASSERT_TRUE(output) << firstMessage();
+    const CompiledPass& pass = output->passes[0];
+    ASSERT_EQ(pass.variantSources.size(), pass.variants.size());
+    EXPECT_EQ(output->prunedSources.size(), output->compiledSources);
+    // Enumeration order: {}, {TINTED}, {WOBBLE}, {TINTED WOBBLE} (the first set varies slowest).
+    auto source = [&](size_t variant, Stage stage) {
+        return pass.variantSources[variant][stageIndex(stage)];
+    };
+    EXPECT_EQ(source(0, Stage::Vertex), source(1, Stage::Vertex));      // TINTED: fragment only
+    EXPECT_NE(source(0, Stage::Fragment), source(1, Stage::Fragment));
+    EXPECT_NE(source(0, Stage::Vertex), source(2, Stage::Vertex));      // WOBBLE: vertex only
+    EXPECT_EQ(source(0, Stage::Fragment), source(2, Stage::Fragment));
+    EXPECT_EQ(source(0, Stage::Geometry), kNoProgram);
+    const std::string& wobbling = output->prunedSources[source(2, Stage::Vertex)];
+    EXPECT_NE(wobbling.find("sin"), std::string::npos);
+    EXPECT_EQ(output->prunedSources[source(0, Stage::Vertex)].find("sin"), std::string::npos);
+}
+
+TEST_F(CompileDriverTest, PrunedSourcesAreNotKeptUnlessAsked) {
+    auto output = build(kTwoKeywordShader);
+    ASSERT_TRUE(output) << firstMessage();
+    EXPECT_TRUE(output->prunedSources.empty());
+    EXPECT_TRUE(output->passes[0].variantSources.empty());
+}
+
 TEST_F(CompileDriverTest, WithoutPruningEveryVariantTextIsDistinctButModulesStillDedup) {
     BuildOptions options;
     options.pruneStages = false;
