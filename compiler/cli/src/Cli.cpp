@@ -362,7 +362,8 @@ int runExplain(const Options& options, Session& session, std::ostream& out) {
     buildOptions.jobs = options.jobs;
     buildOptions.maxVariantsPerPass = options.maxVariants;
     buildOptions.keepPrunedSources = true;
-    auto build = compiler::buildPrograms(one, session.sourceMap, buildOptions, session.diagnostics);
+    auto build =
+        compiler::buildPrograms(one, session.sourceMap, buildOptions, session.diagnostics);
     session.printNew(DiagnosticRule::Compile);
     if (!build) return kExitFailure;
     auto compiled = std::find_if(build->passes.begin(), build->passes.end(), [&](const auto& p) {

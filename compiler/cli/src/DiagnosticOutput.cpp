@@ -53,7 +53,9 @@ void DiagnosticOutput::print(const std::vector<Diagnostic>& diagnostics, Diagnos
             return;
         case DiagnosticsFormat::Json:
         case DiagnosticsFormat::Sarif:
-            for (const Diagnostic& diagnostic : diagnostics) mCollected.push_back({rule, diagnostic});
+            for (const Diagnostic& diagnostic : diagnostics) {
+                mCollected.push_back({rule, diagnostic});
+            }
             return;
     }
 }

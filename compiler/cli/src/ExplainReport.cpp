@@ -194,8 +194,12 @@ Json diffJson(const ExplainRequest& request, size_t a, size_t b) {
                                                compiled.variants[b].programs[stageIndex(stage)]},
                           {"lines", std::move(lines)}});
     }
-    return {{"a", {{"index", a}, {"keywords", keywordsOf(*request.pass, compiled.variants[a].key)}}},
-            {"b", {{"index", b}, {"keywords", keywordsOf(*request.pass, compiled.variants[b].key)}}},
+    auto side = [&](size_t v) {
+        const variants::VariantKey& key = compiled.variants[v].key;
+        return Json{{"index", v}, {"keywords", keywordsOf(*request.pass, key)}};
+    };
+    return {{"a", side(a)},
+            {"b", side(b)},
             {"stages", std::move(stages)}};
 }
 

@@ -14,7 +14,7 @@ namespace varc::cli {
 // current folder), line and col when known, the message and then each note on its own line
 // ("path:line:col: note: ..."). Escaped as GitHub documents: `%`, CR, LF in the message; also
 // `:` and `,` in the properties. Example:
-//   ::error file=shaders/a.shader,line=12,col=21::unknown shortcut 'x'%0Ashaders/a.shader:5:3: note: ...
+//   ::error file=shaders/a.shader,line=12,col=21::unknown shortcut 'x'%0Ashaders/a.shader:5:3: ...
 void printGithubDiagnostics(const std::vector<Diagnostic>& diagnostics,
                             const includes::SourceMap& sourceMap, std::ostream& err);
 

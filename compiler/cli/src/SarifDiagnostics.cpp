@@ -82,7 +82,9 @@ Json sarifResult(const RuledDiagnostic& ruled, const includes::SourceMap& source
 void printSarifDiagnostics(const std::vector<RuledDiagnostic>& diagnostics,
                            const includes::SourceMap& sourceMap, std::ostream& err) {
     Json results = Json::array();
-    for (const RuledDiagnostic& ruled : diagnostics) results.push_back(sarifResult(ruled, sourceMap));
+    for (const RuledDiagnostic& ruled : diagnostics) {
+        results.push_back(sarifResult(ruled, sourceMap));
+    }
     Json run = {{"tool", {{"driver", driver()}}}, {"results", std::move(results)}};
     Json log = {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
                 {"version", "2.1.0"},
