@@ -20,6 +20,7 @@
 #include <unordered_map>
 
 #include "DiagnosticGrouper.h"
+#include "IncludeChain.h"
 #include "driver/PassJob.h"
 #include "driver/ProgramCompiler.h"
 #include "varc/build/CompilerException.h"
@@ -54,6 +55,11 @@ struct SourceProgram {
     std::string text;
     size_t firstVariant = 0;
 };
+
+// The file the pass's program text comes from: where its include chains start.
+FileId rootFileOf(const PassJob& job) {
+    return job.pass->pass->program ? job.pass->pass->program->origin.file : kNoFile;
+}
 
 class Builder {
 public:
@@ -180,7 +186,8 @@ void Builder::applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
                            const ItemOutcome& outcome) {
     PassJob& job = mJobs[jobIndex];
     if (!outcome.diagnostics.empty()) {
-        mGrouper.add(outcome.diagnostics, job.pass->pass->location,
+        mGrouper.add(withIncludeChains(outcome.diagnostics, job.text, rootFileOf(job), mSourceMap),
+                     job.pass->pass->location,
                      contextOf(job, job.stages[stageIndex].first, variant),
                      {variantId(jobIndex, variant)});
     }
@@ -369,8 +376,10 @@ bool Builder::compileSources() {
         const SourceProgram& source = mSources[i];
         if (mCompiled[i].diagnostics.empty()) continue;
         const PassJob& job = mJobs[source.job];
-        mGrouper.add(mCompiled[i].diagnostics, job.pass->pass->location,
-                     contextOf(job, source.stage, source.firstVariant), variantsOf[i]);
+        mGrouper.add(withIncludeChains(mCompiled[i].diagnostics, job.text, rootFileOf(job),
+                                       mSourceMap),
+                     job.pass->pass->location, contextOf(job, source.stage, source.firstVariant),
+                     variantsOf[i]);
     }
     return !failed.load() && !mGrouper.hasErrors();
 }

@@ -219,6 +219,50 @@ TEST_F(CompileDriverTest, ReflectsOneDescriptorSetPerStageWithRealBindings) {
     EXPECT_EQ(bindings.size(), 2u) << "two textures share a binding";
 }
 
+// Builds kTwoKeywordShader including Outer.cginc (which includes Inner.cginc, where
+// undefinedValue is) and returns the first error.
+std::optional<Diagnostic> firstErrorThroughNestedIncludes(const std::string& outer,
+                                                          includes::InMemoryFileSystem& files,
+                                                          includes::SourceMap& sourceMap,
+                                                          DiagnosticList& diagnostics) {
+    files.add("shaders/test.shader", replaced(kTwoKeywordShader, "#include \"Common.cginc\"",
+                                              "#include \"Outer.cginc\""));
+    files.add("shaders/Outer.cginc", outer);
+    files.add("shaders/Inner.cginc", "float scale() { return undefinedValue; }\n");
+    auto loaded = loadShader("shaders/test.shader", files, sourceMap, {}, diagnostics);
+    if (!loaded) return std::nullopt;
+    std::vector<LoadedShader> shaders;
+    shaders.push_back(std::move(*loaded));
+    if (buildPrograms(shaders, sourceMap, {}, diagnostics)) return std::nullopt;
+    for (const Diagnostic& d : diagnostics.diagnostics()) {
+        if (d.severity == Severity::Error) return d;
+    }
+    return std::nullopt;
+}
+
+TEST_F(CompileDriverTest, ACompileErrorInANestedIncludeNotesTheIncludeChain) {
+    auto error = firstErrorThroughNestedIncludes("// outer\n#include \"Inner.cginc\"\n",
+                                                 mFileSystem, mSourceMap, mDiagnostics);
+    ASSERT_TRUE(error) << firstMessage();
+    EXPECT_EQ(mSourceMap.path(error->location.file), "shaders/Inner.cginc");
+    ASSERT_EQ(error->notes.size(), 3u);
+    EXPECT_EQ(mSourceMap.format(error->notes[0].location), "shaders/Outer.cginc:2");
+    EXPECT_EQ(error->notes[0].message, "in file included from here");
+    EXPECT_EQ(mSourceMap.format(error->notes[1].location), "shaders/test.shader:10");
+    EXPECT_EQ(error->notes[1].message, "in file included from here");
+    EXPECT_NE(error->notes[2].message.find("stage of pass 0"), std::string::npos);
+}
+
+TEST_F(CompileDriverTest, AnIncludeChainTheTextCannotShowStopsRatherThanGuess) {
+    // Outer.cginc has no line of its own before its #include, so no #line marks it: the chain
+    // must not claim test.shader included Inner.cginc.
+    auto error = firstErrorThroughNestedIncludes("#include \"Inner.cginc\"\n", mFileSystem,
+                                                 mSourceMap, mDiagnostics);
+    ASSERT_TRUE(error) << firstMessage();
+    ASSERT_EQ(error->notes.size(), 1u);
+    EXPECT_NE(error->notes[0].message.find("stage of pass 0"), std::string::npos);
+}
+
 TEST_F(CompileDriverTest, ErrorInSharedIncludeIsReportedOnceWithVariantCountAndMappedLine) {
     mFileSystem.add("shaders/Common.cginc", "float scale() { return undefinedValue; }\n");
     std::string shader =
