@@ -11,8 +11,12 @@ packages=(
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     groff-base file dpkg-dev
     libhiredis-dev redis-server redis-tools python3
+    python3-jsonschema
     clang-14 libclang-rt-14-dev
 )
+# The SARIF schema the diagnostics tests validate against comes from an npm package: Debian's
+# npm unless a Node.js that ships its own npm is installed already.
+if ! command -v npm >/dev/null 2>&1; then packages+=(npm); fi
 
 missing=()
 for package in "${packages[@]}"; do

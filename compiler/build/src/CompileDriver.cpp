@@ -20,6 +20,7 @@
 #include <unordered_map>
 
 #include "DiagnosticGrouper.h"
+#include "IncludeChain.h"
 #include "driver/PassJob.h"
 #include "driver/ProgramCompiler.h"
 #include "varc/build/CompilerException.h"
@@ -54,6 +55,11 @@ struct SourceProgram {
     std::string text;
     size_t firstVariant = 0;
 };
+
+// The file the pass's program text comes from: where its include chains start.
+FileId rootFileOf(const PassJob& job) {
+    return job.pass->pass->program ? job.pass->pass->program->origin.file : kNoFile;
+}
 
 class Builder {
 public:
@@ -104,6 +110,7 @@ private:
             info.dependencies.push_back(mOptions.sourcePaths.map(dependency));
         return info;
     }
+    static std::array<uint32_t, kStageCount> sourcesOf(const PassJob& job, size_t v);
     void fillStats(const PassJob& job, CompiledPass& pass,
                    const std::vector<uint32_t>& finalIds) const;
 
@@ -189,7 +196,8 @@ void Builder::applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
                            const ItemOutcome& outcome) {
     PassJob& job = mJobs[jobIndex];
     if (!outcome.diagnostics.empty()) {
-        mGrouper.add(outcome.diagnostics, job.pass->pass->location,
+        mGrouper.add(withIncludeChains(outcome.diagnostics, job.text, rootFileOf(job), mSourceMap),
+                     job.pass->pass->location,
                      contextOf(job, job.stages[stageIndex].first, variant),
                      {variantId(jobIndex, variant)});
     }
@@ -399,8 +407,10 @@ bool Builder::compileSources() {
         const SourceProgram& source = mSources[i];
         if (mCompiled[i].diagnostics.empty()) continue;
         const PassJob& job = mJobs[source.job];
-        mGrouper.add(mCompiled[i].diagnostics, job.pass->pass->location,
-                     contextOf(job, source.stage, source.firstVariant), variantsOf[i]);
+        mGrouper.add(withIncludeChains(mCompiled[i].diagnostics, job.text, rootFileOf(job),
+                                       mSourceMap),
+                     job.pass->pass->location, contextOf(job, source.stage, source.firstVariant),
+                     variantsOf[i]);
     }
     return !failed.load() && !mGrouper.hasErrors();
 }
@@ -420,6 +430,16 @@ void Builder::fillStats(const PassJob& job, CompiledPass& pass,
         pass.stats.distinctSources[slot] = sources.size();
         pass.stats.distinctModules[slot] = modules.size();
     }
+}
+
+// Per stage slot: the source id variant |v| of |job| compiled, or kNoProgram.
+std::array<uint32_t, kStageCount> Builder::sourcesOf(const PassJob& job, size_t v) {
+    std::array<uint32_t, kStageCount> ids;
+    ids.fill(kNoProgram);
+    for (size_t s = 0; s < job.stages.size(); ++s) {
+        ids[stageIndex(job.stages[s].first)] = job.sourceIds[v * job.stages.size() + s];
+    }
+    return ids;
 }
 
 // Interns SPIR-V bytes in enumeration order, so program ids never depend on thread timing.
@@ -445,6 +465,9 @@ BuildOutput Builder::assemble() {
             finalIds[source] = it->second;
         }
     }
+    if (mOptions.keepPrunedSources) {
+        for (const SourceProgram& source : mSources) output.prunedSources.push_back(source.text);
+    }
     for (const PassJob& job : mJobs) {
         CompiledPass pass;
         pass.shaderIndex = job.shaderIndex;
@@ -457,6 +480,7 @@ BuildOutput Builder::assemble() {
                     finalIds[job.sourceIds[v * job.stages.size() + s]];
             }
             pass.variants.push_back(variant);
+            if (mOptions.keepPrunedSources) pass.variantSources.push_back(sourcesOf(job, v));
         }
         fillStats(job, pass, finalIds);
         pass.setStageEffects = computeSetStageEffects(*job.pass->space, pass.variants);

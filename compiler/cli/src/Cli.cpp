@@ -4,19 +4,23 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <mutex>
 #include <ostream>
+#include <sstream>
 
 #include "varc/build/CompileDriver.h"
 #include "varc/build/Depfile.h"
 #include "varc/build/PackAssembler.h"
 #include "varc/cli/BuildReport.h"
 #include "varc/cli/CacheCommands.h"
-#include "varc/cli/DiagnosticPrinter.h"
+#include "varc/cli/DiagnosticOutput.h"
+#include "varc/cli/ExplainReport.h"
+#include "varc/cli/ExplainText.h"
 #include "varc/cli/LockCheck.h"
 #include "varc/cli/LockFile.h"
 #include "varc/cli/Options.h"
@@ -24,6 +28,7 @@
 #include "varc/cli/RenderCommands.h"
 #include "varc/cli/ShaderInputs.h"
 #include "varc/cli/VariantReport.h"
+#include "varc/core/AsciiCase.h"
 #include "varc/core/AtomicFile.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/frontend/VariantLimit.h"
@@ -34,11 +39,26 @@ namespace varc::cli {
 
 namespace {
 
-// State shared by the commands: the files read and the diagnostics reported so far.
+// State shared by the commands: the files read, the diagnostics reported so far and where they
+// are written.
 struct Session {
+    explicit Session(const Options& options, std::ostream& err)
+        : output(options.diagnosticsFormat, sourceMap, err) {}
+
     includes::DiskFileSystem fileSystem;
     includes::SourceMap sourceMap;
     DiagnosticList diagnostics;
+    DiagnosticOutput output;
+    size_t printed = 0;  // diagnostics already written
+
+    // Writes the diagnostics reported since the last call, as found by |rule|.
+    void printNew(DiagnosticRule rule) {
+        const std::vector<Diagnostic>& all = diagnostics.diagnostics();
+        output.print(std::vector<Diagnostic>(all.begin() + static_cast<std::ptrdiff_t>(printed),
+                                             all.end()),
+                     rule);
+        printed = all.size();
+    }
 };
 
 includes::IncludeOptions includeOptions(const Options& options) {
@@ -92,11 +112,11 @@ bool checkVariantLimits(const std::vector<compiler::LoadedShader>& shaders, cons
     return ok;
 }
 
-int runVariants(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
+int runVariants(const Options& options, Session& session, std::ostream& out) {
     std::vector<compiler::LoadedShader> shaders;
     bool ok = loadAll(options, session, shaders);
     if (ok && options.list) ok = checkVariantLimits(shaders, options, session);
-    printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+    session.printNew(DiagnosticRule::Input);
     if (!ok) return kExitFailure;
     if (options.json) {
         out << variantsJson(shaders, options.list).dump() << "\n";
@@ -106,52 +126,54 @@ int runVariants(const Options& options, Session& session, std::ostream& out, std
     return kExitOk;
 }
 
-int runLock(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
+int runLock(const Options& options, Session& session, std::ostream& out) {
     std::vector<compiler::LoadedShader> shaders;
     bool ok = loadAll(options, session, shaders);
     // A lock records what builds: a pass that cannot be built does not belong in one.
     if (ok) ok = checkVariantLimits(shaders, options, session);
-    printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+    session.printNew(DiagnosticRule::Input);
     if (!ok) return kExitFailure;
     std::string lockDir = std::filesystem::path(options.lockPath).parent_path().string();
     LockFile lock = makeLock(shaders, lockDir);
     Status written = writeFileAtomically(options.lockPath, serializeLock(lock));
     if (!written) {
-        err << "varc: error: " << written.error().detail << "\n";
+        session.output.error(written.error().detail);
         return kExitFailure;
     }
     out << "wrote " << options.lockPath << ": " << lock.shaders.size() << " shaders\n";
     return kExitOk;
 }
 
-std::optional<LockFile> readLock(const std::string& path, Session& session, std::ostream& err) {
+std::optional<LockFile> readLock(const std::string& path, Session& session) {
     auto text = session.fileSystem.read(path);
     if (!text) {
-        err << "varc: error: cannot read lock file '" << path << "'\n";
+        session.output.error("cannot read lock file '" + path + "'");
         return std::nullopt;
     }
     Result<LockFile> lock = parseLock(*text, path);
     if (!lock) {
-        err << "varc: error: " << lock.error().detail << "\n";
+        session.output.error(lock.error().detail);
         return std::nullopt;
     }
     return std::move(lock).value();
 }
 
-int runCheck(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
-    std::optional<LockFile> lock = readLock(options.lockPath, session, err);
+int runCheck(const Options& options, Session& session, std::ostream& out) {
+    std::optional<LockFile> lock = readLock(options.lockPath, session);
     if (!lock) return kExitUsage;
     std::vector<compiler::LoadedShader> shaders;
     if (!loadAll(options, session, shaders)) {
-        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+        session.printNew(DiagnosticRule::Input);
         return kExitUsage;
     }
+    session.printNew(DiagnosticRule::Input);  // warnings
     DiagnosticList findings;
     bool passed = checkAgainstLock(*lock, shaders, {options.maxGrowth, options.budget}, findings);
-    printDiagnostics(findings.diagnostics(), session.sourceMap, err);
+    session.output.print(findings.diagnostics(), DiagnosticRule::Lock);
     if (!passed) {
-        err << "varc check: variant counts differ from " << options.lockPath
-            << "; if the change is intended, run `varc lock -o " << options.lockPath << "`\n";
+        session.output.summary("varc check: variant counts differ from " + options.lockPath +
+                               "; if the change is intended, run `varc lock -o " +
+                               options.lockPath + "`");
         return kExitFailure;
     }
     out << "varc check: " << shaders.size() << " shaders match " << options.lockPath << "\n";
@@ -205,12 +227,13 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     auto start = std::chrono::steady_clock::now();
     std::vector<compiler::LoadedShader> shaders;
     if (!loadAll(options, session, shaders)) {
-        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+        session.printNew(DiagnosticRule::Input);
         return kExitFailure;
     }
+    session.printNew(DiagnosticRule::Input);  // warnings
     Result<std::shared_ptr<cache::CacheChain>> cacheLevels = openCacheLevels(options);
     if (!cacheLevels) {
-        err << "varc: error: " << cacheLevels.error().detail << "\n";
+        session.output.error(cacheLevels.error().detail);
         return kExitUsage;
     }
     compiler::BuildOptions buildOptions;
@@ -220,13 +243,13 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     buildOptions.keepGoing = options.keepGoing;
     buildOptions.maxVariantsPerPass = options.maxVariants;
     buildOptions.debugNames = options.debugNames;
-    buildOptions.progress = progressPrinter(err);
+    if (!session.output.isDocument()) buildOptions.progress = progressPrinter(err);
     if (!options.shard.empty()) buildOptions.shard = *compiler::parseShardSpec(options.shard);
     buildOptions.sourcePaths = sourcePathMap(options);
     auto build = compiler::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);
-    printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
+    session.printNew(DiagnosticRule::Compile);
     if (!build) {
-        err << "varc build: failed; " << options.outputPath << " was not written\n";
+        session.output.summary("varc build: failed; " + options.outputPath + " was not written");
         return kExitFailure;
     }
     PackSizes sizes = measureSpirv(*build);
@@ -245,16 +268,17 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
                                            std::to_string(options.compressionLevel)});
     }
     if (!contents) {
-        printDiagnostics(session.diagnostics.diagnostics(), session.sourceMap, err);
-        err << "varc build: failed; " << options.outputPath << " was not written\n";
+        session.printNew(DiagnosticRule::Compile);
+        session.output.summary("varc build: failed; " + options.outputPath + " was not written");
         return kExitFailure;
     }
+    session.printNew(DiagnosticRule::Compile);  // warnings
     compiler::PackWriteStats stats;
     compiler::PackWriteOptions writeOptions;
     writeOptions.compressionLevel = options.compressionLevel;
     Status written = compiler::writePack(options.outputPath, *contents, writeOptions, &stats);
     if (!written) {
-        err << "varc: error: " << written.error().detail << "\n";
+        session.output.error(written.error().detail);
         return kExitFailure;
     }
     sizes.packBytes = stats.packBytes;
@@ -262,7 +286,7 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
         Status depfile = writeFileAtomically(
             options.depfilePath, compiler::makeDepfile(options.outputPath, buildDependencies(shaders)));
         if (!depfile) {
-            err << "varc: error: " << depfile.error().detail << "\n";
+            session.output.error(depfile.error().detail);
             return kExitFailure;
         }
     }
@@ -288,17 +312,110 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
     return kExitOk;
 }
 
+// The pass of |shader| that --pass names: its index, else its LightMode; -1 when none does.
+int findLoadedPass(const compiler::LoadedShader& shader, const std::string& selector) {
+    for (size_t p = 0; p < shader.passes.size(); ++p) {
+        const compiler::LoadedPass& pass = shader.passes[p];
+        if (std::to_string(pass.index) == selector ||
+            (!pass.pass->lightMode().empty() &&
+             equalsIgnoreAsciiCase(pass.pass->lightMode(), selector))) {
+            return static_cast<int>(p);
+        }
+    }
+    return -1;
+}
+
+std::vector<std::string> splitKeywords(const std::string& text) {
+    std::vector<std::string> words;
+    std::istringstream in(text);
+    for (std::string word; in >> word;) words.push_back(word);
+    return words;
+}
+
+// The variant of |compiled| with exactly |keywords| (declared ones), or an error reported.
+std::optional<size_t> explainedVariant(const compiler::LoadedPass& pass,
+                                       const compiler::CompiledPass& compiled,
+                                       const std::string& keywords, Session& session) {
+    std::optional<size_t> variant = findVariant(pass, compiled, splitKeywords(keywords));
+    if (!variant) {
+        session.output.error("no variant of this pass has exactly the keywords \"" + keywords +
+                             "\" (see `varc variants --list`)");
+    }
+    return variant;
+}
+
+int runExplain(const Options& options, Session& session, std::ostream& out) {
+    std::vector<compiler::LoadedShader> shaders;
+    bool loaded = loadAll(options, session, shaders);
+    session.printNew(DiagnosticRule::Input);
+    if (!loaded) return kExitFailure;
+    auto shader = std::find_if(shaders.begin(), shaders.end(), [&](const auto& candidate) {
+        return candidate.ast.name == options.lookupShader;
+    });
+    if (shader == shaders.end()) {
+        session.output.error("no shader named \"" + options.lookupShader + "\" in the inputs");
+        return kExitFailure;
+    }
+    int passPosition = findLoadedPass(*shader, options.lookupPass);
+    if (passPosition < 0) {
+        session.output.error("shader \"" + options.lookupShader + "\" has no pass '" +
+                             options.lookupPass + "' with a program");
+        return kExitFailure;
+    }
+    std::vector<compiler::LoadedShader> one;
+    one.push_back(std::move(*shader));  // LoadedPass::pass stays valid: the AST moves whole
+    compiler::BuildOptions buildOptions;
+    buildOptions.jobs = options.jobs;
+    buildOptions.maxVariantsPerPass = options.maxVariants;
+    buildOptions.keepPrunedSources = true;
+    auto build =
+        compiler::buildPrograms(one, session.sourceMap, buildOptions, session.diagnostics);
+    session.printNew(DiagnosticRule::Compile);
+    if (!build) return kExitFailure;
+    auto compiled = std::find_if(build->passes.begin(), build->passes.end(), [&](const auto& p) {
+        return p.passIndex == static_cast<size_t>(passPosition);
+    });
+    if (compiled == build->passes.end()) {
+        session.output.error("pass '" + options.lookupPass + "' is not built for Vulkan");
+        return kExitFailure;
+    }
+    const compiler::LoadedPass& pass = one.front().passes[static_cast<size_t>(passPosition)];
+    ExplainRequest request{&one.front(), &pass, &*compiled, &*build, std::nullopt, std::nullopt};
+    if (options.explainVariant) {
+        request.variant = explainedVariant(pass, *compiled, *options.explainVariant, session);
+        if (!request.variant) return kExitFailure;
+    }
+    if (options.explainDiff.size() == 2) {
+        auto a = explainedVariant(pass, *compiled, options.explainDiff[0], session);
+        auto b = explainedVariant(pass, *compiled, options.explainDiff[1], session);
+        if (!a || !b) return kExitFailure;
+        request.diff = std::make_pair(*a, *b);
+    }
+    nlohmann::ordered_json report = explainJson(request, session.sourceMap);
+    if (options.json) {
+        out << report.dump() << "\n";
+    } else {
+        printExplainText(report, out);
+    }
+    return kExitOk;
+}
+
 }  // namespace
 
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
     Options options;
     if (auto exitCode = parseOptions(argc, argv, options, out, err)) return *exitCode;
-    Session session;
+    Session session(options, err);
+    // The shader commands end by writing the JSON or SARIF document, whatever path they took.
+    auto shaderCommand = [&session](int exitCode) {
+        session.output.finish();
+        return exitCode;
+    };
     switch (options.command) {
-        case Command::Variants: return runVariants(options, session, out, err);
-        case Command::Lock: return runLock(options, session, out, err);
-        case Command::Check: return runCheck(options, session, out, err);
-        case Command::Build: return runBuild(options, session, out, err);
+        case Command::Variants: return shaderCommand(runVariants(options, session, out));
+        case Command::Lock: return shaderCommand(runLock(options, session, out));
+        case Command::Check: return shaderCommand(runCheck(options, session, out));
+        case Command::Build: return shaderCommand(runBuild(options, session, out, err));
         case Command::Merge: return runMerge(options, out, err);
         case Command::Info: return runInfo(options, out, err);
         case Command::Extract: return runExtract(options, out, err);
@@ -307,6 +424,7 @@ int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& e
         case Command::Validate: return runValidate(options, out, err);
         case Command::CacheStats: return runCacheStats(options, out, err);
         case Command::CacheClear: return runCacheClear(options, out, err);
+        case Command::Explain: return shaderCommand(runExplain(options, session, out));
         case Command::Generate:  // parseOptions wrote it
         case Command::None: break;
     }

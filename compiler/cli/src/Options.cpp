@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <ostream>
 
 #include "BashCompletion.h"
@@ -64,11 +65,28 @@ void addMaxVariants(CLI::App& command, Options& options) {
         ->check(CLI::PositiveNumber);
 }
 
+void addDiagnosticsFormat(CLI::App& command, Options& options) {
+    static const std::map<std::string, DiagnosticsFormat> kFormats = {
+        {"clang", DiagnosticsFormat::Clang},
+        {"json", DiagnosticsFormat::Json},
+        {"github", DiagnosticsFormat::Github},
+        {"sarif", DiagnosticsFormat::Sarif}};
+    command
+        .add_option_function<std::string>(
+            "--diagnostics-format",
+            [&options](const std::string& name) { options.diagnosticsFormat = kFormats.at(name); },
+            "How errors and warnings are written to standard error: clang (default), json, "
+            "github (Actions annotations) or sarif (SARIF 2.1.0)")
+        ->type_name("FORMAT")
+        ->check(CLI::IsMember({"clang", "json", "github", "sarif"}));
+}
+
 void addVariants(CLI::App& app, Options& options) {
     CLI::App* cmd = app.add_subcommand("variants", "List passes, keyword sets and variant counts");
     cmd->add_flag("--json", options.json, "Print JSON");
     cmd->add_flag("--list", options.list, "List every variant in enumeration order");
     addMaxVariants(*cmd, options);
+    addDiagnosticsFormat(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Variants; });
 }
@@ -79,6 +97,7 @@ void addLock(CLI::App& app, Options& options) {
         ->required()
         ->type_name("FILE");
     addMaxVariants(*cmd, options);
+    addDiagnosticsFormat(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Lock; });
 }
@@ -93,6 +112,7 @@ void addCheck(CLI::App& app, Options& options, std::string& growthText) {
                       ->type_name("N|N%");
     cmd->add_option("--budget", options.budget, "Fail when a shader has more than N variants")
         ->excludes(growth);
+    addDiagnosticsFormat(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Check; });
 }
@@ -165,6 +185,7 @@ void addBuild(CLI::App& app, Options& options) {
                                                            : "expected OLD=NEW, got '" + rule + "'";
         });
     addCacheUrls(*cmd, options);
+    addDiagnosticsFormat(*cmd, options);
     addInputOptions(*cmd, options);
     cmd->callback([&options] { options.command = Command::Build; });
 }
@@ -226,6 +247,29 @@ void addLookup(CLI::App& app, Options& options) {
             throw CLI::RequiredError("lookup needs --keywords or --light");
         }
     });
+}
+
+void addExplain(CLI::App& app, Options& options) {
+    CLI::App* cmd = app.add_subcommand(
+        "explain", "Show which keywords change which stage's program in a pass, and why a "
+                   "variant exists");
+    cmd->add_option("--shader", options.lookupShader, "Shader name")->required()->type_name("NAME");
+    cmd->add_option("--pass", options.lookupPass, "Pass index or LightMode")
+        ->required()
+        ->type_name("N|LIGHTMODE");
+    cmd->add_option("--variant", options.explainVariant,
+                    "Explain this variant: its keywords, space-separated (\"\" = none)")
+        ->type_name("\"A B\"");
+    cmd->add_option("--diff", options.explainDiff,
+                    "Compare the pruned sources of two variants, stage by stage")
+        ->expected(2)
+        ->type_name("\"A B\" \"C D\"");
+    cmd->add_option("-j,--jobs", options.jobs, "Worker threads (default: all cores)");
+    cmd->add_flag("--json", options.json, "Print JSON");
+    addMaxVariants(*cmd, options);
+    addDiagnosticsFormat(*cmd, options);
+    addInputOptions(*cmd, options);
+    cmd->callback([&options] { options.command = Command::Explain; });
 }
 
 void addRender(CLI::App& app, Options& options) {
@@ -338,6 +382,7 @@ std::optional<int> parseOptions(int argc, const char* const* argv, Options& opti
     addInfo(app, options);
     addExtract(app, options);
     addLookup(app, options);
+    addExplain(app, options);
     addRender(app, options);
     addValidate(app, options);
     addGenerate(app, options);

@@ -109,6 +109,35 @@ TEST_F(CompileDriverTest, KeywordsTouchingOneStageEachGiveTwoProgramsPerStage) {
     EXPECT_EQ(pass.setStageEffects[1], stageBit(Stage::Fragment));
 }
 
+TEST_F(CompileDriverTest, KeptPrunedSourcesFollowTheKeywordsEachStageSees) {
+    BuildOptions options;
+    options.keepPrunedSources = true;
+    auto output = build(kTwoKeywordShader, options);
+    ASSERT_TRUE(output) << firstMessage();
+    const CompiledPass& pass = output->passes[0];
+    ASSERT_EQ(pass.variantSources.size(), pass.variants.size());
+    EXPECT_EQ(output->prunedSources.size(), output->compiledSources);
+    // Enumeration order: {}, {TINTED}, {WOBBLE}, {TINTED WOBBLE} (the first set varies slowest).
+    auto source = [&](size_t variant, Stage stage) {
+        return pass.variantSources[variant][stageIndex(stage)];
+    };
+    EXPECT_EQ(source(0, Stage::Vertex), source(1, Stage::Vertex));      // TINTED: fragment only
+    EXPECT_NE(source(0, Stage::Fragment), source(1, Stage::Fragment));
+    EXPECT_NE(source(0, Stage::Vertex), source(2, Stage::Vertex));      // WOBBLE: vertex only
+    EXPECT_EQ(source(0, Stage::Fragment), source(2, Stage::Fragment));
+    EXPECT_EQ(source(0, Stage::Geometry), kNoProgram);
+    const std::string& wobbling = output->prunedSources[source(2, Stage::Vertex)];
+    EXPECT_NE(wobbling.find("sin"), std::string::npos);
+    EXPECT_EQ(output->prunedSources[source(0, Stage::Vertex)].find("sin"), std::string::npos);
+}
+
+TEST_F(CompileDriverTest, PrunedSourcesAreNotKeptUnlessAsked) {
+    auto output = build(kTwoKeywordShader);
+    ASSERT_TRUE(output) << firstMessage();
+    EXPECT_TRUE(output->prunedSources.empty());
+    EXPECT_TRUE(output->passes[0].variantSources.empty());
+}
+
 TEST_F(CompileDriverTest, WithoutPruningEveryVariantTextIsDistinctButModulesStillDedup) {
     BuildOptions options;
     options.pruneStages = false;
@@ -188,6 +217,50 @@ TEST_F(CompileDriverTest, ReflectsOneDescriptorSetPerStageWithRealBindings) {
         bindings.insert(resource.binding);
     }
     EXPECT_EQ(bindings.size(), 2u) << "two textures share a binding";
+}
+
+// Builds kTwoKeywordShader including Outer.cginc (which includes Inner.cginc, where
+// undefinedValue is) and returns the first error.
+std::optional<Diagnostic> firstErrorThroughNestedIncludes(const std::string& outer,
+                                                          includes::InMemoryFileSystem& files,
+                                                          includes::SourceMap& sourceMap,
+                                                          DiagnosticList& diagnostics) {
+    files.add("shaders/test.shader", replaced(kTwoKeywordShader, "#include \"Common.cginc\"",
+                                              "#include \"Outer.cginc\""));
+    files.add("shaders/Outer.cginc", outer);
+    files.add("shaders/Inner.cginc", "float scale() { return undefinedValue; }\n");
+    auto loaded = loadShader("shaders/test.shader", files, sourceMap, {}, diagnostics);
+    if (!loaded) return std::nullopt;
+    std::vector<LoadedShader> shaders;
+    shaders.push_back(std::move(*loaded));
+    if (buildPrograms(shaders, sourceMap, {}, diagnostics)) return std::nullopt;
+    for (const Diagnostic& d : diagnostics.diagnostics()) {
+        if (d.severity == Severity::Error) return d;
+    }
+    return std::nullopt;
+}
+
+TEST_F(CompileDriverTest, ACompileErrorInANestedIncludeNotesTheIncludeChain) {
+    auto error = firstErrorThroughNestedIncludes("// outer\n#include \"Inner.cginc\"\n",
+                                                 mFileSystem, mSourceMap, mDiagnostics);
+    ASSERT_TRUE(error) << firstMessage();
+    EXPECT_EQ(mSourceMap.path(error->location.file), "shaders/Inner.cginc");
+    ASSERT_EQ(error->notes.size(), 3u);
+    EXPECT_EQ(mSourceMap.format(error->notes[0].location), "shaders/Outer.cginc:2");
+    EXPECT_EQ(error->notes[0].message, "in file included from here");
+    EXPECT_EQ(mSourceMap.format(error->notes[1].location), "shaders/test.shader:10");
+    EXPECT_EQ(error->notes[1].message, "in file included from here");
+    EXPECT_NE(error->notes[2].message.find("stage of pass 0"), std::string::npos);
+}
+
+TEST_F(CompileDriverTest, AnIncludeChainTheTextCannotShowStopsRatherThanGuess) {
+    // Outer.cginc has no line of its own before its #include, so no #line marks it: the chain
+    // must not claim test.shader included Inner.cginc.
+    auto error = firstErrorThroughNestedIncludes("#include \"Inner.cginc\"\n", mFileSystem,
+                                                 mSourceMap, mDiagnostics);
+    ASSERT_TRUE(error) << firstMessage();
+    ASSERT_EQ(error->notes.size(), 1u);
+    EXPECT_NE(error->notes[0].message.find("stage of pass 0"), std::string::npos);
 }
 
 TEST_F(CompileDriverTest, ErrorInSharedIncludeIsReportedOnceWithVariantCountAndMappedLine) {

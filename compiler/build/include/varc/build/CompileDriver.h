@@ -48,6 +48,9 @@ struct BuildOptions {
     std::shared_ptr<cache::CacheChain> cache;
     // A pass with more variants is an error before anything is enumerated (VariantLimit.h).
     uint64_t maxVariantsPerPass = kDefaultMaxVariantsPerPass;
+    // Keep the distinct pruned stage sources (BuildOutput::prunedSources) and which one each
+    // variant's stage compiled (CompiledPass::variantSources), for `varc explain`.
+    bool keepPrunedSources = false;
     // Called from worker threads after each distinct program compiles: (done, total). Must be
     // thread-safe; may be empty.
     std::function<void(size_t, size_t)> progress;
@@ -70,6 +73,9 @@ struct CompiledPass {
     // Per declared keyword set (PassKeywords::sets order): the stages whose program changes
     // with that set's choice. A set with mask 0 does not affect the pass at all.
     std::vector<StageMask> setStageEffects;
+    // With BuildOptions::keepPrunedSources, per variant (same order) and stage slot: its index
+    // into BuildOutput::prunedSources, or kNoProgram for a stage the pass does not have.
+    std::vector<std::array<uint32_t, kStageCount>> variantSources;
 };
 
 struct BuildOutput {
@@ -78,6 +84,9 @@ struct BuildOutput {
     // stage compiles to it: deduplicated by bytes, in first-use order, with the source of the
     // pass that first used it.
     std::vector<pack::PackProgram> programs;
+    // With BuildOptions::keepPrunedSources: each distinct pruned stage source (what glslang
+    // compiled, after preprocessing and pruning to the entry point), in first-use order.
+    std::vector<std::string> prunedSources;
     size_t compiledSources = 0;             // glslang compilations
     size_t preprocessedPrograms = 0;        // glslang preprocessing runs (before pruning)
     size_t cachedSources = 0;               // of compiledSources, taken from the program cache

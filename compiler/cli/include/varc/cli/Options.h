@@ -11,9 +11,13 @@
 namespace varc::cli {
 
 enum class Command {
-    None, Variants, Lock, Check, Build, Merge, Info, Extract, Lookup, Render, Validate, Generate,
-    CacheStats, CacheClear
+    None, Variants, Lock, Check, Build, Merge, Info, Extract, Lookup, Render, Validate, Explain,
+    Generate, CacheStats, CacheClear
 };
+
+// How diagnostics are written to standard error (`--diagnostics-format`): clang style (the
+// default, for people), one JSON document, GitHub Actions workflow commands, or SARIF 2.1.0.
+enum class DiagnosticsFormat { Clang, Json, Github, Sarif };
 
 // A growth allowance for `varc check --max-growth`: N variants, or N percent of the lock.
 struct GrowthLimit {
@@ -28,6 +32,7 @@ struct Options {
     std::string projectRoot;               // --project-root ("" = found from each shader)
     std::string builtinIncludeDir;         // --builtin-include-dir or VARC_BUILTIN_INCLUDE_DIR
     bool json = false;                     // --json
+    DiagnosticsFormat diagnosticsFormat = DiagnosticsFormat::Clang;  // --diagnostics-format
     bool list = false;                     // --list (variants), --list-uncovered (validate)
     std::string lockPath;                  // lock: -o; check: --lock
     std::optional<GrowthLimit> maxGrowth;  // check --max-growth N|N%
@@ -57,6 +62,9 @@ struct Options {
     int lookupVertexLights = 0;            // --vertex-lights N
     bool lookupHdr = false;                // --hdr
     std::string lookupPolicy = "closest";  // --policy exact|closest|first|strict
+    // explain: inputs, --shader and --pass as for lookup
+    std::optional<std::string> explainVariant;  // --variant "A B"
+    std::vector<std::string> explainDiff;       // --diff "A B" "C D"
     // render / validate
     std::vector<std::string> packPaths;    // render: PACK...; validate: --pack P...
     std::string scenePath;                 // render --scene S.json
