@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # `varc validate --report` end to end: renders a few scenes into the HTML report, opens it in
-# headless Chromium and fails unless every <img> decoded, the page logged nothing to the console
-# and a screenshot was taken (kept in OUT_DIR as report.png). (A report that cannot be written:
-# tests/cli/cases/validate-unwritable-report-fails.)
+# headless Chromium and fails unless every <img> decoded, every in-page link has its anchor, the
+# page logged nothing to the console and a screenshot was taken (kept in OUT_DIR as report.png).
+# (A report that cannot be written: tests/cli/cases/validate-unwritable-report-fails.)
 #   check_report.sh VARC PACK OUT_DIR SCENE.json...    the whole test
 #   check_report.sh --check-page PAGE.html SCREENSHOT.png IMAGES   only the browser checks
 set -euo pipefail
@@ -25,8 +25,8 @@ run_chromium() {
     return $status
 }
 
-# check_page PAGE SCREENSHOT IMAGES: every image of PAGE decoded (IMAGES of them), no console
-# message, and SCREENSHOT written as a PNG.
+# check_page PAGE SCREENSHOT IMAGES: every image of PAGE decoded (IMAGES of them), every in-page
+# link has its anchor, no console message, and SCREENSHOT written as a PNG.
 check_page() {
     local page=$1 screenshot=$2 images=$3 url
     command -v "$chromium_bin" >/dev/null ||
@@ -42,6 +42,7 @@ check_page() {
         fail "the page's image check did not run (no data-images-checked on <body>)"
     [[ $body == *"data-images=\"$images\""* ]] || fail "expected $images images: $body"
     [[ $body == *'data-broken-images=""'* ]] || fail "images that did not load: $body"
+    [[ $body == *'data-broken-links=""'* ]] || fail "links to missing anchors: $body"
     if grep -E 'CONSOLE|Uncaught' "$log"; then fail "the page wrote to the console (above)"; fi
     rm -f "$screenshot"
     run_chromium --hide-scrollbars --window-size=1280,2000 --screenshot="$screenshot" "$url" \

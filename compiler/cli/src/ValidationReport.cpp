@@ -36,16 +36,23 @@ code, .message { font-family: monospace; font-size: 12px; }
 )";
 
 // Marks the body once every image has loaded or failed, for the headless-browser test: the
-// alt text of each image that did not decode (naturalWidth 0) and the number of images.
+// number of images, the alt text of each that did not decode (naturalWidth 0) and each in-page
+// link whose anchor is missing.
 constexpr const char* kCheckScript = R"(
 window.addEventListener('load', function () {
-  var broken = [];
+  var broken = [], links = [];
   for (var i = 0; i < document.images.length; ++i) {
     var image = document.images[i];
     if (!image.complete || image.naturalWidth === 0) broken.push(image.alt || String(i));
   }
+  var anchors = document.querySelectorAll('a[href^="#"]');
+  for (var j = 0; j < anchors.length; ++j) {
+    var target = anchors[j].getAttribute('href').substring(1);
+    if (!document.getElementById(target)) links.push(target);
+  }
   document.body.setAttribute('data-images', String(document.images.length));
   document.body.setAttribute('data-broken-images', broken.join('|'));
+  document.body.setAttribute('data-broken-links', links.join('|'));
   document.body.setAttribute('data-images-checked', 'yes');
 });
 )";

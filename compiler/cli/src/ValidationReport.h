@@ -47,8 +47,9 @@ public:
     // The page. |compared| holds VariantView::describe() of every variant drawn in a scene that
     // matched (as printValidationCoverage takes it). Each scene's variants link to an anchor in
     // their pack's section, which lists the variants drawn with their keywords and the program
-    // index of each stage; the body gets data-broken-images / data-images-checked attributes once
-    // the page has loaded (see tests/vulkan/check_report.sh).
+    // index of each stage. Once the page has loaded, a script marks the body with
+    // data-images-checked, data-images, data-broken-images and data-broken-links (images that
+    // did not decode, in-page links with no anchor) for tests/vulkan/check_report.sh.
     std::string html(const std::set<std::string>& compared) const;
 
     // Writes html(|compared|) to |path| through a temporary file and a rename. Errors:
