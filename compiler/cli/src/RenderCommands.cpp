@@ -381,8 +381,8 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     }
     // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.
     if (session->context->validationMessageCount() > 0) {
-        err << "varc: error: Vulkan validation reported " << session->context->validationMessageCount()
-            << " messages:\n"
+        err << "varc: error: Vulkan validation reported "
+            << session->context->validationMessageCount() << " messages:\n"
             << session->context->validationReport() << "\n";
         return kExitFailure;
     }

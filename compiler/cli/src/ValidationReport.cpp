@@ -125,8 +125,7 @@ void writeSceneTable(std::ostream& out, const std::vector<ReportScene>& scenes) 
             << (scene.compared ? formatNumber("%.2f", scene.maxErrorLsb) : "-")
             << "</td><td class=\"num\">"
             << (scene.compared ? formatNumber("%.3f", scene.meanSignedErrorLsb) : "-")
-            << "</td><td class=\"num\">" << formatNumber("%.2f s", scene.seconds)
-            << "</td></tr>\n";
+            << "</td><td class=\"num\">" << formatNumber("%.2f s", scene.seconds) << "</td></tr>\n";
     }
     out << "</table>\n";
 }
@@ -163,18 +162,18 @@ void writeImages(std::ostream& out, const ReportScene& scene) {
     out << "<div class=\"images\">\n";
     for (const ReportImage& image : scene.images) {
         out << "<figure><img alt=\"" << htmlEscape(scene.name + " " + image.caption)
-            << "\" src=\"data:image/png;base64," << base64Encode(image.png)
-            << "\"><figcaption>" << htmlEscape(image.caption) << "</figcaption></figure>\n";
+            << "\" src=\"data:image/png;base64," << base64Encode(image.png) << "\"><figcaption>"
+            << htmlEscape(image.caption) << "</figcaption></figure>\n";
     }
     out << "</div>\n";
 }
 
 void writeScene(std::ostream& out, const ReportScene& scene, size_t index,
                 const VariantIndex& variants) {
-    out << "<div class=\"scene\" id=\"" << sceneAnchor(index) << "\"><h2>"
-        << htmlEscape(scene.name) << " <span class=\"" << statusClass(scene.status) << "\">"
-        << htmlEscape(scene.status) << "</span></h2>\n<p><code>" << htmlEscape(scene.path)
-        << "</code>: " << scene.draws << " draws";
+    out << "<div class=\"scene\" id=\"" << sceneAnchor(index) << "\"><h2>" << htmlEscape(scene.name)
+        << " <span class=\"" << statusClass(scene.status) << "\">" << htmlEscape(scene.status)
+        << "</span></h2>\n<p><code>" << htmlEscape(scene.path) << "</code>: " << scene.draws
+        << " draws";
     if (scene.compared) {
         out << ", max error " << formatNumber("%.2f", scene.maxErrorLsb) << " LSB, mean signed "
             << formatNumber("%.3f", scene.meanSignedErrorLsb) << " LSB, mean abs "
@@ -237,7 +236,8 @@ void writePack(std::ostream& out, size_t pack, const PackCoverage& coverage,
     }
     out << "</table>\n<details><summary>" << coverage.uncovered.size()
         << " variants not compared</summary><ul>\n";
-    for (const std::string& name : coverage.uncovered) out << "<li>" << htmlEscape(name) << "</li>\n";
+    for (const std::string& name : coverage.uncovered)
+        out << "<li>" << htmlEscape(name) << "</li>\n";
     out << "</ul></details>\n";
 }
 

@@ -22,10 +22,10 @@ struct ReportImage {
 
 // What validate learnt about one scene.
 struct ReportScene {
-    std::string name;     // the scene file's stem
-    std::string path;     // the scene file
-    std::string status;   // "pass", "FAIL", "ERROR" or "no reference"
-    std::string message;  // the comparison's one-line message, the error, or why no reference
+    std::string name;       // the scene file's stem
+    std::string path;       // the scene file
+    std::string status;     // "pass", "FAIL", "ERROR" or "no reference"
+    std::string message;    // the comparison's one-line message, the error, or why no reference
     bool compared = false;  // the error figures below are meaningful
     uint32_t draws = 0;
     float maxErrorLsb = 0.0f, meanSignedErrorLsb = 0.0f, meanAbsErrorLsb = 0.0f;

@@ -10,8 +10,7 @@ namespace varc {
 namespace {
 
 TEST(HtmlTextTest, EscapesEveryReservedCharacter) {
-    EXPECT_EQ(htmlEscape("a<b & 'c' > \"d\""),
-              "a&lt;b &amp; &#39;c&#39; &gt; &quot;d&quot;");
+    EXPECT_EQ(htmlEscape("a<b & 'c' > \"d\""), "a&lt;b &amp; &#39;c&#39; &gt; &quot;d&quot;");
     EXPECT_EQ(htmlEscape("shader 'Custom/Lit' {DIRECTIONAL}"),
               "shader &#39;Custom/Lit&#39; {DIRECTIONAL}");
     EXPECT_EQ(htmlEscape(""), "");
