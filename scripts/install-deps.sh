@@ -9,6 +9,7 @@ packages=(
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
     libglm-dev nlohmann-json3-dev libcli11-dev libzstd-dev libxxhash-dev libpng-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
+    chromium
     groff-base file dpkg-dev
     libhiredis-dev redis-server redis-tools python3
     python3-jsonschema

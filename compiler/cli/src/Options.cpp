@@ -302,6 +302,9 @@ void addValidate(CLI::App& app, Options& options) {
         ->type_name("DIR");
     cmd->add_flag("--list-uncovered", options.list,
                   "Also list each variant no matching scene drew");
+    cmd->add_option("--report", options.reportPath,
+                    "Also write a self-contained HTML page of the images and variants")
+        ->type_name("FILE");
     cmd->add_option("--pipeline-cache", options.pipelineCachePath,
                     "VkPipelineCache file to load and save")
         ->type_name("FILE");

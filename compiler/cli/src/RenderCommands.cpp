@@ -6,10 +6,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <set>
 
 #include "ValidationCoverage.h"
+#include "ValidationReport.h"
 #include "varc/image/Png.h"
 #include "varc/reader/Pack.h"
 #include "varc/reference/DeferredReference.h"
@@ -67,6 +69,8 @@ struct SceneOutcome {
     std::string noReference;  // why the scene has no reference model ("" when it has one)
     std::string error;    // why it could not render
     runtime::RenderedFrame frame;
+    runtime::Image shown;           // the frame as written (HDR tonemapped), Rgba8
+    runtime::Image referenceShown;  // the reference as written, Rgba8 (empty before comparing)
     reference::CompareResult comparison;
     double seconds = 0;
 };
@@ -90,11 +94,11 @@ SceneOutcome renderScene(runtime::Renderer& renderer, const std::string& scenePa
         return outcome;
     }
     outcome.frame = std::move(*frame);
+    outcome.shown = outcome.frame.image.isFloat()
+                        ? outcome.frame.image.toRgba8(runtime::Tonemap::Reinhard)
+                        : outcome.frame.image;
     if (!renderPng.empty()) {
-        runtime::Image shown = outcome.frame.image.isFloat()
-                                   ? outcome.frame.image.toRgba8(runtime::Tonemap::Reinhard)
-                                   : outcome.frame.image;
-        if (Status written = runtime::writePng(renderPng, shown); !written) {
+        if (Status written = runtime::writePng(renderPng, outcome.shown); !written) {
             outcome.error = written.error().detail;
             return outcome;
         }
@@ -121,12 +125,12 @@ SceneOutcome renderScene(runtime::Renderer& renderer, const std::string& scenePa
                                      reference::toleranceFor(*scene),
                                      expected->colorHigh.width() ? &expected->colorHigh : nullptr);
         outcome.passed = outcome.comparison.passed;
+        outcome.referenceShown = expected->color.toRgba8(
+            scene->camera.hdr ? runtime::Tonemap::Reinhard : runtime::Tonemap::Clamp);
         // An image asked for and not written fails the scene: a run that exits 0 has written
         // everything it was asked to.
         if (!referencePng.empty()) {
-            Status written = runtime::writePng(
-                referencePng, expected->color.toRgba8(scene->camera.hdr ? runtime::Tonemap::Reinhard
-                                                                        : runtime::Tonemap::Clamp));
+            Status written = runtime::writePng(referencePng, outcome.referenceShown);
             if (!written) {
                 outcome.ok = false;
                 outcome.error = written.error().detail;
@@ -240,9 +244,83 @@ int runRender(const Options& options, std::ostream& out, std::ostream& err) {
     return kExitOk;
 }
 
-int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
-    std::string scenesDir = options.scenesDir.empty() ? "tests/scenes/forward" : options.scenesDir;
-    std::string outDir = options.outputPath.empty() ? "validate-out" : options.outputPath;
+namespace {
+
+// What the scenes of a validate run add up to.
+struct ValidateTotals {
+    int failures = 0;
+    size_t unreferenced = 0;         // rendered, but no material names a reference model
+    std::set<std::string> compared;  // variants drawn in scenes that matched the reference
+};
+
+// Prints |outcome|'s row of the table (and why it failed, or has no reference, on |err|), adds it
+// to |totals| and returns its result: "pass", "FAIL", "ERROR" or "no reference".
+std::string tallyScene(const std::string& stem, const SceneOutcome& outcome,
+                       ValidateTotals& totals, std::ostream& out, std::ostream& err) {
+    char line[256];
+    if (!outcome.ok) {
+        ++totals.failures;
+        std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", stem.c_str(), "-",
+                      "-", "-", "-", "-", "ERROR");
+        out << line;
+        err << "varc: error: " << outcome.error << "\n";
+        return "ERROR";
+    }
+    if (!outcome.noReference.empty()) {
+        ++totals.unreferenced;
+        std::snprintf(line, sizeof line, "%-28s %6u %9zu %9s %10s %6.2fs  %s\n", stem.c_str(),
+                      outcome.frame.draws, distinctCount(outcome.frame.variants), "-", "-",
+                      outcome.seconds, "no reference");
+        out << line;
+        err << stem << ": no reference: " << outcome.noReference << "\n";
+        return "no reference";
+    }
+    if (!outcome.passed) ++totals.failures;
+    if (outcome.passed)
+        totals.compared.insert(outcome.frame.variants.begin(), outcome.frame.variants.end());
+    std::snprintf(line, sizeof line, "%-28s %6u %9zu %9.2f %10.3f %6.2fs  %s\n", stem.c_str(),
+                  outcome.frame.draws, distinctCount(outcome.frame.variants),
+                  static_cast<double>(outcome.comparison.maxErrorLsb),
+                  static_cast<double>(outcome.comparison.meanSignedErrorLsb), outcome.seconds,
+                  outcome.passed ? "pass" : "FAIL");
+    out << line;
+    if (!outcome.passed) err << stem << ": " << outcome.comparison.message << "\n";
+    return outcome.passed ? "pass" : "FAIL";
+}
+
+// |image| as a PNG for the report, when there is one to show.
+void addReportImage(ReportScene& scene, const char* caption, const runtime::Image& image) {
+    if (image.width() == 0) return;
+    if (auto png = runtime::encodePng(image)) scene.images.push_back({caption, std::move(*png)});
+}
+
+// The report's record of one scene: its result, errors, variants and images (GPU, reference,
+// amplified difference and pixel-class mask, those it has).
+ReportScene reportSceneOf(const std::string& scenePath, const SceneOutcome& outcome,
+                          std::string status) {
+    ReportScene scene;
+    scene.name = std::filesystem::path(scenePath).stem().string();
+    scene.path = scenePath;
+    scene.status = std::move(status);
+    scene.message = !outcome.ok                    ? outcome.error
+                    : !outcome.noReference.empty() ? outcome.noReference
+                                                   : outcome.comparison.message;
+    scene.compared = outcome.ok && outcome.noReference.empty();
+    scene.draws = outcome.frame.draws;
+    scene.maxErrorLsb = outcome.comparison.maxErrorLsb;
+    scene.meanSignedErrorLsb = outcome.comparison.meanSignedErrorLsb;
+    scene.meanAbsErrorLsb = outcome.comparison.meanAbsErrorLsb;
+    scene.seconds = outcome.seconds;
+    scene.variants = outcome.frame.variants;
+    addReportImage(scene, "GPU", outcome.shown);
+    addReportImage(scene, "reference", outcome.referenceShown);
+    addReportImage(scene, "difference (amplified)", outcome.comparison.diff);
+    addReportImage(scene, "edge/interval mask", outcome.comparison.mask);
+    return scene;
+}
+
+// The *.json scenes in |scenesDir|, sorted; empty after printing why when there are none.
+std::vector<std::string> findScenes(const std::string& scenesDir, std::ostream& err) {
     std::vector<std::string> scenes;
     std::error_code error;
     for (const auto& entry : std::filesystem::directory_iterator(scenesDir, error)) {
@@ -250,9 +328,20 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     }
     if (error || scenes.empty()) {
         err << "varc: error: no *.json scenes in '" << scenesDir << "'\n";
-        return kExitUsage;
+        return {};
     }
     std::sort(scenes.begin(), scenes.end());
+    return scenes;
+}
+
+}  // namespace
+
+int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
+    std::string scenesDir = options.scenesDir.empty() ? "tests/scenes/forward" : options.scenesDir;
+    std::string outDir = options.outputPath.empty() ? "validate-out" : options.outputPath;
+    std::vector<std::string> scenes = findScenes(scenesDir, err);
+    if (scenes.empty()) return kExitUsage;
+    std::error_code error;
     std::filesystem::create_directories(outDir, error);
     if (error) {
         err << "varc: error: cannot create '" << outDir << "': " << error.message() << "\n";
@@ -261,59 +350,43 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     int exitCode = kExitOk;
     std::unique_ptr<RenderSession> session = openRenderSession(options, err, exitCode);
     if (!session) return exitCode;
+    std::optional<ValidationReport> report;
+    if (!options.reportPath.empty()) report.emplace(session->packs, options.packPaths);
     char line[256];
     std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", "scene", "draws",
                   "variants", "max LSB", "mean LSB", "time", "result");
     out << line;
-    int failures = 0;
-    size_t unreferenced = 0;  // rendered, but no material names a reference model
-    std::set<std::string> compared;  // variants drawn in scenes that matched the reference
+    ValidateTotals totals;
     for (const std::string& scenePath : scenes) {
         std::string stem = std::filesystem::path(scenePath).stem().string();
         std::string base = (std::filesystem::path(outDir) / stem).string();
         SceneOutcome outcome = renderScene(*session->renderer, scenePath, true, base + ".png",
                                            base + ".reference.png", base + ".diff.png", true);
-        if (!outcome.ok) {
-            ++failures;
-            std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", stem.c_str(), "-",
-                          "-", "-", "-", "-", "ERROR");
-            out << line;
-            err << "varc: error: " << outcome.error << "\n";
-            continue;
-        }
-        if (!outcome.noReference.empty()) {
-            ++unreferenced;
-            std::snprintf(line, sizeof line, "%-28s %6u %9zu %9s %10s %6.2fs  %s\n", stem.c_str(),
-                          outcome.frame.draws, distinctCount(outcome.frame.variants), "-", "-",
-                          outcome.seconds, "no reference");
-            out << line;
-            err << stem << ": no reference: " << outcome.noReference << "\n";
-            continue;
-        }
-        if (!outcome.passed) ++failures;
-        if (outcome.passed) compared.insert(outcome.frame.variants.begin(), outcome.frame.variants.end());
-        std::snprintf(line, sizeof line, "%-28s %6u %9zu %9.2f %10.3f %6.2fs  %s\n", stem.c_str(),
-                      outcome.frame.draws, distinctCount(outcome.frame.variants),
-                      static_cast<double>(outcome.comparison.maxErrorLsb),
-                      static_cast<double>(outcome.comparison.meanSignedErrorLsb), outcome.seconds,
-                      outcome.passed ? "pass" : "FAIL");
-        out << line;
-        if (!outcome.passed) err << stem << ": " << outcome.comparison.message << "\n";
+        std::string status = tallyScene(stem, outcome, totals, out, err);
+        if (report) report->addScene(reportSceneOf(scenePath, outcome, std::move(status)));
     }
-    out << scenes.size() - static_cast<size_t>(failures) - unreferenced << "/"
-        << scenes.size() - unreferenced << " scenes match the reference";
-    if (unreferenced) out << " (" << unreferenced << " more rendered with no reference model)";
+    out << scenes.size() - static_cast<size_t>(totals.failures) - totals.unreferenced << "/"
+        << scenes.size() - totals.unreferenced << " scenes match the reference";
+    if (totals.unreferenced)
+        out << " (" << totals.unreferenced << " more rendered with no reference model)";
     out << "; PNGs in " << outDir << "\n";
-    printValidationCoverage(session->packs, options.packPaths, compared, options.list, out);
+    printValidationCoverage(session->packs, options.packPaths, totals.compared, options.list, out);
     savePipelineCache(session->cache, err);
+    if (report) {
+        if (Status written = report->write(options.reportPath, totals.compared); !written) {
+            err << "varc: error: report: " << written.error().detail << "\n";
+            return kExitFailure;
+        }
+        out << "report: " << options.reportPath << "\n";
+    }
     // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.
     if (session->context->validationMessageCount() > 0) {
-        err << "varc: error: Vulkan validation reported " << session->context->validationMessageCount()
-            << " messages:\n"
+        err << "varc: error: Vulkan validation reported "
+            << session->context->validationMessageCount() << " messages:\n"
             << session->context->validationReport() << "\n";
         return kExitFailure;
     }
-    return failures ? kExitFailure : kExitOk;
+    return totals.failures ? kExitFailure : kExitOk;
 }
 
 }  // namespace varc::cli

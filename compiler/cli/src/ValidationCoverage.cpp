@@ -3,7 +3,6 @@
 #include "ValidationCoverage.h"
 
 #include <filesystem>
-#include <map>
 
 #include "varc/reader/PassView.h"
 #include "varc/reader/ShaderView.h"
@@ -12,48 +11,63 @@ namespace varc::cli {
 
 namespace {
 
-struct Tally {
-    size_t compared = 0, total = 0;
-};
+PackCoverage packCoverage(const runtime::Pack& pack, const std::string& path,
+                          const std::set<std::string>& compared) {
+    PackCoverage coverage;
+    coverage.packName = std::filesystem::path(path).filename().string();
+    for (size_t s = 0; s < pack.shaderCount(); ++s) {
+        const runtime::ShaderView shader = pack.shader(s);
+        for (size_t i = 0; i < shader.passCount(); ++i) {
+            std::optional<runtime::PassView> pass = shader.pass(i);
+            if (!pass) continue;
+            CoverageTally& mode = coverage.byLightMode[std::string(pass->lightMode())];
+            for (size_t v = 0; v < pass->variantCount(); ++v) {
+                std::string name = pass->variant(v).describe();
+                const bool seen = compared.count(name) > 0;
+                ++coverage.all.total;
+                ++mode.total;
+                coverage.all.compared += seen;
+                mode.compared += seen;
+                if (!seen) coverage.uncovered.push_back(std::move(name));
+            }
+        }
+    }
+    return coverage;
+}
 
 }  // namespace
+
+std::vector<PackCoverage> computeValidationCoverage(const std::vector<runtime::Pack>& packs,
+                                                    const std::vector<std::string>& packPaths,
+                                                    const std::set<std::string>& compared) {
+    std::vector<PackCoverage> coverage;
+    for (size_t p = 0; p < packs.size(); ++p)
+        coverage.push_back(packCoverage(packs[p], packPaths[p], compared));
+    return coverage;
+}
+
+std::string lightModeSummary(const PackCoverage& coverage) {
+    std::string text;
+    const char* separator = "";
+    for (const auto& [lightMode, tally] : coverage.byLightMode) {
+        text += separator;
+        text += (lightMode.empty() ? "no LightMode" : lightMode) + " " +
+                std::to_string(tally.compared) + "/" + std::to_string(tally.total);
+        separator = ", ";
+    }
+    return text;
+}
 
 void printValidationCoverage(const std::vector<runtime::Pack>& packs,
                              const std::vector<std::string>& packPaths,
                              const std::set<std::string>& compared, bool listUncovered,
                              std::ostream& out) {
-    for (size_t p = 0; p < packs.size(); ++p) {
-        Tally all;
-        std::map<std::string, Tally> byLightMode;  // "" = no LightMode tag
-        std::vector<std::string> uncovered;
-        for (size_t s = 0; s < packs[p].shaderCount(); ++s) {
-            const runtime::ShaderView shader = packs[p].shader(s);
-            for (size_t i = 0; i < shader.passCount(); ++i) {
-                std::optional<runtime::PassView> pass = shader.pass(i);
-                if (!pass) continue;
-                Tally& mode = byLightMode[std::string(pass->lightMode())];
-                for (size_t v = 0; v < pass->variantCount(); ++v) {
-                    const std::string name = pass->variant(v).describe();
-                    const bool seen = compared.count(name) > 0;
-                    if (!seen) uncovered.push_back(name);
-                    ++all.total;
-                    ++mode.total;
-                    all.compared += seen;
-                    mode.compared += seen;
-                }
-            }
-        }
-        out << std::filesystem::path(packPaths[p]).filename().string() << ": " << all.compared
-            << " of " << all.total << " variants compared with the reference (";
-        const char* separator = "";
-        for (const auto& [lightMode, tally] : byLightMode) {
-            out << separator << (lightMode.empty() ? "no LightMode" : lightMode) << " "
-                << tally.compared << "/" << tally.total;
-            separator = ", ";
-        }
-        out << ")\n";
+    for (const PackCoverage& coverage : computeValidationCoverage(packs, packPaths, compared)) {
+        out << coverage.packName << ": " << coverage.all.compared << " of " << coverage.all.total
+            << " variants compared with the reference (" << lightModeSummary(coverage) << ")\n";
         if (listUncovered) {
-            for (const std::string& name : uncovered) out << "  not compared: " << name << "\n";
+            for (const std::string& name : coverage.uncovered)
+                out << "  not compared: " << name << "\n";
         }
     }
 }

@@ -52,6 +52,12 @@ uint8_t diffLevel(float lsb) {
     return static_cast<uint8_t>(std::min(255.0f, std::abs(lsb) * 32.0f));
 }
 
+const std::array<uint8_t, 4>& maskColour(PixelClass cls, bool interval) {
+    if (cls == PixelClass::Edge) return kMaskEdge;
+    if (cls == PixelClass::Interior) return interval ? kMaskInterval : kMaskInterior;
+    return kMaskBackground;
+}
+
 }  // namespace
 
 CompareResult compareImages(const runtime::Image& rendered, const runtime::Image& reference,
@@ -75,6 +81,7 @@ CompareResult compareImages(const runtime::Image& rendered, const runtime::Image
     };
     const int channels = tolerance.compareAlpha ? 4 : 3;
     r.diff = runtime::Image(w, h, runtime::PixelFormat::Rgba8);
+    r.mask = runtime::Image(w, h, runtime::PixelFormat::Rgba8);
     double signedSum = 0.0, absSum = 0.0;
     uint64_t samples = 0;
     for (uint32_t y = 0; y < h; ++y) {
@@ -130,6 +137,7 @@ CompareResult compareImages(const runtime::Image& rendered, const runtime::Image
                 }
             }
             r.diff.setPixel8(x, y, d);
+            r.mask.setPixel8(x, y, fails ? kMaskMismatch : maskColour(cls, interval));
         }
     }
     if (samples > 0) {

@@ -4,6 +4,7 @@
 // the identical image and one with ±1 LSB noise.
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -128,6 +129,36 @@ TEST_F(ImageCompareTest, SingleWrongInteriorPixelIsReported) {
     Tolerance loose;
     loose.interiorLsb = 2.0f;
     EXPECT_TRUE(compareImages(wrong, mReference.color, mReference.classes, loose).passed);
+}
+
+// The mask shows what each pixel was checked as: its class, an interval, or a mismatch.
+TEST_F(ImageCompareTest, MaskColoursPixelClassesIntervalsAndMismatches) {
+    runtime::Image wrong = mReference.color.toRgba8();
+    runtime::Image high = mReference.color;
+    uint32_t edge = 0, background = 0;
+    std::vector<uint32_t> interior;
+    for (uint32_t i = 0; i < 96 * 96; ++i) {
+        const PixelClass cls = mReference.classes.classes[i];
+        if (cls == PixelClass::Interior) interior.push_back(i);
+        if (cls == PixelClass::Edge) edge = i;
+        if (cls == PixelClass::Background) background = i;
+    }
+    ASSERT_GE(interior.size(), 2u);
+    const uint32_t failing = interior[0], interval = interior[1];
+    auto p = wrong.pixel8(failing % 96, failing / 96);
+    p[1] = static_cast<uint8_t>(p[1] >= 128 ? p[1] - 9 : p[1] + 9);
+    wrong.setPixel8(failing % 96, failing / 96, p);
+    auto h = high.pixelFloat(interval % 96, interval / 96);
+    h[0] = h[0] > 0.5f ? h[0] - 0.1f : h[0] + 0.1f;  // the reference is now an interval here
+    high.setPixelFloat(interval % 96, interval / 96, h);
+    const CompareResult r =
+        compareImages(wrong, mReference.color, mReference.classes, Tolerance{}, &high);
+    ASSERT_EQ(r.mask.width(), 96u);
+    EXPECT_EQ(r.mask.pixel8(failing % 96, failing / 96), kMaskMismatch);
+    EXPECT_EQ(r.mask.pixel8(interval % 96, interval / 96), kMaskInterval);
+    EXPECT_EQ(r.mask.pixel8(interior.back() % 96, interior.back() / 96), kMaskInterior);
+    EXPECT_EQ(r.mask.pixel8(edge % 96, edge / 96), kMaskEdge);
+    EXPECT_EQ(r.mask.pixel8(background % 96, background / 96), kMaskBackground);
 }
 
 // An edge pixel that shows its neighbour's colour (a one-pixel coverage difference) passes.

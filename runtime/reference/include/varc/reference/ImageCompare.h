@@ -43,7 +43,18 @@ struct CompareResult {
     // Rgba8, same size: grey = the reference's luminance / 4; red = too bright, blue = too dark
     // (32 levels per LSB); failing pixels fully saturated, with green 255.
     runtime::Image diff;
+    // Rgba8, same size: what each pixel was checked as. kMaskBackground (dark grey), kMaskInterior
+    // (mid grey), kMaskEdge (yellow: matched against its neighbourhood), kMaskInterval (cyan:
+    // interior pixel checked against a shadow interval) and kMaskMismatch (red: failed).
+    runtime::Image mask;
 };
+
+// The colours of CompareResult::mask, RGBA.
+inline constexpr std::array<uint8_t, 4> kMaskBackground = {32, 32, 32, 255};
+inline constexpr std::array<uint8_t, 4> kMaskInterior = {128, 128, 128, 255};
+inline constexpr std::array<uint8_t, 4> kMaskEdge = {240, 200, 40, 255};
+inline constexpr std::array<uint8_t, 4> kMaskInterval = {40, 190, 240, 255};
+inline constexpr std::array<uint8_t, 4> kMaskMismatch = {255, 0, 0, 255};
 
 // Compares |rendered| (Rgba8 as read back, or RgbaFloat) with |reference| (RgbaFloat) pixel by
 // pixel: Interior and Background pixels must be within |tolerance.interiorLsb| on every channel;
