@@ -9,6 +9,7 @@
 #include <ostream>
 #include <set>
 
+#include "PropertyValidation.h"
 #include "ValidationCoverage.h"
 #include "varc/image/Png.h"
 #include "varc/reader/Pack.h"
@@ -241,6 +242,7 @@ int runRender(const Options& options, std::ostream& out, std::ostream& err) {
 }
 
 int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
+    if (options.properties) return runValidateProperties(options, out, err);
     std::string scenesDir = options.scenesDir.empty() ? "tests/scenes/forward" : options.scenesDir;
     std::string outDir = options.outputPath.empty() ? "validate-out" : options.outputPath;
     std::vector<std::string> scenes;

@@ -61,6 +61,7 @@ struct Options {
     std::string referencePath;             // render --reference ref.png
     std::string diffPath;                  // render --diff d.png
     std::string scenesDir;                 // validate --scenes DIR
+    bool properties = false;               // validate --properties
     std::string pipelineCachePath;         // render/validate --pipeline-cache FILE
     // _generate (hidden; the build runs it): "man" or "bash-completion", written to outputPath
     std::string generateWhat;
