@@ -41,7 +41,9 @@ Planes combine(const Image& actual, const std::vector<Term>& terms, const Tolera
     planes.skipped.assign(planes.actual.size() / 4, false);
     auto markSaturated = [&](const std::vector<float>& values) {
         for (size_t i = 0; i < values.size(); ++i)
-            if (i % 4 != 3 && values[i] >= tolerance.saturation) planes.skipped[i / 4] = true;
+            // An infinity is a failure to report, never a clamped value.
+            if (i % 4 != 3 && std::isfinite(values[i]) && values[i] >= tolerance.saturation)
+                planes.skipped[i / 4] = true;
     };
     markSaturated(planes.actual);
     for (const Term& term : terms) {
@@ -54,6 +56,7 @@ Planes combine(const Image& actual, const std::vector<Term>& terms, const Tolera
             planes.magnitude[i] += std::abs(term.weight * values[i]);
         }
     }
+    markSaturated(planes.expected);  // a sum the target would clamp
     return planes;
 }
 

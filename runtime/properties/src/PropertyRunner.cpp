@@ -40,6 +40,15 @@ std::string fileSafe(std::string text) {
     return text;
 }
 
+// " [variant] [variant]": the distinct variants |frame| drew, in first-draw order.
+std::string variantList(const runtime::RenderedFrame& frame) {
+    std::set<std::string> seen;
+    std::string list;
+    for (const std::string& variant : frame.variants)
+        if (seen.insert(variant).second) list += " [" + variant + "]";
+    return list;
+}
+
 // The renders of one shader, by case label, and the relations checked on them.
 class ShaderCheck {
 public:
@@ -82,7 +91,7 @@ public:
         }
         outcome.verdict = Verdict::Fail;
         outcome.detail += label + ": " + check.summary() + "; variants:";
-        for (const std::string& variant : actual->variants) outcome.detail += " [" + variant + "]";
+        outcome.detail += variantList(*actual);
         outcome.detail += writeImages(relation, label, actual->image, &check) + "\n";
     }
 
@@ -102,7 +111,7 @@ public:
         outcome.detail += label + ": only " + std::to_string(brighter) + " of " +
                           std::to_string(pixels) + " pixels brighter than with no lights (2% "
                           "needed); variants:";
-        for (const std::string& variant : lit->variants) outcome.detail += " [" + variant + "]";
+        outcome.detail += variantList(*lit);
         outcome.detail += writeImages("lit", label, lit->image, nullptr) + "\n";
     }
 
@@ -124,7 +133,7 @@ private:
         outcome.detail += label + ": " + std::to_string(found.count) +
                           " pixels hold NaN or Inf, first (" + std::to_string(found.firstX) +
                           "," + std::to_string(found.firstY) + "); variants:";
-        for (const std::string& variant : frame.variants) outcome.detail += " [" + variant + "]";
+        outcome.detail += variantList(frame);
         outcome.detail += writeImages("finite", label, frame.image, nullptr) + "\n";
     }
 

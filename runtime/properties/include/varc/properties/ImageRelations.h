@@ -26,7 +26,8 @@ struct Tolerance {
     float absolute = 0.0f;
     float relative = 0.0f;
     int neighbourhood = 0;
-    // Pixels where any term or the actual image has a channel >= |saturation| are not compared
+    // Pixels where any term, the expected sum or the actual image has a channel >=
+    // |saturation| are not compared
     // (8-bit targets clamp at 1; the default compares everything).
     float saturation = 3.0e38f;
 };
