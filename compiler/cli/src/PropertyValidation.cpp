@@ -4,13 +4,10 @@
 
 #include <chrono>
 #include <cstdio>
-#include <optional>
 #include <ostream>
 
 #include "varc/properties/PropertyRunner.h"
 #include "varc/reader/Pack.h"
-#include "varc/render/SceneRenderer.h"
-#include "varc/vulkan/VulkanContext.h"
 
 namespace varc::cli {
 
@@ -51,31 +48,14 @@ void printFailures(const properties::ShaderReport& report, std::ostream& err) {
 
 }  // namespace
 
-int runValidateProperties(const Options& options, std::ostream& out, std::ostream& err) {
-    std::vector<runtime::Pack> packs;
-    for (const std::string& path : options.packPaths) {
-        auto pack = runtime::Pack::open(path);
-        if (!pack) {
-            err << "varc: error: " << pack.error().detail << "\n";
-            return kExitUsage;
-        }
-        packs.push_back(std::move(*pack));
-    }
-    auto context = runtime::VulkanContext::create();
-    if (!context) {
-        err << "varc: error: " << context.error().detail << "\n";
-        return kExitUsage;
-    }
+int runValidateProperties(const std::vector<runtime::Pack>& packs, runtime::VulkanContext& context,
+                          runtime::Renderer& renderer, const Options& options, std::ostream& out,
+                          std::ostream& err) {
     std::vector<const runtime::Pack*> pointers;
     for (const runtime::Pack& pack : packs) pointers.push_back(&pack);
-    auto renderer = runtime::SceneRenderer::create(*context, pointers);
-    if (!renderer) {
-        err << "varc: error: " << renderer.error().detail << "\n";
-        return kExitFailure;
-    }
     properties::PropertyOptions propertyOptions;
     if (!options.outputPath.empty()) propertyOptions.outDir = options.outputPath;
-    properties::PropertyRunner runner(*renderer, propertyOptions);
+    properties::PropertyRunner runner(renderer, propertyOptions);
     std::vector<runtime::ShaderView> shaders = properties::lightingShaders(pointers);
     printHeader(out);
     size_t failed = 0;
@@ -91,10 +71,10 @@ int runValidateProperties(const Options& options, std::ostream& out, std::ostrea
     out << shaders.size() - failed << "/" << shaders.size()
         << " lit shaders hold every relation; images of failures in " << propertyOptions.outDir
         << "\n";
-    if (context->validationMessageCount() > 0) {
-        err << "varc: error: Vulkan validation reported " << context->validationMessageCount()
+    if (context.validationMessageCount() > 0) {
+        err << "varc: error: Vulkan validation reported " << context.validationMessageCount()
             << " messages:\n"
-            << context->validationReport() << "\n";
+            << context.validationReport() << "\n";
         return kExitFailure;
     }
     if (shaders.empty()) {

@@ -4,15 +4,22 @@
 #pragma once
 
 #include <iosfwd>
+#include <vector>
 
 #include "varc/cli/Options.h"
+#include "varc/reader/Pack.h"
+#include "varc/render/Renderer.h"
+#include "varc/vulkan/VulkanContext.h"
 
 namespace varc::cli {
 
-// Checks every shader with a ForwardBase pass in --pack P... (docs/PROPERTIES.md), prints one
-// row per shader with a column per relation (pass, FAIL, n/a), then each failure's shader,
-// relation, case, variants, worst pixels and images (under --out, default validate-out); exit 1
-// when a relation fails or a scene does not render, 2 when a pack or the device cannot be opened.
-int runValidateProperties(const Options& options, std::ostream& out, std::ostream& err);
+// Checks every shader with a ForwardBase pass in |packs| (opened from --pack P..., drawn by
+// |renderer| on |context|; docs/PROPERTIES.md), prints one row per shader with a column per
+// relation (pass, FAIL, n/a), then each failure's shader, relation, case, variants, worst pixels
+// and images (under --out, default validate-out); exit 1 when a relation fails, a scene does not
+// render, no shader is lit or the validation layer reported anything.
+int runValidateProperties(const std::vector<runtime::Pack>& packs, runtime::VulkanContext& context,
+                          runtime::Renderer& renderer, const Options& options, std::ostream& out,
+                          std::ostream& err);
 
 }  // namespace varc::cli

@@ -242,7 +242,15 @@ int runRender(const Options& options, std::ostream& out, std::ostream& err) {
 }
 
 int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
-    if (options.properties) return runValidateProperties(options, out, err);
+    if (options.properties) {
+        int exitCode = kExitOk;
+        std::unique_ptr<RenderSession> session = openRenderSession(options, err, exitCode);
+        if (!session) return exitCode;
+        exitCode = runValidateProperties(session->packs, *session->context, *session->renderer,
+                                         options, out, err);
+        savePipelineCache(session->cache, err);
+        return exitCode;
+    }
     std::string scenesDir = options.scenesDir.empty() ? "tests/scenes/forward" : options.scenesDir;
     std::string outDir = options.outputPath.empty() ? "validate-out" : options.outputPath;
     std::vector<std::string> scenes;
