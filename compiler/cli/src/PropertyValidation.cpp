@@ -50,13 +50,16 @@ void printFailures(const properties::ShaderReport& report, std::ostream& err) {
 
 int runValidateProperties(const std::vector<runtime::Pack>& packs, runtime::VulkanContext& context,
                           runtime::Renderer& renderer, const Options& options, std::ostream& out,
-                          std::ostream& err) {
+                          std::ostream& err, const std::set<std::string>* only) {
     std::vector<const runtime::Pack*> pointers;
     for (const runtime::Pack& pack : packs) pointers.push_back(&pack);
+    std::vector<runtime::ShaderView> shaders;
+    for (const runtime::ShaderView& shader : properties::lightingShaders(pointers))
+        if (!only || only->count(std::string(shader.name()))) shaders.push_back(shader);
+    if (only && shaders.empty()) return kExitOk;
     properties::PropertyOptions propertyOptions;
     if (!options.outputPath.empty()) propertyOptions.outDir = options.outputPath;
     properties::PropertyRunner runner(renderer, propertyOptions);
-    std::vector<runtime::ShaderView> shaders = properties::lightingShaders(pointers);
     printHeader(out);
     size_t failed = 0;
     for (const runtime::ShaderView& shader : shaders) {

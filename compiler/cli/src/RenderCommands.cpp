@@ -214,6 +214,14 @@ std::unique_ptr<RenderSession> openRenderSession(const Options& options, std::os
     return session;
 }
 
+// Adds the shaders of |scenePath|'s materials that name no reference model to |shaders|.
+void addUnreferencedShaders(const std::string& scenePath, std::set<std::string>& shaders) {
+    auto scene = scene::loadScene(scenePath);
+    if (!scene) return;  // it rendered a moment ago; nothing to add if it is gone
+    for (const scene::Object& object : scene->objects)
+        if (scene::referenceModelOf(object.material).empty()) shaders.insert(object.material.shader);
+}
+
 size_t distinctCount(const std::vector<std::string>& names) {
     return std::set<std::string>(names.begin(), names.end()).size();
 }
@@ -278,6 +286,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     int failures = 0;
     size_t unreferenced = 0;  // rendered, but no material names a reference model
     std::set<std::string> compared;  // variants drawn in scenes that matched the reference
+    std::set<std::string> unreferencedShaders;  // checked by their properties instead
     for (const std::string& scenePath : scenes) {
         std::string stem = std::filesystem::path(scenePath).stem().string();
         std::string base = (std::filesystem::path(outDir) / stem).string();
@@ -293,6 +302,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
         }
         if (!outcome.noReference.empty()) {
             ++unreferenced;
+            addUnreferencedShaders(scenePath, unreferencedShaders);
             std::snprintf(line, sizeof line, "%-28s %6u %9zu %9s %10s %6.2fs  %s\n", stem.c_str(),
                           outcome.frame.draws, distinctCount(outcome.frame.variants), "-", "-",
                           outcome.seconds, "no reference");
@@ -315,6 +325,14 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     if (unreferenced) out << " (" << unreferenced << " more rendered with no reference model)";
     out << "; PNGs in " << outDir << "\n";
     printValidationCoverage(session->packs, options.packPaths, compared, options.list, out);
+    if (!unreferencedShaders.empty()) {
+        out << "materials without a reference model: their shaders' properties "
+               "(docs/PROPERTIES.md)\n";
+        int propertiesExit = runValidateProperties(session->packs, *session->context,
+                                                   *session->renderer, options, out, err,
+                                                   &unreferencedShaders);
+        if (propertiesExit != kExitOk) ++failures;
+    }
     savePipelineCache(session->cache, err);
     // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.
     if (session->context->validationMessageCount() > 0) {

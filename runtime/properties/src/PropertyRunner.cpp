@@ -269,6 +269,8 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
     c.relate("translation", "offset (3, -2, 5)",
              c.render("all lights moved", similar(allLit, 1.0f, {3.0f, -2.0f, 5.0f})),
              {{allFrame, 1.0f}}, moved);
+    c.relate("rotation", "40 degrees about y",
+             c.render("all lights turned", turned(allLit, 40.0f)), {{allFrame, 1.0f}}, moved);
     c.relate("scale", "x2", c.render("all lights scaled", similar(allLit, 2.0f, glm::vec3(0.0f))),
              {{allFrame, 1.0f}}, moved);
 }
@@ -295,7 +297,7 @@ const std::vector<std::string>& relationNames() {
     static const std::vector<std::string> kNames{
         "finite",       "dark",       "lit",            "out_of_range", "black_cookie",
         "white_cookie", "additivity", "additivity_ldr", "intensity",    "translation",
-        "scale"};
+        "rotation",     "scale"};
     return kNames;
 }
 

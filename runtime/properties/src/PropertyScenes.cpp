@@ -2,6 +2,7 @@
 // PropertyScenes: the generated scenes and lights of the property checks.
 #include "varc/properties/PropertyScenes.h"
 
+
 #include "varc/reader/PassView.h"
 
 namespace varc::properties {
@@ -139,6 +140,22 @@ scene::Scene similar(const scene::Scene& original, float scale, glm::vec3 offset
         light.transform.position = move(light.transform.position);
         light.range *= scale;
         light.cookieSize *= scale;
+    }
+    return scene;
+}
+
+scene::Scene turned(const scene::Scene& original, float degrees) {
+    scene::Scene scene = original;
+    const glm::mat3 turn = scene::Transform{{}, {0.0f, degrees, 0.0f}, glm::vec3(1.0f)}.rotation();
+    scene.camera.position = turn * scene.camera.position;
+    scene.camera.target = turn * scene.camera.target;
+    for (scene::Object& object : scene.objects) {
+        object.transform.position = turn * object.transform.position;
+        object.transform.rotationDegrees.y += degrees;
+    }
+    for (scene::Light& light : scene.lights) {
+        light.transform.position = turn * light.transform.position;
+        light.transform.rotationDegrees.y += degrees;
     }
     return scene;
 }

@@ -66,6 +66,26 @@ TEST(PropertyScenesTest, SimilarMovesAndScalesEverything) {
     EXPECT_EQ(moved.lights[1].transform.rotationDegrees, scene.lights[1].transform.rotationDegrees);
 }
 
+TEST(PropertyScenesTest, TurnedTurnsPositionsAndDirectionsAlike) {
+    scene::Scene scene = withLights(emptyScene("s", true, 64), {keyPoint(), keyDirectional()});
+    scene::Scene turnedScene = turned(scene, 90.0f);
+    // Ry(90) maps +z to +x and +x to -z.
+    glm::vec3 camera = turnedScene.camera.position, expected = scene.camera.position;
+    EXPECT_NEAR(camera.x, expected.z, 1e-5f);
+    EXPECT_NEAR(camera.z, -expected.x, 1e-5f);
+    EXPECT_NEAR(camera.y, expected.y, 1e-5f);
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        glm::vec3 forward = turnedScene.lights[i].forward(), original = scene.lights[i].forward();
+        EXPECT_NEAR(forward.x, original.z, 1e-5f);
+        EXPECT_NEAR(forward.z, -original.x, 1e-5f);
+    }
+    // The object's local axes turn with it: its local +x is turned like a position.
+    glm::mat3 before = scene.objects[1].transform.rotation();
+    glm::mat3 after = turnedScene.objects[1].transform.rotation();
+    EXPECT_NEAR(after[0].x, before[0].z, 1e-5f);
+    EXPECT_NEAR(after[0].z, -before[0].x, 1e-5f);
+}
+
 TEST(PropertyScenesTest, EveryObjectUsesTheShaderWithItsDefaults) {
     scene::Scene scene = emptyScene("varc/Forward", false, 48);
     ASSERT_EQ(scene.objects.size(), 3u);

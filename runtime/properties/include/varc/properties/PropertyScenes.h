@@ -52,4 +52,9 @@ scene::Light outOfRangeSpot();
 // multiplied by |scale|. A correct lighting shader draws the same image.
 scene::Scene similar(const scene::Scene& scene, float scale, glm::vec3 offset);
 
+// |scene| turned by |degrees| about the world y axis through the origin: camera, objects and
+// lights (positions turned, Unity Euler y angles increased: Ry(a) Ry(y) Rx(x) Rz(z) =
+// Ry(a + y) Rx(x) Rz(z)). The camera turns too, so a correct shader draws the same image.
+scene::Scene turned(const scene::Scene& scene, float degrees);
+
 }  // namespace varc::properties
