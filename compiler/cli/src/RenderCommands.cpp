@@ -218,8 +218,10 @@ std::unique_ptr<RenderSession> openRenderSession(const Options& options, std::os
 void addUnreferencedShaders(const std::string& scenePath, std::set<std::string>& shaders) {
     auto scene = scene::loadScene(scenePath);
     if (!scene) return;  // it rendered a moment ago; nothing to add if it is gone
-    for (const scene::Object& object : scene->objects)
-        if (scene::referenceModelOf(object.material).empty()) shaders.insert(object.material.shader);
+    for (const scene::Object& object : scene->objects) {
+        if (scene::referenceModelOf(object.material).empty())
+            shaders.insert(object.material.shader);
+    }
 }
 
 size_t distinctCount(const std::vector<std::string>& names) {

@@ -21,7 +21,8 @@ using runtime::PixelFormat;
 std::vector<float> floatsOf(const Image& image) {
     if (image.isFloat()) return {image.floats().begin(), image.floats().end()};
     std::vector<float> values(image.bytes().size());
-    for (size_t i = 0; i < values.size(); ++i) values[i] = static_cast<float>(image.bytes()[i]) / 255.0f;
+    for (size_t i = 0; i < values.size(); ++i)
+        values[i] = static_cast<float>(image.bytes()[i]) / 255.0f;
     return values;
 }
 
@@ -147,7 +148,8 @@ RelationCheck checkRelation(const Image& actual, const std::vector<Term>& terms,
     check.passed = errors.empty();
     std::stable_sort(errors.begin(), errors.end(),
                      [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (size_t i = 0; i < errors.size() && i < kWorstPixels; ++i) check.worst.push_back(errors[i].second);
+    for (size_t i = 0; i < errors.size() && i < kWorstPixels; ++i)
+        check.worst.push_back(errors[i].second);
     check.expected = expectedImage(p);
     check.diff = diffImage(p, failing);
     return check;

@@ -54,7 +54,8 @@ class ShaderCheck {
 public:
     ShaderCheck(runtime::Renderer& renderer, const PropertyOptions& options, ShaderReport& report)
         : mRenderer(renderer), mOptions(options), mReport(report) {
-        for (const std::string& name : relationNames()) mReport.relations.push_back({name, Verdict::NotApplicable, {}});
+        for (const std::string& name : relationNames())
+            mReport.relations.push_back({name, Verdict::NotApplicable, {}});
     }
 
     // The frame of |scene| under |label| (drawn once); nullptr after recording a render error.
@@ -109,7 +110,8 @@ public:
         }
         outcome.verdict = Verdict::Fail;
         outcome.detail += label + ": only " + std::to_string(brighter) + " of " +
-                          std::to_string(pixels) + " pixels brighter than with no lights (2% "
+                          std::to_string(pixels) +
+                          " pixels brighter than with no lights (2% "
                           "needed); variants:";
         outcome.detail += variantList(*lit);
         outcome.detail += writeImages("lit", label, lit->image, nullptr) + "\n";
@@ -131,8 +133,8 @@ private:
         }
         outcome.verdict = Verdict::Fail;
         outcome.detail += label + ": " + std::to_string(found.count) +
-                          " pixels hold NaN or Inf, first (" + std::to_string(found.firstX) +
-                          "," + std::to_string(found.firstY) + "); variants:";
+                          " pixels hold NaN or Inf, first (" + std::to_string(found.firstX) + "," +
+                          std::to_string(found.firstY) + "); variants:";
         outcome.detail += variantList(frame);
         outcome.detail += writeImages("finite", label, frame.image, nullptr) + "\n";
     }
@@ -141,7 +143,8 @@ private:
     // or " (images not written: why)".
     std::string writeImages(const std::string& relation, const std::string& label,
                             const Image& actual, const RelationCheck* check) {
-        std::filesystem::path dir = std::filesystem::path(mOptions.outDir) / fileSafe(mReport.shader);
+        std::filesystem::path dir =
+            std::filesystem::path(mOptions.outDir) / fileSafe(mReport.shader);
         std::error_code error;
         std::filesystem::create_directories(dir, error);
         if (error) return " (images not written: " + error.message() + ")";
@@ -208,11 +211,13 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
 
     const Tolerance outOfRange{kOutOfRange, kHalfUlp, 0};
     if (support.point)
-        c.relate("out_of_range", "point", c.render("directional + far point", lit({d, outOfRangePoint()})),
-                 {{dOnly, 1.0f}}, outOfRange);
+        c.relate("out_of_range", "point",
+                 c.render("directional + far point", lit({d, outOfRangePoint()})), {{dOnly, 1.0f}},
+                 outOfRange);
     if (support.spot)
-        c.relate("out_of_range", "spot", c.render("directional + far spot", lit({d, outOfRangeSpot()})),
-                 {{dOnly, 1.0f}}, outOfRange);
+        c.relate("out_of_range", "spot",
+                 c.render("directional + far spot", lit({d, outOfRangeSpot()})), {{dOnly, 1.0f}},
+                 outOfRange);
 
     const Tolerance same{kZero, 2 * kHalfUlp, 0};
     if (support.directionalCookie)
@@ -220,7 +225,8 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
                  c.render("directional black cookie", lit({withCookie(d, cookies.second)})),
                  {{none, 1.0f}}, same);
     if (support.spot)
-        c.relate("black_cookie", "spot", c.render("spot black cookie", lit({withCookie(s, cookies.second)})),
+        c.relate("black_cookie", "spot",
+                 c.render("spot black cookie", lit({withCookie(s, cookies.second)})),
                  {{none, 1.0f}}, same);
     if (support.directionalCookie)
         c.relate("white_cookie", "directional",
@@ -233,7 +239,8 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
     if (support.spot) c.requireLight("spot", c.render("spot", lit({s})), none);
     if (support.forwardAdd) {
         const auto* d2Only = c.render("second directional", lit({d2}));
-        c.relate("additivity", "directional + directional", c.render("directional + second", lit({d, d2})),
+        c.relate("additivity", "directional + directional",
+                 c.render("directional + second", lit({d, d2})),
                  {{dOnly, 1.0f}, {d2Only, 1.0f}, {none, -1.0f}}, sum);
     }
     if (support.point)
@@ -249,7 +256,8 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
         const auto* ldrNone = c.render("ldr no lights", ldr);
         const auto* ldrD = c.render("ldr directional", withLights(ldr, {d}));
         const auto* ldrExtra = c.render("ldr extra", withLights(ldr, {extra}));
-        c.relate("additivity_ldr", "directional + extra", c.render("ldr both", withLights(ldr, {d, extra})),
+        c.relate("additivity_ldr", "directional + extra",
+                 c.render("ldr both", withLights(ldr, {d, extra})),
                  {{ldrD, 1.0f}, {ldrExtra, 1.0f}, {ldrNone, -1.0f}},
                  {2 * kLsb, 0, 0, 254.0f / 255.0f});
     }
@@ -269,8 +277,8 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
     c.relate("translation", "offset (3, -2, 5)",
              c.render("all lights moved", similar(allLit, 1.0f, {3.0f, -2.0f, 5.0f})),
              {{allFrame, 1.0f}}, moved);
-    c.relate("rotation", "40 degrees about y",
-             c.render("all lights turned", turned(allLit, 40.0f)), {{allFrame, 1.0f}}, moved);
+    c.relate("rotation", "40 degrees about y", c.render("all lights turned", turned(allLit, 40.0f)),
+             {{allFrame, 1.0f}}, moved);
     c.relate("scale", "x2", c.render("all lights scaled", similar(allLit, 2.0f, glm::vec3(0.0f))),
              {{allFrame, 1.0f}}, moved);
 }
@@ -279,9 +287,12 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
 
 const char* verdictName(Verdict verdict) {
     switch (verdict) {
-        case Verdict::Pass: return "pass";
-        case Verdict::Fail: return "FAIL";
-        case Verdict::NotApplicable: return "n/a";
+        case Verdict::Pass:
+            return "pass";
+        case Verdict::Fail:
+            return "FAIL";
+        case Verdict::NotApplicable:
+            return "n/a";
     }
     return "?";
 }
@@ -295,9 +306,8 @@ bool ShaderReport::passed() const {
 
 const std::vector<std::string>& relationNames() {
     static const std::vector<std::string> kNames{
-        "finite",       "dark",       "lit",            "out_of_range", "black_cookie",
-        "white_cookie", "additivity", "additivity_ldr", "intensity",    "translation",
-        "rotation",     "scale"};
+        "finite",     "dark",           "lit",       "out_of_range", "black_cookie", "white_cookie",
+        "additivity", "additivity_ldr", "intensity", "translation",  "rotation",     "scale"};
     return kNames;
 }
 

@@ -2,7 +2,6 @@
 // PropertyScenes: the generated scenes and lights of the property checks.
 #include "varc/properties/PropertyScenes.h"
 
-
 #include "varc/reader/PassView.h"
 
 namespace varc::properties {
@@ -30,8 +29,7 @@ LightSupport lightSupportOf(const runtime::ShaderView& shader) {
     if (!support.forwardBase || !add) return support;
     support.forwardAdd = true;
     const bool anyLightKeyword = declares(*add, "POINT") || declares(*add, "SPOT") ||
-                                 declares(*add, "DIRECTIONAL") ||
-                                 declares(*add, "POINT_COOKIE") ||
+                                 declares(*add, "DIRECTIONAL") || declares(*add, "POINT_COOKIE") ||
                                  declares(*add, "DIRECTIONAL_COOKIE");
     support.point = !anyLightKeyword || declares(*add, "POINT");
     support.spot = declares(*add, "SPOT");

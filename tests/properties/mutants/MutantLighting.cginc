@@ -69,12 +69,13 @@ UnityLight ForwardPixelLight(ForwardVaryings i, float3 normal) {
 #elif defined(MUTANT_COOKIE_IGNORED) && (defined(DIRECTIONAL_COOKIE) || defined(SPOT))
     // bug: the cookie is not sampled; a spot keeps only its distance falloff
     #if defined(SPOT)
-    light.color = _LightColor0.rgb * UnitySpotAttenuate(mul(unity_WorldToLight, float4(i.worldPos, 1)).xyz);
+    float3 lightCoord = mul(unity_WorldToLight, float4(i.worldPos, 1)).xyz;
+    light.color = _LightColor0.rgb * UnitySpotAttenuate(lightCoord);
     #else
     light.color = _LightColor0.rgb;
     #endif
 #elif defined(MUTANT_NAN_SPOT) && defined(SPOT)
-    light.color = _LightColor0.rgb * attenuation * sqrt(-1.0 - attenuation);  // bug: NaN
+    light.color = _LightColor0.rgb * attenuation * sqrt(-1.0 - attenuation);  // bug: NaN here
 #else
     light.color = _LightColor0.rgb * attenuation;
 #endif

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // ImageRelations on synthetic images: sums, tolerances, saturation, the 3x3 window, NaN.
-#include "varc/properties/ImageRelations.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+
+#include "varc/properties/ImageRelations.h"
 
 namespace varc::properties {
 namespace {

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // PropertyScenes: the out-of-range lights reach object bounds but no surface, the key lights
 // reach every object, and similar() moves everything consistently.
-#include "varc/properties/PropertyScenes.h"
-
 #include <gtest/gtest.h>
 
+#include "varc/properties/PropertyScenes.h"
 #include "varc/scene/ForwardLights.h"
 #include "varc/scene/LightImportance.h"
 
@@ -16,7 +15,8 @@ namespace {
 float surfaceDistance(const scene::Object& object, glm::vec3 p) {
     glm::vec3 local = p - object.transform.position;
     switch (object.mesh) {
-        case scene::MeshKind::Sphere: return glm::length(local) - 0.5f;
+        case scene::MeshKind::Sphere:
+            return glm::length(local) - 0.5f;
         case scene::MeshKind::Cube: {
             glm::vec3 unrotated = glm::transpose(object.transform.rotation()) * local;
             glm::vec3 outside = glm::max(glm::abs(unrotated) - glm::vec3(0.5f), glm::vec3(0.0f));
@@ -59,7 +59,8 @@ TEST(PropertyScenesTest, SimilarMovesAndScalesEverything) {
     EXPECT_EQ(moved.camera.target, 2.0f * scene.camera.target + glm::vec3(1, 2, 3));
     EXPECT_FLOAT_EQ(moved.camera.nearPlane, 2.0f * scene.camera.nearPlane);
     EXPECT_EQ(moved.objects[2].transform.scale, 2.0f * scene.objects[2].transform.scale);
-    EXPECT_EQ(moved.objects[1].transform.rotationDegrees, scene.objects[1].transform.rotationDegrees);
+    EXPECT_EQ(moved.objects[1].transform.rotationDegrees,
+              scene.objects[1].transform.rotationDegrees);
     EXPECT_FLOAT_EQ(moved.lights[0].range, 2.0f * scene.lights[0].range);
     EXPECT_EQ(moved.lights[0].transform.position,
               2.0f * scene.lights[0].transform.position + glm::vec3(1, 2, 3));

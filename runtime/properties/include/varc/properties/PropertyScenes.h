@@ -4,10 +4,9 @@
 // the shader's ForwardAdd pass accepts (docs/PROPERTIES.md has the layout).
 #pragma once
 
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "varc/reader/ShaderView.h"
 #include "varc/scene/Scene.h"
