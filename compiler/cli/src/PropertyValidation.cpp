@@ -21,7 +21,7 @@ void printHeader(std::ostream& out) {
         std::snprintf(cell, sizeof cell, " %s", name.c_str());
         out << cell;
     }
-    out << "  renders  time  lights\n";
+    out << "  renders  drawn   time  lights\n";
 }
 
 void printRow(const properties::ShaderReport& report, double seconds, std::ostream& out) {
@@ -33,7 +33,9 @@ void printRow(const properties::ShaderReport& report, double seconds, std::ostre
                       properties::verdictName(outcome.verdict));
         out << cell;
     }
-    std::snprintf(cell, sizeof cell, "  %7zu %5.2fs  ", report.renders, seconds);
+    const std::string drawn =
+        std::to_string(report.variants.size()) + "/" + std::to_string(report.litVariants);
+    std::snprintf(cell, sizeof cell, "  %7zu %6s %5.2fs  ", report.renders, drawn.c_str(), seconds);
     out << cell << report.lights << (report.error.empty() ? "" : "  ERROR") << "\n";
 }
 

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "varc/image/Png.h"
+#include "varc/reader/PassView.h"
 #include "varc/properties/ImageRelations.h"
 #include "varc/properties/PropertyScenes.h"
 
@@ -335,6 +336,10 @@ ShaderReport PropertyRunner::check(const runtime::ShaderView& shader) {
     if (!cookies) {
         report.error = cookies.error().detail;
         return report;
+    }
+    for (const char* lightMode : {"ForwardBase", "ForwardAdd"}) {
+        if (std::optional<runtime::PassView> pass = shader.pass(lightMode))
+            report.litVariants += pass->variantCount();
     }
     const LightSupport support = lightSupportOf(shader);
     report.lights = "directional";

@@ -38,6 +38,7 @@ struct ShaderReport {
     std::string lights;  // the light types drawn: "directional point spot directional-cookie"
     size_t renders = 0;
     std::set<std::string> variants;  // every variant drawn (VariantView::describe())
+    size_t litVariants = 0;          // variants of the ForwardBase and ForwardAdd passes
     std::string error;               // a render that failed ("" when all drew)
     bool passed() const;             // no error and no relation failed
 };
