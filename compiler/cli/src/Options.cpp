@@ -300,6 +300,10 @@ void addValidate(CLI::App& app, Options& options) {
         ->type_name("DIR");
     cmd->add_option("--out", options.outputPath, "Folder for the PNGs (default validate-out)")
         ->type_name("DIR");
+    cmd->add_flag("--properties", options.properties,
+                  "Check metamorphic relations on generated scenes for every lit shader "
+                  "(docs/PROPERTIES.md) instead of comparing scenes with the reference")
+        ->excludes("--scenes");
     cmd->add_flag("--list-uncovered", options.list,
                   "Also list each variant no matching scene drew");
     cmd->add_option("--report", options.reportPath,

@@ -10,6 +10,7 @@
 #include <ostream>
 #include <set>
 
+#include "PropertyValidation.h"
 #include "ValidationCoverage.h"
 #include "ValidationReport.h"
 #include "varc/image/Png.h"
@@ -217,6 +218,16 @@ std::unique_ptr<RenderSession> openRenderSession(const Options& options, std::os
     return session;
 }
 
+// Adds the shaders of |scenePath|'s materials that name no reference model to |shaders|.
+void addUnreferencedShaders(const std::string& scenePath, std::set<std::string>& shaders) {
+    auto scene = scene::loadScene(scenePath);
+    if (!scene) return;  // it rendered a moment ago; nothing to add if it is gone
+    for (const scene::Object& object : scene->objects) {
+        if (scene::referenceModelOf(object.material).empty())
+            shaders.insert(object.material.shader);
+    }
+}
+
 size_t distinctCount(const std::vector<std::string>& names) {
     return std::set<std::string>(names.begin(), names.end()).size();
 }
@@ -251,6 +262,7 @@ struct ValidateTotals {
     int failures = 0;
     size_t unreferenced = 0;         // rendered, but no material names a reference model
     std::set<std::string> compared;  // variants drawn in scenes that matched the reference
+    std::set<std::string> unreferencedShaders;  // checked by their properties instead
 };
 
 // Prints |outcome|'s row of the table (and why it failed, or has no reference, on |err|), adds it
@@ -337,6 +349,15 @@ std::vector<std::string> findScenes(const std::string& scenesDir, std::ostream& 
 }  // namespace
 
 int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
+    if (options.properties) {
+        int exitCode = kExitOk;
+        std::unique_ptr<RenderSession> session = openRenderSession(options, err, exitCode);
+        if (!session) return exitCode;
+        exitCode = runValidateProperties(session->packs, *session->context, *session->renderer,
+                                         options, out, err);
+        savePipelineCache(session->cache, err);
+        return exitCode;
+    }
     std::string scenesDir = options.scenesDir.empty() ? "tests/scenes/forward" : options.scenesDir;
     std::string outDir = options.outputPath.empty() ? "validate-out" : options.outputPath;
     std::vector<std::string> scenes = findScenes(scenesDir, err);
@@ -363,6 +384,7 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
         SceneOutcome outcome = renderScene(*session->renderer, scenePath, true, base + ".png",
                                            base + ".reference.png", base + ".diff.png", true);
         std::string status = tallyScene(stem, outcome, totals, out, err);
+        if (status == "no reference") addUnreferencedShaders(scenePath, totals.unreferencedShaders);
         if (report) report->addScene(reportSceneOf(scenePath, outcome, std::move(status)));
     }
     out << scenes.size() - static_cast<size_t>(totals.failures) - totals.unreferenced << "/"
@@ -371,6 +393,14 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
         out << " (" << totals.unreferenced << " more rendered with no reference model)";
     out << "; PNGs in " << outDir << "\n";
     printValidationCoverage(session->packs, options.packPaths, totals.compared, options.list, out);
+    if (!totals.unreferencedShaders.empty()) {
+        out << "materials without a reference model: their shaders' properties "
+               "(docs/PROPERTIES.md)\n";
+        int propertiesExit = runValidateProperties(session->packs, *session->context,
+                                                   *session->renderer, options, out, err,
+                                                   &totals.unreferencedShaders);
+        if (propertiesExit != kExitOk) ++totals.failures;
+    }
     savePipelineCache(session->cache, err);
     if (report) {
         if (Status written = report->write(options.reportPath, totals.compared); !written) {

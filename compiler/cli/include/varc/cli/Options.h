@@ -72,6 +72,7 @@ struct Options {
     std::string diffPath;                  // render --diff d.png
     std::string scenesDir;                 // validate --scenes DIR
     std::string reportPath;                // validate --report report.html
+    bool properties = false;               // validate --properties
     std::string pipelineCachePath;         // render/validate --pipeline-cache FILE
     // _generate (hidden; the build runs it): "man" or "bash-completion", written to outputPath
     std::string generateWhat;

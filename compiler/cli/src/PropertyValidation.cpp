@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: Apache-2.0
+// `varc validate --properties`: packs and device opened, every lit shader checked, the table.
+#include "PropertyValidation.h"
+
+#include <chrono>
+#include <cstdio>
+#include <ostream>
+
+#include "varc/properties/PropertyRunner.h"
+#include "varc/reader/Pack.h"
+
+namespace varc::cli {
+
+namespace {
+
+void printHeader(std::ostream& out) {
+    char cell[64];
+    std::snprintf(cell, sizeof cell, "%-36s", "shader");
+    out << cell;
+    for (const std::string& name : properties::relationNames()) {
+        std::snprintf(cell, sizeof cell, " %s", name.c_str());
+        out << cell;
+    }
+    out << "  renders  drawn   time  lights\n";
+}
+
+void printRow(const properties::ShaderReport& report, double seconds, std::ostream& out) {
+    char cell[64];
+    std::snprintf(cell, sizeof cell, "%-36s", report.shader.c_str());
+    out << cell;
+    for (const properties::RelationOutcome& outcome : report.relations) {
+        std::snprintf(cell, sizeof cell, " %*s", static_cast<int>(outcome.relation.size()),
+                      properties::verdictName(outcome.verdict));
+        out << cell;
+    }
+    const std::string drawn =
+        std::to_string(report.variants.size()) + "/" + std::to_string(report.litVariants);
+    std::snprintf(cell, sizeof cell, "  %7zu %6s %5.2fs  ", report.renders, drawn.c_str(), seconds);
+    out << cell << report.lights << (report.error.empty() ? "" : "  ERROR") << "\n";
+}
+
+void printFailures(const properties::ShaderReport& report, std::ostream& err) {
+    if (!report.error.empty())
+        err << "varc: error: " << report.shader << ": " << report.error << "\n";
+    for (const properties::RelationOutcome& outcome : report.relations) {
+        if (outcome.verdict != properties::Verdict::Fail) continue;
+        err << report.shader << ": relation " << outcome.relation << " fails:\n" << outcome.detail;
+    }
+}
+
+}  // namespace
+
+int runValidateProperties(const std::vector<runtime::Pack>& packs, runtime::VulkanContext& context,
+                          runtime::Renderer& renderer, const Options& options, std::ostream& out,
+                          std::ostream& err, const std::set<std::string>* only) {
+    std::vector<const runtime::Pack*> pointers;
+    for (const runtime::Pack& pack : packs) pointers.push_back(&pack);
+    std::vector<runtime::ShaderView> shaders;
+    for (const runtime::ShaderView& shader : properties::lightingShaders(pointers))
+        if (!only || only->count(std::string(shader.name()))) shaders.push_back(shader);
+    if (only && shaders.empty()) return kExitOk;
+    properties::PropertyOptions propertyOptions;
+    if (!options.outputPath.empty()) propertyOptions.outDir = options.outputPath;
+    properties::PropertyRunner runner(renderer, propertyOptions);
+    printHeader(out);
+    size_t failed = 0;
+    for (const runtime::ShaderView& shader : shaders) {
+        auto start = std::chrono::steady_clock::now();
+        properties::ShaderReport report = runner.check(shader);
+        double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        printRow(report, seconds, out);
+        printFailures(report, err);
+        if (!report.passed()) ++failed;
+    }
+    out << shaders.size() - failed << "/" << shaders.size()
+        << " lit shaders hold every relation; images of failures in " << propertyOptions.outDir
+        << "\n";
+    if (context.validationMessageCount() > 0) {
+        err << "varc: error: Vulkan validation reported " << context.validationMessageCount()
+            << " messages:\n"
+            << context.validationReport() << "\n";
+        return kExitFailure;
+    }
+    if (shaders.empty()) {
+        err << "varc: error: no shader with a ForwardBase pass in the packs\n";
+        return kExitFailure;
+    }
+    return failed ? kExitFailure : kExitOk;
+}
+
+}  // namespace varc::cli

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: Apache-2.0
+// PropertyScenes: the scenes the property checks draw for one lighting shader: a sphere, a cube
+// and a plane with the shader's Properties defaults, black ambient, and the lights of each type
+// the shader's ForwardAdd pass accepts (docs/PROPERTIES.md has the layout).
+#pragma once
+
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+#include "varc/reader/ShaderView.h"
+#include "varc/scene/Scene.h"
+
+namespace varc::properties {
+
+// Which lights a shader's forward passes can draw, from its ForwardAdd pass's keywords: POINT,
+// SPOT, DIRECTIONAL_COOKIE (multi_compile_fwdadd). A ForwardAdd pass without any light keyword
+// (it tells lights apart by _WorldSpaceLightPos0.w) takes directional and point lights only.
+struct LightSupport {
+    bool forwardBase = false;  // the shader has a ForwardBase pass: it is checked at all
+    bool forwardAdd = false;   // ... and a ForwardAdd pass: extra pixel lights
+    bool point = false;
+    bool spot = false;
+    bool directionalCookie = false;
+};
+LightSupport lightSupportOf(const runtime::ShaderView& shader);
+
+// An |size| x |size| scene of |shader| (materials keep the pack's Properties defaults): a
+// sphere, a cube and a plane under them, camera above and in front, black background and
+// ambient, no lights; |hdr| picks the RGBA16F target (else RGBA8 UNORM).
+scene::Scene emptyScene(const std::string& shader, bool hdr, uint32_t size);
+
+// |scene| with |lights| added.
+scene::Scene withLights(scene::Scene scene, const std::vector<scene::Light>& lights);
+
+// The lights of the checks. The key lights all reach the objects: a directional light (the
+// main light of the base pass), a second directional light, a point light and a spot light
+// (both Important, so each draws in its own ForwardAdd pass).
+scene::Light keyDirectional();
+scene::Light secondDirectional();
+scene::Light keyPoint();
+scene::Light keySpot();
+// A point (or spot) light above the cube whose range sphere reaches the cube's and the plane's
+// bounding spheres (so forward rendering draws it on them) but no surface point: a correct
+// shader attenuates it to the falloff table's last texel (LightTextures.h, ~5e-5).
+scene::Light outOfRangePoint();
+scene::Light outOfRangeSpot();
+
+// |scene| moved by the similarity p -> scale x p + offset: camera, objects and lights moved, the
+// objects' scales, the lights' ranges, directional cookie sizes and the camera's clip planes
+// multiplied by |scale|. A correct lighting shader draws the same image.
+scene::Scene similar(const scene::Scene& scene, float scale, glm::vec3 offset);
+
+// |scene| turned by |degrees| about the world y axis through the origin: camera, objects and
+// lights (positions turned, Unity Euler y angles increased: Ry(a) Ry(y) Rx(x) Rz(z) =
+// Ry(a + y) Rx(x) Rz(z)). The camera turns too, so a correct shader draws the same image.
+scene::Scene turned(const scene::Scene& scene, float degrees);
+
+}  // namespace varc::properties

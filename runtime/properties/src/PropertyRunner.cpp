@@ -1,0 +1,353 @@
+// SPDX-License-Identifier: Apache-2.0
+// PropertyRunner: one lighting shader's renders and the relations between them; the tolerances
+// are derived in docs/PROPERTIES.md.
+#include "varc/properties/PropertyRunner.h"
+
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <utility>
+
+#include "varc/image/Png.h"
+#include "varc/reader/PassView.h"
+#include "varc/properties/ImageRelations.h"
+#include "varc/properties/PropertyScenes.h"
+
+namespace varc::properties {
+
+namespace {
+
+using runtime::Image;
+
+// Half-float storage (RGBA16F) rounds to 11 significant bits: 2^-11 relative per stored value.
+constexpr float kHalfUlp = 1.0f / 2048.0f;
+// A value a correct shader leaves at zero, stored in RGBA16F: far below one 8-bit LSB (1/255).
+constexpr float kZero = 1.0f / 4096.0f;
+// A light beyond its range still adds the falloff table's last texel (~5.3e-5 x intensity 2 x a
+// BRDF <= ~2): 5e-4 bounds it; a light left unattenuated adds ~0.1..1.
+constexpr float kOutOfRange = 5.0e-4f;
+// 8-bit target (RGBA8 UNORM, values stored as round(v x 255)): a sum of three rounded renders
+// against one rounded render differs by up to 1.5 LSB; 2 LSB, saturated pixels skipped.
+constexpr float kLsb = 1.0f / 255.0f;
+// Scene moved or scaled: float32 vertex positions at |p| ~ 10 m shift rasterised edges (the 3x3
+// window absorbs a pixel) and interior values by ~1e-5; 2^-8 relative + 2^-9 absolute leaves a
+// margin over half-float storage and is far below the 50% of an unnormalised normal at scale 2.
+constexpr float kMovedRelative = 1.0f / 256.0f;
+constexpr float kMovedAbsolute = 1.0f / 512.0f;
+
+std::string fileSafe(std::string text) {
+    for (char& c : text)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_')) c = '_';
+    return text;
+}
+
+// " [variant] [variant]": the distinct variants |frame| drew, in first-draw order.
+std::string variantList(const runtime::RenderedFrame& frame) {
+    std::set<std::string> seen;
+    std::string list;
+    for (const std::string& variant : frame.variants)
+        if (seen.insert(variant).second) list += " [" + variant + "]";
+    return list;
+}
+
+// The renders of one shader, by case label, and the relations checked on them.
+class ShaderCheck {
+public:
+    ShaderCheck(runtime::Renderer& renderer, const PropertyOptions& options, ShaderReport& report)
+        : mRenderer(renderer), mOptions(options), mReport(report) {
+        for (const std::string& name : relationNames())
+            mReport.relations.push_back({name, Verdict::NotApplicable, {}});
+    }
+
+    // The frame of |scene| under |label| (drawn once); nullptr after recording a render error.
+    const runtime::RenderedFrame* render(const std::string& label, const scene::Scene& scene) {
+        auto found = mFrames.find(label);
+        if (found != mFrames.end()) return &found->second;
+        auto frame = mRenderer.render(scene);
+        if (!frame) {
+            if (mReport.error.empty()) mReport.error = label + ": " + frame.error().detail;
+            return nullptr;
+        }
+        ++mReport.renders;
+        mReport.variants.insert(frame->variants.begin(), frame->variants.end());
+        checkFinite(label, *frame);
+        return &mFrames.emplace(label, std::move(*frame)).first->second;
+    }
+
+    // Checks |relation| on case |label|: the render |actual| against sum(weight x render).
+    void relate(const std::string& relation, const std::string& label,
+                const runtime::RenderedFrame* actual,
+                const std::vector<std::pair<const runtime::RenderedFrame*, float>>& terms,
+                const Tolerance& tolerance) {
+        if (!actual) return;
+        std::vector<Term> imageTerms;
+        for (const auto& [frame, weight] : terms) {
+            if (!frame) return;
+            imageTerms.push_back({&frame->image, weight});
+        }
+        RelationCheck check = checkRelation(actual->image, imageTerms, tolerance);
+        RelationOutcome& outcome = outcomeOf(relation);
+        if (check.passed) {
+            if (outcome.verdict == Verdict::NotApplicable) outcome.verdict = Verdict::Pass;
+            return;
+        }
+        outcome.verdict = Verdict::Fail;
+        outcome.detail += label + ": " + check.summary() + "; variants:";
+        outcome.detail += variantList(*actual);
+        outcome.detail += writeImages(relation, label, actual->image, &check) + "\n";
+    }
+
+    // Checks that |lit| is brighter than |unlit| by more than 1/64 on at least 2% of its pixels:
+    // a key light in range lights the objects (so the other relations compare lit images).
+    void requireLight(const std::string& label, const runtime::RenderedFrame* lit,
+                      const runtime::RenderedFrame* unlit) {
+        if (!lit || !unlit) return;
+        const size_t pixels = size_t{lit->image.width()} * lit->image.height();
+        const size_t brighter = pixelsBrighter(lit->image, unlit->image, 1.0f / 64.0f);
+        RelationOutcome& outcome = outcomeOf("lit");
+        if (brighter * 50 >= pixels) {
+            if (outcome.verdict == Verdict::NotApplicable) outcome.verdict = Verdict::Pass;
+            return;
+        }
+        outcome.verdict = Verdict::Fail;
+        outcome.detail += label + ": only " + std::to_string(brighter) + " of " +
+                          std::to_string(pixels) +
+                          " pixels brighter than with no lights (2% "
+                          "needed); variants:";
+        outcome.detail += variantList(*lit);
+        outcome.detail += writeImages("lit", label, lit->image, nullptr) + "\n";
+    }
+
+private:
+    RelationOutcome& outcomeOf(const std::string& relation) {
+        for (RelationOutcome& outcome : mReport.relations)
+            if (outcome.relation == relation) return outcome;
+        return mReport.relations.front();
+    }
+
+    void checkFinite(const std::string& label, const runtime::RenderedFrame& frame) {
+        RelationOutcome& outcome = outcomeOf("finite");
+        NonFinite found = findNonFinite(frame.image);
+        if (found.count == 0) {
+            if (outcome.verdict == Verdict::NotApplicable) outcome.verdict = Verdict::Pass;
+            return;
+        }
+        outcome.verdict = Verdict::Fail;
+        outcome.detail += label + ": " + std::to_string(found.count) +
+                          " pixels hold NaN or Inf, first (" + std::to_string(found.firstX) + "," +
+                          std::to_string(found.firstY) + "); variants:";
+        outcome.detail += variantList(frame);
+        outcome.detail += writeImages("finite", label, frame.image, nullptr) + "\n";
+    }
+
+    // Writes <outDir>/<shader>/<relation>.<label>.{actual,expected,diff}.png; " -> <files>"
+    // or " (images not written: why)".
+    std::string writeImages(const std::string& relation, const std::string& label,
+                            const Image& actual, const RelationCheck* check) {
+        std::filesystem::path dir =
+            std::filesystem::path(mOptions.outDir) / fileSafe(mReport.shader);
+        std::error_code error;
+        std::filesystem::create_directories(dir, error);
+        if (error) return " (images not written: " + error.message() + ")";
+        std::string base = (dir / (relation + "." + fileSafe(label))).string();
+        auto shown = [](const Image& image) {
+            return image.isFloat() ? image.toRgba8(runtime::Tonemap::Reinhard) : image;
+        };
+        std::vector<std::pair<std::string, Image>> images{{base + ".actual.png", shown(actual)}};
+        if (check) {
+            images.emplace_back(base + ".expected.png", shown(check->expected));
+            images.emplace_back(base + ".diff.png", check->diff);
+        }
+        for (const auto& [path, image] : images) {
+            if (Status written = runtime::writePng(path, image); !written)
+                return " (images not written: " + written.error().detail + ")";
+        }
+        return " -> " + base + ".*.png";
+    }
+
+    runtime::Renderer& mRenderer;
+    const PropertyOptions& mOptions;
+    ShaderReport& mReport;
+    std::map<std::string, runtime::RenderedFrame> mFrames;
+};
+
+// Cookie PNGs in <outDir>/cookies: alpha 1 everywhere (white) and alpha 0 (black).
+Result<std::pair<std::string, std::string>> writeCookies(const std::string& outDir) {
+    std::filesystem::path dir = std::filesystem::path(outDir) / "cookies";
+    std::error_code error;
+    std::filesystem::create_directories(dir, error);
+    if (error) return makeError(ErrorCode::IoError, dir.string() + ": " + error.message());
+    std::pair<std::string, std::string> paths{(dir / "white.png").string(),
+                                              (dir / "black.png").string()};
+    Image white(16, 16, runtime::PixelFormat::Rgba8), black(16, 16, runtime::PixelFormat::Rgba8);
+    for (uint8_t& byte : white.bytes()) byte = 255;
+    for (size_t i = 0; i < black.bytes().size(); ++i) black.bytes()[i] = i % 4 == 3 ? 0 : 255;
+    if (Status written = runtime::writePng(paths.first, white); !written) return written.error();
+    if (Status written = runtime::writePng(paths.second, black); !written) return written.error();
+    return paths;
+}
+
+scene::Light withCookie(scene::Light light, const std::string& cookie) {
+    light.cookie = cookie;
+    light.cookieSize = 2.0f;
+    return light;
+}
+
+scene::Light brighter(scene::Light light) {
+    light.intensity *= 2.0f;
+    return light;
+}
+
+// The relations on HDR renders (and additivity_ldr on RGBA8), in relationNames() order.
+void checkRelations(ShaderCheck& c, const std::string& shader, const LightSupport& support,
+                    const std::pair<std::string, std::string>& cookies, uint32_t size) {
+    using scene::Light;
+    const scene::Scene empty = emptyScene(shader, true, size);
+    auto lit = [&](const std::vector<Light>& lights) { return withLights(empty, lights); };
+    const Light d = keyDirectional(), d2 = secondDirectional(), p = keyPoint(), s = keySpot();
+    const auto* none = c.render("no lights", empty);
+    const auto* dOnly = c.render("directional", lit({d}));
+    c.relate("dark", "no lights", none, {}, {kZero, 0, 0});
+    c.requireLight("directional", dOnly, none);
+
+    const Tolerance outOfRange{kOutOfRange, kHalfUlp, 0};
+    if (support.point)
+        c.relate("out_of_range", "point",
+                 c.render("directional + far point", lit({d, outOfRangePoint()})), {{dOnly, 1.0f}},
+                 outOfRange);
+    if (support.spot)
+        c.relate("out_of_range", "spot",
+                 c.render("directional + far spot", lit({d, outOfRangeSpot()})), {{dOnly, 1.0f}},
+                 outOfRange);
+
+    const Tolerance same{kZero, 2 * kHalfUlp, 0};
+    if (support.directionalCookie)
+        c.relate("black_cookie", "directional",
+                 c.render("directional black cookie", lit({withCookie(d, cookies.second)})),
+                 {{none, 1.0f}}, same);
+    if (support.spot)
+        c.relate("black_cookie", "spot",
+                 c.render("spot black cookie", lit({withCookie(s, cookies.second)})),
+                 {{none, 1.0f}}, same);
+    if (support.directionalCookie)
+        c.relate("white_cookie", "directional",
+                 c.render("directional white cookie", lit({withCookie(d, cookies.first)})),
+                 {{dOnly, 1.0f}}, same);
+
+    const Tolerance sum{kZero, 3 * kHalfUlp, 0};
+    const auto* pOnly = support.point ? c.render("point", lit({p})) : nullptr;
+    if (support.point) c.requireLight("point", pOnly, none);
+    if (support.spot) c.requireLight("spot", c.render("spot", lit({s})), none);
+    if (support.forwardAdd) {
+        const auto* d2Only = c.render("second directional", lit({d2}));
+        c.relate("additivity", "directional + directional",
+                 c.render("directional + second", lit({d, d2})),
+                 {{dOnly, 1.0f}, {d2Only, 1.0f}, {none, -1.0f}}, sum);
+    }
+    if (support.point)
+        c.relate("additivity", "directional + point", c.render("directional + point", lit({d, p})),
+                 {{dOnly, 1.0f}, {pOnly, 1.0f}, {none, -1.0f}}, sum);
+    if (support.point && support.spot)
+        c.relate("additivity", "point + spot", c.render("point + spot", lit({p, s})),
+                 {{pOnly, 1.0f}, {c.render("spot", lit({s})), 1.0f}, {none, -1.0f}}, sum);
+
+    if (support.forwardAdd) {
+        const scene::Scene ldr = emptyScene(shader, false, size);
+        const Light extra = support.point ? p : d2;
+        const auto* ldrNone = c.render("ldr no lights", ldr);
+        const auto* ldrD = c.render("ldr directional", withLights(ldr, {d}));
+        const auto* ldrExtra = c.render("ldr extra", withLights(ldr, {extra}));
+        c.relate("additivity_ldr", "directional + extra",
+                 c.render("ldr both", withLights(ldr, {d, extra})),
+                 {{ldrD, 1.0f}, {ldrExtra, 1.0f}, {ldrNone, -1.0f}},
+                 {2 * kLsb, 0, 0, 254.0f / 255.0f});
+    }
+
+    c.relate("intensity", "directional", c.render("directional x2", lit({brighter(d)})),
+             {{dOnly, 2.0f}, {none, -1.0f}}, sum);
+    if (support.point)
+        c.relate("intensity", "point", c.render("point x2", lit({brighter(p)})),
+                 {{pOnly, 2.0f}, {none, -1.0f}}, sum);
+
+    std::vector<Light> all{d};
+    if (support.point) all.push_back(p);
+    if (support.spot) all.push_back(s);
+    const scene::Scene allLit = lit(all);
+    const auto* allFrame = c.render("all lights", allLit);
+    const Tolerance moved{kMovedAbsolute, kMovedRelative, 1};
+    c.relate("translation", "offset (3, -2, 5)",
+             c.render("all lights moved", similar(allLit, 1.0f, {3.0f, -2.0f, 5.0f})),
+             {{allFrame, 1.0f}}, moved);
+    c.relate("rotation", "40 degrees about y", c.render("all lights turned", turned(allLit, 40.0f)),
+             {{allFrame, 1.0f}}, moved);
+    c.relate("scale", "x2", c.render("all lights scaled", similar(allLit, 2.0f, glm::vec3(0.0f))),
+             {{allFrame, 1.0f}}, moved);
+}
+
+}  // namespace
+
+const char* verdictName(Verdict verdict) {
+    switch (verdict) {
+        case Verdict::Pass:
+            return "pass";
+        case Verdict::Fail:
+            return "FAIL";
+        case Verdict::NotApplicable:
+            return "n/a";
+    }
+    return "?";
+}
+
+bool ShaderReport::passed() const {
+    if (!error.empty()) return false;
+    for (const RelationOutcome& outcome : relations)
+        if (outcome.verdict == Verdict::Fail) return false;
+    return true;
+}
+
+const std::vector<std::string>& relationNames() {
+    static const std::vector<std::string> kNames{
+        "finite",     "dark",           "lit",       "out_of_range", "black_cookie", "white_cookie",
+        "additivity", "additivity_ldr", "intensity", "translation",  "rotation",     "scale"};
+    return kNames;
+}
+
+std::vector<runtime::ShaderView> lightingShaders(const std::vector<const runtime::Pack*>& packs) {
+    std::vector<runtime::ShaderView> shaders;
+    std::set<std::string, std::less<>> seen;
+    for (const runtime::Pack* pack : packs) {
+        for (size_t i = 0; i < pack->shaderCount(); ++i) {
+            runtime::ShaderView shader = pack->shader(i);
+            if (!shader.pass("ForwardBase")) continue;
+            if (seen.insert(std::string(shader.name())).second) shaders.push_back(shader);
+        }
+    }
+    return shaders;
+}
+
+PropertyRunner::PropertyRunner(runtime::Renderer& renderer, PropertyOptions options)
+    : mRenderer(renderer), mOptions(std::move(options)) {}
+
+ShaderReport PropertyRunner::check(const runtime::ShaderView& shader) {
+    ShaderReport report;
+    report.shader = std::string(shader.name());
+    ShaderCheck check(mRenderer, mOptions, report);
+    auto cookies = writeCookies(mOptions.outDir);
+    if (!cookies) {
+        report.error = cookies.error().detail;
+        return report;
+    }
+    for (const char* lightMode : {"ForwardBase", "ForwardAdd"}) {
+        if (std::optional<runtime::PassView> pass = shader.pass(lightMode))
+            report.litVariants += pass->variantCount();
+    }
+    const LightSupport support = lightSupportOf(shader);
+    report.lights = "directional";
+    if (support.point) report.lights += " point";
+    if (support.spot) report.lights += " spot";
+    if (support.directionalCookie) report.lights += " directional-cookie";
+    checkRelations(check, report.shader, support, *cookies, mOptions.size);
+    return report;
+}
+
+}  // namespace varc::properties

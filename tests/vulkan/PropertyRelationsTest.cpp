@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: Apache-2.0
+// Property validation on lavapipe (issue #16): every lit shader of the library pack (varc's
+// library and the seed fixtures) holds every relation, and each deliberately broken copy of
+// varc/Forward (tests/properties/mutants) is caught by the relation meant to catch it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <set>
+
+#include "VulkanTestSupport.h"
+#include "varc/properties/PropertyRunner.h"
+#include "varc/render/SceneRenderer.h"
+
+namespace varc::runtime {
+namespace {
+
+using properties::Verdict;
+
+class PropertyRelationsTest : public testing::VulkanTest {
+protected:
+    // The report of every lit shader in |packName| (in VARC_TEST_PACK_DIR), by shader name.
+    std::map<std::string, properties::ShaderReport> check(const std::string& packName) {
+        std::map<std::string, properties::ShaderReport> reports;
+        auto pack = Pack::open(std::string(VARC_TEST_PACK_DIR) + "/" + packName);
+        EXPECT_TRUE(pack) << pack.error().detail;
+        if (!pack) return reports;
+        auto renderer = SceneRenderer::create(context(), {&*pack});
+        EXPECT_TRUE(renderer) << renderer.error().detail;
+        if (!renderer) return reports;
+        properties::PropertyOptions options;
+        options.outDir = (std::filesystem::temp_directory_path() / "varc-properties-test").string();
+        properties::PropertyRunner runner(*renderer, options);
+        for (const ShaderView& shader : properties::lightingShaders({&*pack}))
+            reports.emplace(std::string(shader.name()), runner.check(shader));
+        return reports;
+    }
+};
+
+// The relations that fail for |report|.
+std::set<std::string> failing(const properties::ShaderReport& report) {
+    std::set<std::string> names;
+    for (const properties::RelationOutcome& outcome : report.relations)
+        if (outcome.verdict == Verdict::Fail) names.insert(outcome.relation);
+    return names;
+}
+
+Verdict verdictOf(const properties::ShaderReport& report, const std::string& relation) {
+    for (const properties::RelationOutcome& outcome : report.relations)
+        if (outcome.relation == relation) return outcome.verdict;
+    ADD_FAILURE() << "no relation " << relation;
+    return Verdict::NotApplicable;
+}
+
+std::string detailOf(const properties::ShaderReport& report, const std::string& relation) {
+    for (const properties::RelationOutcome& outcome : report.relations)
+        if (outcome.relation == relation) return outcome.detail;
+    return "";
+}
+
+TEST_F(PropertyRelationsTest, EveryLibraryAndSeedShaderHoldsEveryRelation) {
+    auto reports = check("library.svpack");
+    for (const char* name : {"varc/Forward", "varc/SimpleDiffuse", "varc/GlslVertexLights",
+                             "Custom/My First Lighting Shader"}) {
+        ASSERT_TRUE(reports.count(name)) << name << " is not checked";
+    }
+    for (const auto& [name, report] : reports) {
+        EXPECT_TRUE(report.error.empty()) << name << ": " << report.error;
+        for (const properties::RelationOutcome& outcome : report.relations)
+            EXPECT_NE(outcome.verdict, Verdict::Fail) << name << " " << outcome.relation << ":\n"
+                                                      << outcome.detail;
+        EXPECT_GE(report.renders, 16u) << name;
+    }
+    // varc/Forward takes every light type: every relation applies and passes.
+    for (const properties::RelationOutcome& outcome : reports.at("varc/Forward").relations)
+        EXPECT_EQ(outcome.verdict, Verdict::Pass) << outcome.relation;
+    // The GLSL shader's ForwardAdd pass has no light keywords: no spots, no cookies.
+    const properties::ShaderReport& glsl = reports.at("varc/GlslVertexLights");
+    EXPECT_EQ(verdictOf(glsl, "black_cookie"), Verdict::NotApplicable);
+    EXPECT_EQ(verdictOf(glsl, "white_cookie"), Verdict::NotApplicable);
+    EXPECT_EQ(verdictOf(glsl, "out_of_range"), Verdict::Pass);
+    EXPECT_EQ(glsl.lights, "directional point");
+}
+
+TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
+    auto reports = check("mutants.svpack");
+    // Each mutant and the relations that must catch it (docs/PROPERTIES.md).
+    const std::map<std::string, std::set<std::string>> expected{
+        {"varc-mutants/NoAttenuation", {"out_of_range", "black_cookie"}},
+        {"varc-mutants/WrongBlend", {"additivity", "additivity_ldr"}},
+        {"varc-mutants/CookieIgnored", {"black_cookie"}},
+        {"varc-mutants/UnnormalisedNormal", {"scale"}},
+        {"varc-mutants/NanSpot", {"finite"}},
+    };
+    ASSERT_EQ(reports.size(), expected.size() + 1) << "the mutants and the control";
+    const properties::ShaderReport& control = reports.at("varc-mutants/Control");
+    EXPECT_TRUE(control.passed()) << "the unmodified copy must hold every relation";
+    for (const properties::RelationOutcome& outcome : control.relations)
+        EXPECT_EQ(outcome.verdict, Verdict::Pass) << outcome.relation << ":\n" << outcome.detail;
+    for (const auto& [name, catchers] : expected) {
+        ASSERT_TRUE(reports.count(name)) << name;
+        const properties::ShaderReport& report = reports.at(name);
+        EXPECT_TRUE(report.error.empty()) << name << ": " << report.error;
+        std::set<std::string> failed = failing(report);
+        for (const std::string& relation : catchers)
+            EXPECT_TRUE(failed.count(relation)) << name << " is not caught by " << relation;
+    }
+    // The narrow mutants break nothing else: the relations are specific, not noisy.
+    EXPECT_EQ(failing(reports.at("varc-mutants/CookieIgnored")),
+              (std::set<std::string>{"black_cookie"}));
+    EXPECT_EQ(failing(reports.at("varc-mutants/UnnormalisedNormal")),
+              (std::set<std::string>{"scale"}));
+    // The failure names the case, the variant and the worst pixels.
+    const std::string detail = detailOf(reports.at("varc-mutants/CookieIgnored"), "black_cookie");
+    EXPECT_NE(detail.find("directional:"), std::string::npos) << detail;
+    EXPECT_NE(detail.find("{DIRECTIONAL_COOKIE}"), std::string::npos) << detail;
+    EXPECT_NE(detail.find("expected 0 got"), std::string::npos) << detail;
+}
+
+}  // namespace
+}  // namespace varc::runtime
