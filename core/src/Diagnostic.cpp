@@ -6,6 +6,15 @@
 
 namespace varc {
 
+const char* severityName(Severity severity) {
+    switch (severity) {
+        case Severity::Note: return "note";
+        case Severity::Warning: return "warning";
+        case Severity::Error: return "error";
+    }
+    return "error";
+}
+
 size_t DiagnosticList::errorCount() const {
     return static_cast<size_t>(std::count_if(mDiagnostics.begin(), mDiagnostics.end(),
                                              [](const Diagnostic& d) {

@@ -9,15 +9,6 @@ namespace varc::cli {
 
 namespace {
 
-const char* severityName(Severity severity) {
-    switch (severity) {
-        case Severity::Note: return "note";
-        case Severity::Warning: return "warning";
-        case Severity::Error: return "error";
-    }
-    return "error";
-}
-
 void printHeader(SourceLocation location, Severity severity, const std::string& message,
                  const includes::SourceMap& sourceMap, std::ostream& err) {
     if (location.isKnown()) {

@@ -11,15 +11,6 @@ namespace varc::cli {
 
 namespace {
 
-const char* severityName(Severity severity) {
-    switch (severity) {
-        case Severity::Note: return "note";
-        case Severity::Warning: return "warning";
-        case Severity::Error: return "error";
-    }
-    return "error";
-}
-
 // "file", "line", "column" of |location| into |object|.
 void addLocation(SourceLocation location, const includes::SourceMap& sourceMap,
                  nlohmann::ordered_json& object) {

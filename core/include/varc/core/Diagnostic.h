@@ -11,6 +11,9 @@ namespace varc {
 
 enum class Severity { Note, Warning, Error };
 
+// "note", "warning" or "error", as compilers print it.
+const char* severityName(Severity severity);
+
 // A note attached to a diagnostic, e.g. "in file included from a.shader:12:1".
 struct DiagnosticNote {
     SourceLocation location;
