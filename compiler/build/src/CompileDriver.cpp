@@ -89,6 +89,10 @@ public:
         return mCache ? mCache->chain().warnings() : std::vector<std::string>{};
     }
     size_t cachedStageSources() const { return mCachedStageSources; }
+    // Writes the shared cache's hits to the local levels in one batch (CacheChain).
+    void flushCacheWriteBacks() const {
+        if (mCache) mCache->chain().flushWriteBacks();
+    }
 
 private:
     bool internChunk(size_t jobIndex, size_t firstItem, size_t count);
@@ -501,6 +505,7 @@ std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shader
     bool ok = builder.plan(shaders, sink);
     if (ok || options.keepGoing) ok = builder.internSources() && ok;
     if (ok || options.keepGoing) ok = builder.compileSources() && ok;
+    builder.flushCacheWriteBacks();
     builder.flushDiagnostics(sink);
     if (!builder.cacheError().empty()) {
         sink.warning({}, "the program cache is not updated: " + builder.cacheError());

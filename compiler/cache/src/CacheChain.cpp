@@ -4,7 +4,20 @@
 namespace varc::cache {
 
 CacheChain::CacheChain(std::vector<std::unique_ptr<CacheStorage>> levels)
-    : mLevels(std::move(levels)) {}
+    : mLevels(std::move(levels)), mPending(std::make_unique<PendingWriteBacks>()) {
+    mPending->byLevel.resize(mLevels.size());
+}
+
+CacheChain::~CacheChain() { flushWriteBacks(); }
+
+CacheChain& CacheChain::operator=(CacheChain&& other) noexcept {
+    if (this != &other) {
+        flushWriteBacks();
+        mLevels = std::move(other.mLevels);
+        mPending = std::move(other.mPending);
+    }
+    return *this;
+}
 
 std::optional<std::string> CacheChain::get(std::string_view key,
                                            const std::function<bool(std::string_view)>& accept) {
@@ -47,8 +60,30 @@ std::vector<std::optional<std::string>> CacheChain::getMany(
 
 void CacheChain::writeBack(size_t level, std::string_view key, std::string_view value) {
     // A hit in a shared level fills the local ones, so the next build finds it locally.
-    for (size_t j = 0; j < level; ++j) {
-        if (!mLevels[j]->readOnly() && !mLevels[j]->failed()) (void)mLevels[j]->put(key, value);
+    bool full = false;
+    {
+        std::lock_guard<std::mutex> lock(mPending->mutex);
+        for (size_t j = 0; j < level; ++j) {
+            if (mLevels[j]->readOnly() || mLevels[j]->failed()) continue;
+            mPending->byLevel[j].push_back({std::string(key), std::string(value)});
+            mPending->bytes += key.size() + value.size();
+        }
+        full = mPending->bytes > kMaxPendingBytes;
+    }
+    if (full) flushWriteBacks();
+}
+
+void CacheChain::flushWriteBacks() {
+    if (!mPending) return;  // moved from
+    std::vector<std::vector<CacheEntry>> byLevel(mLevels.size());
+    {
+        std::lock_guard<std::mutex> lock(mPending->mutex);
+        std::swap(byLevel, mPending->byLevel);
+        mPending->byLevel.resize(mLevels.size());
+        mPending->bytes = 0;
+    }
+    for (size_t j = 0; j < byLevel.size(); ++j) {
+        if (!byLevel[j].empty() && !mLevels[j]->failed()) (void)mLevels[j]->putMany(byLevel[j]);
     }
 }
 

@@ -11,6 +11,15 @@ std::vector<std::optional<std::string>> CacheStorage::getMany(
     return values;
 }
 
+Status CacheStorage::putMany(const std::vector<CacheEntry>& entries) {
+    Status first = Ok{};
+    for (const CacheEntry& entry : entries) {
+        Status stored = put(entry.key, entry.value);
+        if (!stored && first) first = std::move(stored);
+    }
+    return first;
+}
+
 std::string CacheStorage::failure() const {
     std::lock_guard<std::mutex> lock(mFailureMutex);
     return mFailure;

@@ -27,8 +27,13 @@ public:
     Status put(std::string_view key, std::string_view value) override {
         if (failed()) return Ok{};
         values[std::string(key)] = value;
+        if (mirror) (*mirror)[std::string(key)] = value;
         countWrite(value.size());
         return Ok{};
+    }
+    Status putMany(const std::vector<CacheEntry>& entries) override {
+        ++putManyCalls;
+        return CacheStorage::putMany(entries);
     }
     Result<CacheUsage> usage() override { return CacheUsage{values.size(), 0}; }
     Result<uint64_t> clear() override {
@@ -39,6 +44,8 @@ public:
     std::map<std::string, std::string> values;
     bool breakOnUse = false;
     int gets = 0;
+    int putManyCalls = 0;
+    std::map<std::string, std::string>* mirror = nullptr;  // also gets every put
 };
 
 struct Chain {
@@ -71,6 +78,8 @@ TEST(CacheChainTest, ASharedHitIsWrittenBackToTheLocalLevel) {
     Chain c = makeChain();
     c.shared->values["k"] = "value";
     EXPECT_EQ(c.chain.get("k", acceptAll), "value");
+    EXPECT_EQ(c.local->values.count("k"), 0u) << "write-backs wait for the flush";
+    c.chain.flushWriteBacks();
     EXPECT_EQ(c.local->values["k"], "value");
     std::vector<CacheLevelStats> stats = c.chain.stats();
     EXPECT_EQ(stats[0].misses, 1u);
@@ -90,11 +99,44 @@ TEST(CacheChainTest, ADamagedValueIsAMissAndTheNextLevelIsTried) {
     auto accept = [](std::string_view v) { return v == "value"; };
     EXPECT_EQ(c.chain.get("k", accept), "value");
     EXPECT_EQ(c.chain.stats()[0].damaged, 1u);
+    c.chain.flushWriteBacks();
     EXPECT_EQ(c.local->values["k"], "value") << "the sound value replaces the damaged one";
     c.shared->values["j"] = "garbage";
     EXPECT_EQ(c.chain.get("j", accept), std::nullopt);
+    c.chain.flushWriteBacks();
     EXPECT_EQ(c.chain.stats()[1].damaged, 1u);
     EXPECT_EQ(c.local->values.count("j"), 0u) << "a damaged value is never written back";
+}
+
+TEST(CacheChainTest, WriteBacksAreWrittenInOneBatchPerLevel) {
+    Chain c = makeChain();
+    std::vector<std::string> keys;
+    for (int i = 0; i < 40; ++i) {
+        keys.push_back("k" + std::to_string(i));
+        c.shared->values[keys.back()] = "v" + std::to_string(i);
+    }
+    // Lookups in several calls, as a build makes them chunk by chunk.
+    c.chain.getMany({keys.begin(), keys.begin() + 20}, [](size_t, std::string_view) { return true; });
+    c.chain.getMany({keys.begin() + 20, keys.end()}, [](size_t, std::string_view) { return true; });
+    EXPECT_TRUE(c.local->values.empty());
+    c.chain.flushWriteBacks();
+    EXPECT_EQ(c.local->putManyCalls, 1);
+    EXPECT_EQ(c.local->values.size(), 40u);
+    EXPECT_EQ(c.local->values["k39"], "v39");
+    c.chain.flushWriteBacks();
+    EXPECT_EQ(c.local->putManyCalls, 1) << "nothing left to write";
+}
+
+TEST(CacheChainTest, TheChainWritesBackWhatIsLeftWhenItGoes) {
+    std::map<std::string, std::string> written;  // outlives the chain and its levels
+    {
+        Chain c = makeChain();
+        c.local->mirror = &written;
+        c.shared->values["k"] = "value";
+        EXPECT_EQ(c.chain.get("k", acceptAll), "value");
+        EXPECT_TRUE(written.empty());
+    }
+    EXPECT_EQ(written["k"], "value");
 }
 
 TEST(CacheChainTest, AFailedLevelIsSkippedWithOneWarning) {

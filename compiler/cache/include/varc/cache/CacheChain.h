@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // CacheChain: the cache levels of a build in order (local first, then shared). A get tries each
 // level until one holds a value the caller accepts, and writes a hit from a later level back to
-// the earlier ones; a put goes to every writable level. A level that fails is skipped for the
+// the earlier ones; a put goes to every writable level. Write-backs are kept and written
+// together by flushWriteBacks() (the end of a build, or the chain's destruction), so a local
+// folder filled from a shared level gets one bundle instead of thousands of files. A level that fails is skipped for the
 // rest of the run and yields one warning (warnings()); the build goes on with the others.
 #pragma once
 
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,6 +24,9 @@ namespace varc::cache {
 class CacheChain {
 public:
     explicit CacheChain(std::vector<std::unique_ptr<CacheStorage>> levels);
+    ~CacheChain();
+    CacheChain(CacheChain&& other) noexcept = default;
+    CacheChain& operator=(CacheChain&& other) noexcept;
 
     // Opens a level per spec (nothing is connected yet: a remote connects on first use).
     static CacheChain open(const std::vector<CacheSpec>& specs);
@@ -44,13 +50,28 @@ public:
     std::vector<std::string> warnings() const;
 
     std::vector<CacheLevelStats> stats() const;
+
+    // Writes the hits kept for write-back to their levels (one putMany per level) and forgets
+    // them. Errors are not returned: a write-back that fails leaves a local miss next time.
+    // Thread-safe; called by the build when its lookups are done, and by the destructor.
+    void flushWriteBacks();
+
     const std::vector<std::unique_ptr<CacheStorage>>& levels() const { return mLevels; }
 
 private:
-    // Writes a hit in |level| to the writable levels before it.
+    // Keeps a hit in |level| for the writable levels before it.
     void writeBack(size_t level, std::string_view key, std::string_view value);
 
+    // Kept write-backs are flushed early past this size, so memory stays bounded.
+    static constexpr size_t kMaxPendingBytes = size_t{256} << 20;
+    struct PendingWriteBacks {
+        std::mutex mutex;
+        std::vector<std::vector<CacheEntry>> byLevel;  // one list per level
+        size_t bytes = 0;
+    };
+
     std::vector<std::unique_ptr<CacheStorage>> mLevels;
+    std::unique_ptr<PendingWriteBacks> mPending;
 };
 
 }  // namespace varc::cache

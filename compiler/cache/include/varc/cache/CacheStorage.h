@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "varc/cache/CacheBundle.h"
 #include "varc/core/Result.h"
 
 namespace varc::cache {
@@ -56,6 +57,9 @@ public:
     // error is returned (the caller warns that the cache is not updated); a remote's is counted,
     // noted in failure() and not returned.
     virtual Status put(std::string_view key, std::string_view value) = 0;
+
+    // put() of every entry; a local folder writes many in one file. Returns the first error.
+    virtual Status putMany(const std::vector<CacheEntry>& entries);
 
     // How many entries and bytes the level holds; an error names the level and the reason.
     virtual Result<CacheUsage> usage() = 0;
