@@ -23,54 +23,23 @@
 #include "varc/core/Diagnostic.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
+#include "BenchInputs.h"
 
 namespace varc {
 namespace {
 
-// The inputs, loaded once: loading is not what these benchmarks measure.
-struct Inputs {
-    includes::DiskFileSystem fileSystem;
-    includes::SourceMap sourceMap;
-    std::vector<compiler::LoadedShader> shaders;
-    uint64_t variants = 0;
-    bool ok = true;
-};
-
-std::vector<std::string> shaderFiles() {
-    std::vector<std::string> roots = {VARC_SOURCE_DIR "/../shared/fixtures",
-                                      VARC_SOURCE_DIR "/shaders"};
-    std::vector<std::string> files;
-    for (const std::string& root : roots) {
-        if (!std::filesystem::is_directory(root)) continue;
-        for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
-            if (entry.path().extension() == ".shader") files.push_back(entry.path().string());
-        }
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-Inputs& inputs() {
-    static Inputs* loaded = [] {
-        auto* in = new Inputs;
-        includes::IncludeOptions options;
-        options.builtinDir = VARC_SOURCE_DIR "/shaders/builtin";
-        DiagnosticList diagnostics;
-        for (const std::string& file : shaderFiles()) {
-            auto shader =
-                compiler::loadShader(file, in->fileSystem, in->sourceMap, options, diagnostics);
-            if (!shader) continue;
-            in->variants += shader->variantCount();
-            in->shaders.push_back(std::move(*shader));
-        }
-        in->ok = !diagnostics.hasErrors() && !in->shaders.empty();
+// The fixtures and the library, loaded once: loading is not what these benchmarks measure.
+bench::BenchInputs& inputs() {
+    static bench::BenchInputs* loaded = [] {
+        auto* in = new bench::BenchInputs;
+        bench::addLibraryAndFixtures(*in);
         return in;
     }();
     return *loaded;
 }
 
 void BM_VarcBuild(benchmark::State& state) {
-    Inputs& in = inputs();
+    bench::BenchInputs& in = inputs();
     if (!in.ok) return state.SkipWithError("inputs failed to load");
     compiler::BuildOptions options;
     options.jobs = static_cast<unsigned>(state.range(0));
@@ -129,7 +98,7 @@ bool compileWithValidator(const compiler::LoadedPass& pass,
 // changed. One untimed build fills the cache; the timed ones read every pruned source and
 // compiled program back instead of preprocessing and compiling.
 void BM_VarcBuildWarmCache(benchmark::State& state) {
-    Inputs& in = inputs();
+    bench::BenchInputs& in = inputs();
     if (!in.ok) return state.SkipWithError("inputs failed to load");
     compiler::BuildOptions options;
     options.jobs = static_cast<unsigned>(state.range(0));
@@ -159,7 +128,7 @@ BENCHMARK(BM_VarcBuildWarmCache)
     ->UseRealTime();
 
 void BM_GlslangValidatorPerVariant(benchmark::State& state) {
-    Inputs& in = inputs();
+    bench::BenchInputs& in = inputs();
     if (!in.ok) return state.SkipWithError("inputs failed to load");
     std::string dir =
         std::filesystem::temp_directory_path() / ("varc-bench-" + std::to_string(::getpid()));

@@ -1,65 +1,57 @@
 // SPDX-License-Identifier: Apache-2.0
-// The shared program cache (#12) on the library + fixtures, in one run: a cold build (empty local
-// folder and empty Redis; every program compiled and stored in both), a build with a warm local
-// folder, and a build with a warm Redis only (a fresh local folder, as a second developer, a CI
-// job or a build farm machine sees it). Target: the warm-Redis build compiles nothing and is at
-// least 20x faster than cold. Starts its own redis-server on a free loopback port.
-// Run from anywhere: ./build/bench/varc_bench_cache. Results go in docs/PERFORMANCE.md.
+// The shared program cache and sharded builds (#12), in one run, on two input sets: the library
+// + fixtures, and the library + fixtures + the compatibility corpus (its shaders that build with
+// passes of at most 2000 variants). Lines per set:
+//   kind 0: cold (empty local folder and empty Redis; every program compiled and stored in both);
+//   kind 1: a warm local folder;
+//   kind 2: a warm Redis only: a fresh local folder, as a second developer, a CI job or a build
+//           farm machine sees it (every hit written back to the folder, in one bundle);
+//   kind 3: a warm Redis as the only level (what Redis itself costs, without the write-back);
+//   kind 4: a 2-shard build merged, no cache: the time is the slower shard (compile, assemble,
+//           write its partial pack) plus the merge (decode both parts, join, write the pack),
+//           as two machines and one merge step would take; counters give each part.
+// Target: the warm-Redis build compiles nothing and is at least 20x faster than cold. Starts its
+// own redis-server on a free loopback port. Run: ./build/bench/varc_bench_cache. Results go in
+// docs/PERFORMANCE.md.
 #include <benchmark/benchmark.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "BenchInputs.h"
 #include "varc/build/CompileDriver.h"
+#include "varc/build/PackAssembler.h"
+#include "varc/build/PackMerge.h"
 #include "varc/cache/CacheChain.h"
 #include "varc/core/Diagnostic.h"
-#include "varc/frontend/ShaderLoader.h"
-#include "varc/includes/FileSystem.h"
+#include "varc/includes/SourcePathMap.h"
+#include "varc/pack/PartialPack.h"
+#include "varc/packwriter/PackWriter.h"
+#include "varc/reader/Pack.h"
+#include "varc/reader/PackDecoder.h"
 
 namespace varc {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Inputs {
-    includes::DiskFileSystem fileSystem;
-    includes::SourceMap sourceMap;
-    std::vector<compiler::LoadedShader> shaders;
-    bool ok = true;
-};
-
-// The fixtures and the shader library, loaded once: loading is not what is measured.
-Inputs& inputs() {
-    static Inputs* loaded = [] {
-        auto* in = new Inputs;
-        std::vector<std::string> files;
-        for (const char* root :
-             {VARC_SOURCE_DIR "/../shared/fixtures", VARC_SOURCE_DIR "/shaders"}) {
-            if (!fs::is_directory(root)) continue;
-            for (const auto& entry : fs::recursive_directory_iterator(root)) {
-                if (entry.path().extension() == ".shader") files.push_back(entry.path().string());
-            }
-        }
-        std::sort(files.begin(), files.end());
-        includes::IncludeOptions options;
-        options.builtinDir = VARC_SOURCE_DIR "/shaders/builtin";
-        DiagnosticList diagnostics;
-        for (const std::string& file : files) {
-            auto shader =
-                compiler::loadShader(file, in->fileSystem, in->sourceMap, options, diagnostics);
-            if (shader) in->shaders.push_back(std::move(*shader));
-        }
-        in->ok = !diagnostics.hasErrors() && !in->shaders.empty();
-        return in;
-    }();
-    return *loaded;
+// Input set 0: the fixtures and the library; 1: those and the corpus. Loaded once each.
+bench::BenchInputs& inputs(int set) {
+    static bench::BenchInputs* sets[2] = {};
+    if (!sets[set]) {
+        sets[set] = new bench::BenchInputs;
+        bench::addLibraryAndFixtures(*sets[set]);
+        if (set == 1) bench::addBuildableCorpus(*sets[set], 2000, 2);
+    }
+    return *sets[set];
 }
 
 // A redis-server of its own on a free loopback port, stopped at exit.
@@ -120,8 +112,8 @@ void emptyCaches(const std::string& local) {
     (void)chain("")->levels()[0]->clear();
 }
 
-std::optional<compiler::BuildOutput> build(const std::string& local, unsigned jobs) {
-    Inputs& in = inputs();
+std::optional<compiler::BuildOutput> build(int set, const std::string& local, unsigned jobs) {
+    bench::BenchInputs& in = inputs(set);
     compiler::BuildOptions options;
     options.jobs = jobs;
     options.cache = chain(local);
@@ -134,41 +126,119 @@ void report(benchmark::State& state, const compiler::BuildOutput& output) {
     state.counters["modules"] = static_cast<double>(output.programs.size());
 }
 
-// Kind 0: cold (both levels emptied before each build); 1: warm local folder; 2: warm Redis,
-// fresh local folder before each build (every hit written back to it); 3: warm Redis as the only
-// level (what Redis itself costs, without the write-back).
+// Kinds 0-3 (see the top of the file), on input set |set|.
 void BM_CacheBuild(benchmark::State& state) {
-    if (!inputs().ok) return state.SkipWithError("inputs failed to load");
-    if (!redis().ok) return state.SkipWithError("redis-server did not start");
     const int kind = static_cast<int>(state.range(0));
-    const unsigned jobs = static_cast<unsigned>(state.range(1));
+    const int set = static_cast<int>(state.range(1));
+    const unsigned jobs = static_cast<unsigned>(state.range(2));
+    if (!inputs(set).ok) return state.SkipWithError("inputs failed to load");
+    if (!redis().ok) return state.SkipWithError("redis-server did not start");
     const std::string local = localDir("cache-local"), fresh = localDir("cache-fresh");
     emptyCaches(local);
-    if (kind != 0 && !build(local, jobs)) return state.SkipWithError("filling build failed");
+    if (kind != 0 && !build(set, local, jobs)) return state.SkipWithError("filling build failed");
     std::optional<compiler::BuildOutput> output;
     for (auto _ : state) {
         state.PauseTiming();
         if (kind == 0) emptyCaches(local);
         if (kind == 2) fs::remove_all(fresh);
         state.ResumeTiming();
-        output = build(kind == 2 ? fresh : kind == 3 ? "" : local, jobs);
+        output = build(set, kind == 2 ? fresh : kind == 3 ? "" : local, jobs);
         if (!output) return state.SkipWithError("build failed");
     }
     report(state, *output);
+    state.counters["shaders"] = static_cast<double>(inputs(set).shaders.size());
     if (kind != 0 && output->compiledSources != output->cachedSources)
         state.SkipWithError("a warm build compiled programs");
     fs::remove_all(local);
     fs::remove_all(fresh);
 }
 BENCHMARK(BM_CacheBuild)
-    ->ArgNames({"kind", "jobs"})
-    ->Args({0, 2})
-    ->Args({1, 2})
-    ->Args({2, 2})
-    ->Args({3, 2})
+    ->ArgNames({"kind", "set", "jobs"})
+    ->ArgsProduct({{0, 1, 2, 3}, {0}, {2}})
     ->Iterations(5)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK(BM_CacheBuild)
+    ->ArgNames({"kind", "set", "jobs"})
+    ->ArgsProduct({{0, 1, 2, 3}, {1}, {2}})
+    ->Iterations(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Shard |index| of 2 built without a cache and written as a partial pack (as `varc build
+// --shard`): the pack's bytes, or "" when the build fails.
+std::string buildPart(int set, uint32_t index, unsigned jobs) {
+    bench::BenchInputs& in = inputs(set);
+    compiler::BuildOptions options;
+    options.jobs = jobs;
+    options.shard = {index, 2};
+    DiagnosticList diagnostics;
+    std::optional<compiler::BuildOutput> output =
+        compiler::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
+    if (!output) return "";
+    std::optional<pack::PackContents> contents = compiler::assemblePack(
+        in.shaders, *output, in.sourceMap, includes::SourcePathMap(), "bench", diagnostics);
+    if (!contents) return "";
+    const compiler::PackWriteOptions write;
+    contents->toolchain.push_back({std::string(pack::kShardTool),
+                                   options.shard.text() + " level=" +
+                                       std::to_string(write.compressionLevel)});
+    return compiler::serializePack(*contents, write);
+}
+
+// The merge step of `varc merge`: both parts decoded, joined and written as one pack.
+bool mergeParts(const std::string& first, const std::string& second) {
+    std::vector<compiler::PartialPackInput> parts;
+    runtime::OpenOptions open;
+    open.acceptPartial = true;
+    for (const std::string* bytes : {&first, &second}) {
+        Result<runtime::Pack> part = runtime::Pack::fromBytes(std::string_view(*bytes), open);
+        if (!part) return false;
+        Result<pack::PackContents> contents = runtime::decodePack(*part);
+        if (!contents) return false;
+        parts.push_back({"part", std::move(*contents)});
+    }
+    Result<compiler::MergedPack> merged = compiler::mergePartialPacks(std::move(parts));
+    if (!merged || !merged->errors.empty()) return false;
+    compiler::PackWriteOptions write;
+    write.compressionLevel = merged->compressionLevel;
+    return !compiler::serializePack(merged->contents, write).empty();
+}
+
+// Kind 4: two shards and the merge; the time is the slower shard plus the merge.
+void BM_ShardedBuild(benchmark::State& state) {
+    const int set = static_cast<int>(state.range(0));
+    const unsigned jobs = static_cast<unsigned>(state.range(1));
+    if (!inputs(set).ok) return state.SkipWithError("inputs failed to load");
+    double shard1 = 0, shard2 = 0, merge = 0;
+    for (auto _ : state) {
+        auto start = std::chrono::steady_clock::now();
+        std::string first = buildPart(set, 1, jobs);
+        shard1 = secondsSince(start);
+        start = std::chrono::steady_clock::now();
+        std::string second = buildPart(set, 2, jobs);
+        shard2 = secondsSince(start);
+        if (first.empty() || second.empty()) return state.SkipWithError("a shard failed");
+        start = std::chrono::steady_clock::now();
+        if (!mergeParts(first, second)) return state.SkipWithError("the merge failed");
+        merge = secondsSince(start);
+        state.SetIterationTime(std::max(shard1, shard2) + merge);
+    }
+    state.counters["shard1_ms"] = shard1 * 1000;
+    state.counters["shard2_ms"] = shard2 * 1000;
+    state.counters["merge_ms"] = merge * 1000;
+}
+BENCHMARK(BM_ShardedBuild)
+    ->ArgNames({"set", "jobs"})
+    ->Args({0, 2})
+    ->Args({1, 2})
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime();
 
 }  // namespace
 }  // namespace varc

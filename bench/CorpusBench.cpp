@@ -27,70 +27,25 @@
 #include "varc/core/Diagnostic.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
+#include "BenchInputs.h"
 
 namespace varc {
 namespace {
 
-constexpr const char* kCorpus = VARC_SOURCE_DIR "/../shared/compat";
-
 // The corpus shaders varc builds (those it refuses are in docs/COMPATIBILITY.md), loaded once.
-struct Corpus {
-    includes::DiskFileSystem fileSystem;
-    includes::SourceMap sourceMap;
-    std::vector<compiler::LoadedShader> shaders;
-    uint64_t variants = 0;
-    size_t files = 0;
-};
-
-std::vector<std::string> corpusFiles() {
-    std::vector<std::string> files;
-    if (!std::filesystem::is_directory(kCorpus)) return files;
-    for (const auto& entry : std::filesystem::recursive_directory_iterator(kCorpus)) {
-        std::string path = entry.path().string();
-        if (entry.path().extension() == ".shader" && path.find("/compat/surface/") == std::string::npos) {
-            files.push_back(path);
-        }
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
-// The repository folder of a corpus file: the include root the corpus test uses.
-std::string repositoryOf(const std::string& file) {
-    std::string rest = file.substr(std::string(kCorpus).size() + 1);
-    return std::string(kCorpus) + "/" + rest.substr(0, rest.find('/'));
-}
-
-Corpus& corpus() {
-    static Corpus* loaded = [] {
-        auto* in = new Corpus;
-        for (const std::string& file : corpusFiles()) {
-            includes::IncludeOptions options;
-            options.builtinDir = VARC_SOURCE_DIR "/shaders/builtin";
-            options.includeDirs = {repositoryOf(file)};
-            DiagnosticList diagnostics;
-            auto shader = compiler::loadShader(file, in->fileSystem, in->sourceMap, options,
-                                               diagnostics);
-            if (!shader) continue;
-            std::vector<compiler::LoadedShader> one;
-            one.push_back(std::move(*shader));
-            compiler::BuildOptions build;
-            build.jobs = 2;
-            // Passes of at most 2000 variants (as the sanitizer job's corpus run): the few larger
-            // ones (MToon's 98 862) would make the glslangValidator side run for hours.
-            build.maxVariantsPerPass = 2000;
-            if (!compiler::buildPrograms(one, in->sourceMap, build, diagnostics)) continue;
-            in->variants += one.front().variantCount();
-            in->shaders.push_back(std::move(one.front()));
-            ++in->files;
-        }
+// Passes of at most 2000 variants (as the sanitizer job's corpus run): the few larger ones
+// (MToon's 98 862) would make the glslangValidator side run for hours.
+bench::BenchInputs& corpus() {
+    static bench::BenchInputs* loaded = [] {
+        auto* in = new bench::BenchInputs;
+        bench::addBuildableCorpus(*in, 2000, 2);
         return in;
     }();
     return *loaded;
 }
 
 void BM_VarcCorpusBuild(benchmark::State& state) {
-    Corpus& in = corpus();
+    bench::BenchInputs& in = corpus();
     if (in.shaders.empty()) return state.SkipWithError("no corpus (../shared/compat) shader built");
     compiler::BuildOptions options;
     options.jobs = static_cast<unsigned>(state.range(0));
@@ -100,7 +55,7 @@ void BM_VarcCorpusBuild(benchmark::State& state) {
         output = compiler::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
         if (!output) return state.SkipWithError("build failed");
     }
-    state.counters["files"] = static_cast<double>(in.files);
+    state.counters["files"] = static_cast<double>(in.corpusFiles);
     state.counters["variants"] = static_cast<double>(in.variants);
     state.counters["distinct"] = static_cast<double>(output->compiledSources);
     state.counters["modules"] = static_cast<double>(output->programs.size());
@@ -161,7 +116,7 @@ void collectPrograms(const compiler::LoadedPass& pass, std::set<ValidatorProgram
 }
 
 void BM_GlslangValidatorPerDistinctProgram(benchmark::State& state) {
-    Corpus& in = corpus();
+    bench::BenchInputs& in = corpus();
     if (in.shaders.empty()) return state.SkipWithError("no corpus (../shared/compat) shader built");
     std::set<ValidatorProgram> programs;
     for (const compiler::LoadedShader& shader : in.shaders) {
