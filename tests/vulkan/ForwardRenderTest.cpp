@@ -241,3 +241,98 @@ TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
 
 }  // namespace
 }  // namespace varc::runtime
+
+namespace varc::runtime {
+namespace {
+
+// A forward renderer over the helper pack (tests/vulkan/helpers): Test/LightmapProbe outputs the
+// lightmaps its ForwardBase draw sampled.
+class LightmapBindingTest : public testing::VulkanTest {
+protected:
+    void SetUp() override {
+        VulkanTest::SetUp();
+        if (HasFatalFailure()) return;
+        auto pack = Pack::open(VARC_TEST_PACK_DIR "/helpers.svpack");
+        ASSERT_TRUE(pack) << pack.error().detail;
+        mPack.emplace(std::move(*pack));
+        auto renderer = ForwardRenderer::create(context(), {&*mPack});
+        ASSERT_TRUE(renderer) << renderer.error().detail;
+        mRenderer.emplace(std::move(*renderer));
+    }
+    void TearDown() override {
+        mRenderer.reset();
+        mPack.reset();
+        VulkanTest::TearDown();
+    }
+
+    // The centre pixel of one lightmap-probe sphere facing the camera (its normal there is -z),
+    // and the variant its ForwardBase draw used.
+    std::pair<glm::vec4, std::string> centre(const scene::Scene& scene) {
+        RenderedFrame frame = frameOf(mRenderer->render(scene));
+        if (frame.image.width() == 0 || frame.variants.empty()) {
+            ADD_FAILURE() << "nothing rendered";
+            return {};
+        }
+        const auto c = frame.image.pixelFloat(scene.camera.width / 2, scene.camera.height / 2);
+        return {glm::vec4(c[0], c[1], c[2], c[3]), frame.variants.front()};
+    }
+
+    static scene::Scene probeScene(std::optional<scene::Lightmap> lightmap,
+                                   scene::MixedLightingMode mode) {
+        scene::Scene scene = oneSphere();
+        scene.objects[0].material = {"Test/LightmapProbe", {}, ""};
+        scene.objects[0].lightmap = std::move(lightmap);
+        scene.mixedLighting = mode;
+        return scene;
+    }
+
+    std::optional<Pack> mPack;
+    std::optional<ForwardRenderer> mRenderer;
+};
+
+void expectNear(const glm::vec4& actual, const glm::vec4& expected) {
+    for (int c = 0; c < 4; ++c) {
+        EXPECT_NEAR(actual[c], expected[c], 2e-3f + 2e-3f * std::abs(expected[c]))
+            << "channel " << c;
+    }
+}
+
+TEST_F(LightmapBindingTest, BakedLightmapIsBoundFullHdr) {
+    scene::Lightmap lightmap;
+    lightmap.baked = glm::vec3(1.5f, 0.5f, 0.25f);
+    lightmap.scaleOffset = glm::vec4(0.5f, 0.5f, 0.25f, 0.25f);
+    auto [pixel, variant] = centre(probeScene(lightmap, scene::MixedLightingMode::BakedIndirect));
+    expectNear(pixel, glm::vec4(1.5f, 0.5f, 0.25f, 1.0f));
+    EXPECT_NE(variant.find("LIGHTMAP_ON"), std::string::npos) << variant;
+    EXPECT_EQ(variant.find("SHADOWMASK"), std::string::npos) << variant;
+}
+
+TEST_F(LightmapBindingTest, DirectionalRealtimeAndShadowmaskAreBound) {
+    scene::Lightmap lightmap;
+    lightmap.baked = glm::vec3(0.5f, 0.25f, 0.125f);
+    lightmap.realtime = glm::vec3(0.25f);
+    // Towards the camera, rebalancing 0.5: the half-Lambert term is 1 at the centre, so 2x.
+    lightmap.directional = glm::vec4(0.0f, 0.0f, -1.0f, 0.5f);
+    lightmap.shadowmask = glm::vec4(0.25f, 1.0f, 1.0f, 1.0f);
+    auto [pixel, variant] = centre(probeScene(lightmap, scene::MixedLightingMode::Shadowmask));
+    expectNear(pixel, glm::vec4(1.25f, 0.75f, 0.5f, 0.125f));
+    for (const char* keyword : {"LIGHTMAP_ON", "DIRLIGHTMAP_COMBINED", "DYNAMICLIGHTMAP_ON",
+                                "SHADOWS_SHADOWMASK", "LIGHTMAP_SHADOW_MIXING"}) {
+        EXPECT_NE(variant.find(keyword), std::string::npos) << keyword << " in " << variant;
+    }
+}
+
+TEST_F(LightmapBindingTest, SubtractiveModeMixesOnlyLightmappedObjects) {
+    auto [pixel, variant] = centre(probeScene(std::nullopt, scene::MixedLightingMode::Subtractive));
+    expectNear(pixel, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(variant.find("LIGHTMAP"), std::string::npos) << variant;
+    scene::Lightmap lightmap;
+    lightmap.baked = glm::vec3(0.5f);
+    auto [mixed, mixedVariant] =
+        centre(probeScene(lightmap, scene::MixedLightingMode::Subtractive));
+    expectNear(mixed, glm::vec4(0.5f, 0.5f, 0.5f, 0.5f));
+    EXPECT_NE(mixedVariant.find("LIGHTMAP_SHADOW_MIXING"), std::string::npos) << mixedVariant;
+}
+
+}  // namespace
+}  // namespace varc::runtime
