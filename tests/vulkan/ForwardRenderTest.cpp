@@ -268,7 +268,7 @@ protected:
     // The centre pixel of one lightmap-probe sphere facing the camera (its normal there is -z),
     // and the variant its ForwardBase draw used.
     std::pair<glm::vec4, std::string> centre(const scene::Scene& scene) {
-        RenderedFrame frame = frameOf(mRenderer->render(scene));
+        RenderedFrame frame = testing::frameOf(mRenderer->render(scene));
         if (frame.image.width() == 0 || frame.variants.empty()) {
             ADD_FAILURE() << "nothing rendered";
             return {};

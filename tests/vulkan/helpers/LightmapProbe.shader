@@ -33,7 +33,9 @@ Shader "Test/LightmapProbe" {
             float4 frag(Interpolators i) : SV_Target {
                 float3 n = normalize(i.normal);
                 float3 c = 0;
-                float mask = 1;
+                // 1 for any finite input: every variant reads both interpolators (validation
+                // warns about outputs the fragment stage does not consume).
+                float mask = step(-1e30, i.lightmapUV.x + i.lightmapUV.z + n.x);
             #if defined(LIGHTMAP_ON)
                 float3 baked = DecodeLightmap(UNITY_SAMPLE_TEX2D(unity_Lightmap, i.lightmapUV.xy));
               #if defined(DIRLIGHTMAP_COMBINED)
