@@ -62,7 +62,10 @@ def grid_objects(shaders):
 def scene(shaders, mode, shadows, vertex_lights):
     rows = 2 * len(shaders)
     lights = [{"type": "directional", "color": [1, 0.96, 0.9], "intensity": 0.9,
-               "rotation": [40, -25, 0], "shadows": "hard" if shadows else "none"}]
+               "rotation": [40, -25, 0], "shadows": "hard" if shadows else "none"},
+              # Not important: into the SH, so LIGHTPROBE_SH (ShadeSH9) and the flat ambient differ.
+              {"type": "directional", "color": [1, 0.5, 0.3], "intensity": 0.7,
+               "rotation": [-30, 70, 0], "render_mode": "not_important"}]
     if vertex_lights:
         lights.append({"type": "point", "color": [0.3, 0.6, 1], "intensity": 1.5,
                        "position": [0.5, 1.5, -3], "range": 40, "render_mode": "not_important"})

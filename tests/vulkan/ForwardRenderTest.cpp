@@ -220,6 +220,20 @@ TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
          [](scene::Scene& s, reference::ReferenceOptions&) {
              for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::Hard;
          }},
+        // Lightmaps (LIGHTING.md §8.7): what the lightmap variants change in these shaders.
+        {"lightmaps-shadowmask-shadow-vertex.json", "lightmapped objects keep vertex lights and SH",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Object& object : s.objects) {
+                 object.lightmap.reset();
+                 object.lightProbes.reset();
+             }
+         }},
+        {"lightmaps-baked-indirect-noshadow-vertex.json", "every object samples SH",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Object& object : s.objects) object.lightProbes = true;
+         }},
+        {"lightmaps-baked-indirect-noshadow-vertex.json", "no object samples SH",
+         [](scene::Scene&, reference::ReferenceOptions& options) { options.lightProbeSh = false; }},
     };
     for (const Mutation& mutation : mutations) {
         SCOPED_TRACE(std::string(mutation.scene) + ": " + mutation.what);
