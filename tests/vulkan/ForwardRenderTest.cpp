@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <functional>
 
 #include "VulkanTestSupport.h"
+#include "varc/image/Png.h"
 #include "varc/reader/Pack.h"
 #include "varc/reference/ImageCompare.h"
 #include "varc/reference/ReferenceRenderer.h"
@@ -334,6 +336,35 @@ TEST_F(LightmapBindingTest, DirectionalRealtimeAndShadowmaskAreBound) {
                                 "SHADOWS_SHADOWMASK", "LIGHTMAP_SHADOW_MIXING"}) {
         EXPECT_NE(variant.find(keyword), std::string::npos) << keyword << " in " << variant;
     }
+}
+
+// A PNG lightmap, read at uv1 * unity_LightmapST.xy + zw: with a zero scale the offset alone
+// picks the texel (2 x 1: red, then blue), so a wrong ST or uv shows as the other colour.
+TEST_F(LightmapBindingTest, PngLightmapIsReadAtTheScaledAndOffsetUv) {
+    Image png(2, 1, PixelFormat::Rgba8);
+    png.setPixel8(0, 0, {255, 0, 0, 255});
+    png.setPixel8(1, 0, {0, 0, 255, 255});
+    const std::string path = ::testing::TempDir() + "varc-lightmap-test.png";
+    ASSERT_TRUE(writePng(path, png));
+    Image mask(1, 1, PixelFormat::Rgba8);
+    mask.setPixel8(0, 0, {64, 255, 255, 255});
+    const std::string maskPath = ::testing::TempDir() + "varc-shadowmask-test.png";
+    ASSERT_TRUE(writePng(maskPath, mask));
+    scene::Lightmap lightmap;
+    lightmap.baked = glm::vec3(1.0f);
+    lightmap.bakedFile = path;
+    lightmap.shadowmaskFile = maskPath;
+    lightmap.scaleOffset = glm::vec4(0.0f, 0.0f, 0.75f, 0.5f);
+    auto [blue, blueVariant] =
+        centre(probeScene(lightmap, scene::MixedLightingMode::DistanceShadowmask));
+    expectNear(blue, glm::vec4(0.0f, 0.0f, 1.0f, 64.0f / 255.0f));
+    lightmap.scaleOffset = glm::vec4(0.0f, 0.0f, 0.25f, 0.5f);
+    auto [red, redVariant] =
+        centre(probeScene(lightmap, scene::MixedLightingMode::DistanceShadowmask));
+    expectNear(red, glm::vec4(1.0f, 0.0f, 0.0f, 64.0f / 255.0f));
+    EXPECT_NE(redVariant.find("SHADOWS_SHADOWMASK"), std::string::npos) << redVariant;
+    std::remove(path.c_str());
+    std::remove(maskPath.c_str());
 }
 
 TEST_F(LightmapBindingTest, SubtractiveModeMixesOnlyLightmappedObjects) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
+#include <tuple>
 #include <nlohmann/json.hpp>
 #include <utility>
 
@@ -313,27 +314,51 @@ bool readLightmapDirection(Reader& r, const json& value, const std::string& p, g
     return true;
 }
 
+// A lightmap given as a PNG file: a string |value| must end in ".png" (|file| set to it,
+// resolved against the scene file; else an error). Any other |value| leaves |file| empty.
+bool readLightmapFile(Reader& r, const json& value, const std::string& p, std::string& file) {
+    if (!value.is_string()) return true;
+    std::string text = value.get<std::string>();
+    if (!isTextureFile(text))
+        return r.fail(p, "expected a PNG file (\"*.png\") or a value, got '" + text + "'");
+    if (std::filesystem::path(text).is_relative())
+        text = (std::filesystem::path(r.path()).parent_path() / text).lexically_normal().string();
+    file = std::move(text);
+    return true;
+}
+
 bool readLightmap(Reader& r, const json& value, const std::string& p, Lightmap& m) {
     if (!r.onlyKeys(value, p,
                     {"baked", "realtime", "directional", "shadowmask", "scale_offset",
                      "realtime_scale_offset"})) {
         return false;
     }
-    for (auto [key, slot] : {std::pair{"baked", &m.baked}, std::pair{"realtime", &m.realtime}}) {
+    for (auto [key, slot, file] : {std::tuple{"baked", &m.baked, &m.bakedFile},
+                                   std::tuple{"realtime", &m.realtime, &m.realtimeFile}}) {
         if (!value.contains(key)) continue;
-        glm::vec3 c(0.0f);
-        if (!readLightmapColor(r, value[key], p + "/" + key, c)) return false;
+        if (!readLightmapFile(r, value[key], p + "/" + key, *file)) return false;
+        glm::vec3 c(1.0f);
+        if (file->empty() && !readLightmapColor(r, value[key], p + "/" + key, c)) return false;
         *slot = c;
     }
     if (!m.baked && !m.realtime)
         return r.fail(p, "a lightmap needs 'baked' (LIGHTMAP_ON), 'realtime' (DYNAMICLIGHTMAP_ON) "
                          "or both");
     if (value.contains("directional")) {
-        glm::vec4 d(0.0f);
-        if (!readLightmapDirection(r, value["directional"], p + "/directional", d)) return false;
+        if (!readLightmapFile(r, value["directional"], p + "/directional", m.directionalFile))
+            return false;
+        glm::vec4 d(0.0f, 0.0f, 1.0f, 1.0f);
+        if (m.directionalFile.empty() &&
+            !readLightmapDirection(r, value["directional"], p + "/directional", d)) {
+            return false;
+        }
         m.directional = d;
     }
     if (value.contains("shadowmask")) {
+        if (!readLightmapFile(r, value["shadowmask"], p + "/shadowmask", m.shadowmaskFile))
+            return false;
+    }
+    if (value.contains("shadowmask") && m.shadowmaskFile.empty()) {
         if (!r.readColor(value["shadowmask"], p + "/shadowmask", m.shadowmask)) return false;
         if (glm::any(glm::lessThan(m.shadowmask, glm::vec4(0.0f))) ||
             glm::any(glm::greaterThan(m.shadowmask, glm::vec4(1.0f)))) {

@@ -174,6 +174,24 @@ TEST(SceneParser, ReadsLightmapsAndMixedLighting) {
     EXPECT_FALSE(scene->objects[3].lightmap.has_value());
 }
 
+TEST(SceneParser, LightmapPngFilesAreNamedRelativeToTheSceneFile) {
+    auto scene = parseScene(R"({"objects": [{"mesh": "cube", "lightmap": {
+        "baked": "maps/baked.png", "realtime": [1, 1, 1], "directional": "maps/dir.png",
+        "shadowmask": "/abs/mask.png"}}]})",
+                            "scenes/a.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().detail;
+    const Lightmap& m = *scene->objects[0].lightmap;
+    EXPECT_EQ(m.bakedFile, "scenes/maps/baked.png");
+    EXPECT_TRUE(m.baked.has_value());  // a file turns LIGHTMAP_ON on as a colour does
+    EXPECT_EQ(m.realtimeFile, "");
+    EXPECT_EQ(m.directionalFile, "scenes/maps/dir.png");
+    EXPECT_TRUE(m.directional.has_value());
+    EXPECT_EQ(m.shadowmaskFile, "/abs/mask.png");
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","lightmap":{"baked":"baked.exr"}}]})"),
+              "scenes/a.json: /objects/0/lightmap/baked: expected a PNG file (\"*.png\") or a "
+              "value, got 'baked.exr'");
+}
+
 TEST(SceneParser, BadLightmapsNameThePointer) {
     EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","lightmap":{"shadowmask":[1,1,1,1]}}]})"),
               "scenes/a.json: /objects/0/lightmap: a lightmap needs 'baked' (LIGHTMAP_ON), "

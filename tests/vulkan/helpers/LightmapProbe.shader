@@ -44,7 +44,7 @@ Shader "Test/LightmapProbe" {
               #endif
                 c += baked;
               #if defined(SHADOWS_SHADOWMASK)
-                mask = UNITY_SAMPLE_TEX2D(unity_ShadowMask, i.lightmapUV.xy).r;
+                mask *= UNITY_SAMPLE_TEX2D(unity_ShadowMask, i.lightmapUV.xy).r;
               #endif
             #endif
             #if defined(DYNAMICLIGHTMAP_ON)

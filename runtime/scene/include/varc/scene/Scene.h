@@ -70,8 +70,10 @@ struct Material {
 // reference model: the scene renders without a comparison).
 std::string referenceModelOf(const Material& material);
 
-// An object's lightmaps ("lightmap" in the scene file): constant linear HDR colours, each bound
-// as a 1x1 texture (SHADER_ABI.md §4.13, §6). At least one of |baked| and |realtime| is set.
+// An object's lightmaps ("lightmap" in the scene file), SHADER_ABI.md §4.13, §6: each map a
+// constant (linear HDR colours, bound as 1x1 float textures) or a PNG file (|*File|, a path
+// resolved against the scene file; its values as stored, linear, bound UNORM; the constant is
+// then unused). At least one of |baked| and |realtime| is set.
 struct Lightmap {
     std::optional<glm::vec3> baked;      // LIGHTMAP_ON: unity_Lightmap
     std::optional<glm::vec3> realtime;   // DYNAMICLIGHTMAP_ON: unity_DynamicLightmap
@@ -79,6 +81,7 @@ struct Lightmap {
     // unity_LightmapInd / unity_DynamicDirectionality (stored as xyz * 0.5 + 0.5, w).
     std::optional<glm::vec4> directional;
     glm::vec4 shadowmask{1.0f};                    // unity_ShadowMask (per light channel)
+    std::string bakedFile, realtimeFile, directionalFile, shadowmaskFile;  // "" = the constant
     glm::vec4 scaleOffset{1.0f, 1.0f, 0.0f, 0.0f};  // unity_LightmapST
     glm::vec4 realtimeScaleOffset{1.0f, 1.0f, 0.0f, 0.0f};  // unity_DynamicLightmapST
 };
