@@ -131,7 +131,7 @@ TEST(LightKeywords, ForwardBaseLightmapsDropVertexLights) {
     EXPECT_EQ(lightKeywords(light, LightPassKind::ForwardBase),
               (Names{"DIRECTIONAL", "DIRLIGHTMAP_COMBINED", "LIGHTMAP_ON",
                      "LIGHTMAP_SHADOW_MIXING"}));
-    light.lightmap = false;  // no lightmap left: the direction and the mixing have nothing to act on
+    light.lightmap = false;  // no lightmap: the direction and the mixing have nothing to act on
     EXPECT_EQ(lightKeywords(light, LightPassKind::ForwardBase),
               (Names{"DIRECTIONAL", "VERTEXLIGHT_ON"}));
 }
@@ -152,7 +152,8 @@ TEST(LightKeywords, ForwardBaseRequestsReachEveryFwdbaseVariant) {
         light.dynamicLightmap = bits & 32;
         light.shadowmask = bits & 64;
         light.shadowMixing = bits & 128;
-        VariantKey requested = space.table().keyOf(lightKeywords(light, LightPassKind::ForwardBase));
+        VariantKey requested =
+            space.table().keyOf(lightKeywords(light, LightPassKind::ForwardBase));
         Selection selection = selectVariant(variants, requested, SelectionPolicy::Strict);
         ASSERT_TRUE(selection.exact) << bits;
         reached[*selection.index] = true;

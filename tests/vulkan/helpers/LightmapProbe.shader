@@ -39,8 +39,9 @@ Shader "Test/LightmapProbe" {
             #if defined(LIGHTMAP_ON)
                 float3 baked = DecodeLightmap(UNITY_SAMPLE_TEX2D(unity_Lightmap, i.lightmapUV.xy));
               #if defined(DIRLIGHTMAP_COMBINED)
-                baked = DecodeDirectionalLightmap(baked,
-                    UNITY_SAMPLE_TEX2D_SAMPLER(unity_LightmapInd, unity_Lightmap, i.lightmapUV.xy), n);
+                float4 direction =
+                    UNITY_SAMPLE_TEX2D_SAMPLER(unity_LightmapInd, unity_Lightmap, i.lightmapUV.xy);
+                baked = DecodeDirectionalLightmap(baked, direction, n);
               #endif
                 c += baked;
               #if defined(SHADOWS_SHADOWMASK)
@@ -48,7 +49,8 @@ Shader "Test/LightmapProbe" {
               #endif
             #endif
             #if defined(DYNAMICLIGHTMAP_ON)
-                c += DecodeRealtimeLightmap(UNITY_SAMPLE_TEX2D(unity_DynamicLightmap, i.lightmapUV.zw));
+                float4 realtime = UNITY_SAMPLE_TEX2D(unity_DynamicLightmap, i.lightmapUV.zw);
+                c += DecodeRealtimeLightmap(realtime);
             #endif
             #if defined(LIGHTMAP_SHADOW_MIXING)
                 mask *= 0.5;
