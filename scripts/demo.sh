@@ -69,7 +69,8 @@ echo "== varc validate: the single-pass forward scenes (light buffer, per-object
 seeds=../shared/seeds
 if [ -d "$seeds" ]; then
     echo
-    echo "== varc validate: seeds 001 and 004 as their texts print them (assembled in $out/seed-texts),"
+    echo "== varc validate: seeds 001 and 004 as their texts print them (assembled in $out/seed-texts;"
+    echo "   the lightmaps-* scenes draw every ForwardBase variant of both),"
     echo "   seed 002's own Custom/DeferredShading as the deferred path's light shader =="
     bash tests/library/assemble_seeds.sh "$seeds" "$out/seed-texts"
     "$varc" build -o "$out/seed-texts.svpack" "$out/seed-texts/seed001" "$out/seed-texts/seed004"

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <functional>
 
 #include "VulkanTestSupport.h"
+#include "varc/image/Png.h"
 #include "varc/reader/Pack.h"
 #include "varc/reference/ImageCompare.h"
 #include "varc/reference/ReferenceRenderer.h"
@@ -220,6 +222,20 @@ TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
          [](scene::Scene& s, reference::ReferenceOptions&) {
              for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::Hard;
          }},
+        // Lightmaps (LIGHTING.md §8.7): what the lightmap variants change in these shaders.
+        {"lightmaps-shadowmask-shadow-vertex.json", "lightmapped objects keep vertex lights and SH",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Object& object : s.objects) {
+                 object.lightmap.reset();
+                 object.lightProbes.reset();
+             }
+         }},
+        {"lightmaps-baked-indirect-noshadow-vertex.json", "every object samples SH",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Object& object : s.objects) object.lightProbes = true;
+         }},
+        {"lightmaps-baked-indirect-noshadow-vertex.json", "no object samples SH",
+         [](scene::Scene&, reference::ReferenceOptions& options) { options.lightProbeSh = false; }},
     };
     for (const Mutation& mutation : mutations) {
         SCOPED_TRACE(std::string(mutation.scene) + ": " + mutation.what);
@@ -237,6 +253,130 @@ TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
         EXPECT_FALSE(result.passed) << result.message;
         EXPECT_GT(result.failingPixels, 20u) << result.message;
     }
+}
+
+}  // namespace
+}  // namespace varc::runtime
+
+namespace varc::runtime {
+namespace {
+
+// A forward renderer over the helper pack (tests/vulkan/helpers): Test/LightmapProbe outputs the
+// lightmaps its ForwardBase draw sampled.
+class LightmapBindingTest : public testing::VulkanTest {
+protected:
+    void SetUp() override {
+        VulkanTest::SetUp();
+        if (HasFatalFailure()) return;
+        auto pack = Pack::open(VARC_TEST_PACK_DIR "/helpers.svpack");
+        ASSERT_TRUE(pack) << pack.error().detail;
+        mPack.emplace(std::move(*pack));
+        auto renderer = ForwardRenderer::create(context(), {&*mPack});
+        ASSERT_TRUE(renderer) << renderer.error().detail;
+        mRenderer.emplace(std::move(*renderer));
+    }
+    void TearDown() override {
+        mRenderer.reset();
+        mPack.reset();
+        VulkanTest::TearDown();
+    }
+
+    // The centre pixel of one lightmap-probe sphere facing the camera (its normal there is -z),
+    // and the variant its ForwardBase draw used.
+    std::pair<glm::vec4, std::string> centre(const scene::Scene& scene) {
+        RenderedFrame frame = testing::frameOf(mRenderer->render(scene));
+        if (frame.image.width() == 0 || frame.variants.empty()) {
+            ADD_FAILURE() << "nothing rendered";
+            return {};
+        }
+        const auto c = frame.image.pixelFloat(scene.camera.width / 2, scene.camera.height / 2);
+        return {glm::vec4(c[0], c[1], c[2], c[3]), frame.variants.front()};
+    }
+
+    static scene::Scene probeScene(std::optional<scene::Lightmap> lightmap,
+                                   scene::MixedLightingMode mode) {
+        scene::Scene scene = oneSphere();
+        scene.objects[0].material = {"Test/LightmapProbe", {}, ""};
+        scene.objects[0].lightmap = std::move(lightmap);
+        scene.mixedLighting = mode;
+        return scene;
+    }
+
+    std::optional<Pack> mPack;
+    std::optional<ForwardRenderer> mRenderer;
+};
+
+void expectNear(const glm::vec4& actual, const glm::vec4& expected) {
+    for (int c = 0; c < 4; ++c) {
+        EXPECT_NEAR(actual[c], expected[c], 2e-3f + 2e-3f * std::abs(expected[c]))
+            << "channel " << c;
+    }
+}
+
+TEST_F(LightmapBindingTest, BakedLightmapIsBoundFullHdr) {
+    scene::Lightmap lightmap;
+    lightmap.baked = glm::vec3(1.5f, 0.5f, 0.25f);
+    lightmap.scaleOffset = glm::vec4(0.5f, 0.5f, 0.25f, 0.25f);
+    auto [pixel, variant] = centre(probeScene(lightmap, scene::MixedLightingMode::BakedIndirect));
+    expectNear(pixel, glm::vec4(1.5f, 0.5f, 0.25f, 1.0f));
+    EXPECT_NE(variant.find("LIGHTMAP_ON"), std::string::npos) << variant;
+    EXPECT_EQ(variant.find("SHADOWMASK"), std::string::npos) << variant;
+}
+
+TEST_F(LightmapBindingTest, DirectionalRealtimeAndShadowmaskAreBound) {
+    scene::Lightmap lightmap;
+    lightmap.baked = glm::vec3(0.5f, 0.25f, 0.125f);
+    lightmap.realtime = glm::vec3(0.25f);
+    // Towards the camera, rebalancing 0.5: the half-Lambert term is 1 at the centre, so 2x.
+    lightmap.directional = glm::vec4(0.0f, 0.0f, -1.0f, 0.5f);
+    lightmap.shadowmask = glm::vec4(0.25f, 1.0f, 1.0f, 1.0f);
+    auto [pixel, variant] = centre(probeScene(lightmap, scene::MixedLightingMode::Shadowmask));
+    expectNear(pixel, glm::vec4(1.25f, 0.75f, 0.5f, 0.125f));
+    for (const char* keyword : {"LIGHTMAP_ON", "DIRLIGHTMAP_COMBINED", "DYNAMICLIGHTMAP_ON",
+                                "SHADOWS_SHADOWMASK", "LIGHTMAP_SHADOW_MIXING"}) {
+        EXPECT_NE(variant.find(keyword), std::string::npos) << keyword << " in " << variant;
+    }
+}
+
+// A PNG lightmap, read at uv1 * unity_LightmapST.xy + zw: with a zero scale the offset alone
+// picks the texel (2 x 1: red, then blue), so a wrong ST or uv shows as the other colour.
+TEST_F(LightmapBindingTest, PngLightmapIsReadAtTheScaledAndOffsetUv) {
+    Image png(2, 1, PixelFormat::Rgba8);
+    png.setPixel8(0, 0, {255, 0, 0, 255});
+    png.setPixel8(1, 0, {0, 0, 255, 255});
+    const std::string path = ::testing::TempDir() + "varc-lightmap-test.png";
+    ASSERT_TRUE(writePng(path, png));
+    Image mask(1, 1, PixelFormat::Rgba8);
+    mask.setPixel8(0, 0, {64, 255, 255, 255});
+    const std::string maskPath = ::testing::TempDir() + "varc-shadowmask-test.png";
+    ASSERT_TRUE(writePng(maskPath, mask));
+    scene::Lightmap lightmap;
+    lightmap.baked = glm::vec3(1.0f);
+    lightmap.bakedFile = path;
+    lightmap.shadowmaskFile = maskPath;
+    lightmap.scaleOffset = glm::vec4(0.0f, 0.0f, 0.75f, 0.5f);
+    auto [blue, blueVariant] =
+        centre(probeScene(lightmap, scene::MixedLightingMode::DistanceShadowmask));
+    expectNear(blue, glm::vec4(0.0f, 0.0f, 1.0f, 64.0f / 255.0f));
+    lightmap.scaleOffset = glm::vec4(0.0f, 0.0f, 0.25f, 0.5f);
+    auto [red, redVariant] =
+        centre(probeScene(lightmap, scene::MixedLightingMode::DistanceShadowmask));
+    expectNear(red, glm::vec4(1.0f, 0.0f, 0.0f, 64.0f / 255.0f));
+    EXPECT_NE(redVariant.find("SHADOWS_SHADOWMASK"), std::string::npos) << redVariant;
+    std::remove(path.c_str());
+    std::remove(maskPath.c_str());
+}
+
+TEST_F(LightmapBindingTest, SubtractiveModeMixesOnlyLightmappedObjects) {
+    auto [pixel, variant] = centre(probeScene(std::nullopt, scene::MixedLightingMode::Subtractive));
+    expectNear(pixel, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    EXPECT_EQ(variant.find("LIGHTMAP"), std::string::npos) << variant;
+    scene::Lightmap lightmap;
+    lightmap.baked = glm::vec3(0.5f);
+    auto [mixed, mixedVariant] =
+        centre(probeScene(lightmap, scene::MixedLightingMode::Subtractive));
+    expectNear(mixed, glm::vec4(0.5f, 0.5f, 0.5f, 0.5f));
+    EXPECT_NE(mixedVariant.find("LIGHTMAP_SHADOW_MIXING"), std::string::npos) << mixedVariant;
 }
 
 }  // namespace

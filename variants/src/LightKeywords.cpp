@@ -51,8 +51,16 @@ void addForwardBaseKeywords(const LightDescription& light, std::vector<std::stri
     bool mainDirectional = light.type == LightType::Directional && !light.cookie;
     if (mainDirectional && light.shadows != ShadowMode::None)
         keywords.emplace_back("SHADOWS_SCREEN");
-    if (light.vertexLightCount > 0) keywords.emplace_back("VERTEXLIGHT_ON");
+    // fwdbase's rule VERTEXLIGHT_ON => !LIGHTMAP_ON: a lightmapped object has no vertex lights.
+    if (light.vertexLightCount > 0 && !light.lightmap) keywords.emplace_back("VERTEXLIGHT_ON");
     if (light.lightProbes) keywords.emplace_back("LIGHTPROBE_SH");
+    if (light.lightmap) keywords.emplace_back("LIGHTMAP_ON");
+    if (light.dirLightmap && (light.lightmap || light.dynamicLightmap))
+        keywords.emplace_back("DIRLIGHTMAP_COMBINED");
+    if (light.dynamicLightmap) keywords.emplace_back("DYNAMICLIGHTMAP_ON");
+    if (light.shadowmask) keywords.emplace_back("SHADOWS_SHADOWMASK");
+    if (light.shadowMixing && (light.lightmap || light.shadowmask))
+        keywords.emplace_back("LIGHTMAP_SHADOW_MIXING");
 }
 
 }  // namespace

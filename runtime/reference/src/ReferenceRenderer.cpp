@@ -10,6 +10,7 @@
 #include "varc/reference/ShadowReference.h"
 #include "varc/scene/CameraMatrices.h"
 #include "varc/scene/Mesh.h"
+#include "varc/scene/ObjectLightmaps.h"
 
 namespace varc::reference {
 namespace {
@@ -39,6 +40,9 @@ struct ObjectDraw {
     glm::mat4 worldToObject{1.0f};
     const scene::Mesh* mesh = nullptr;
     bool vertexLightsOn = false;
+    // LIGHTPROBE_SH in the base variant (the object uses light probes; shaders without the
+    // keyword ignore it): SH, else the flat ambient colour.
+    bool lightProbeSh = true;
     std::array<glm::vec4, 7> sh{};
     PassLight base;
     std::vector<PassLight> adds;
@@ -176,7 +180,7 @@ glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight&
             glm::vec3 c = light.color * falloff * (kd * std::max(0.0f, ndotl) + specular);
             if (base) {
                 const glm::vec3 a =
-                    options.lightProbeSh ? maxZero(scene::shadeSH9(draw.sh, n)) : ambient;
+                    draw.lightProbeSh ? maxZero(scene::shadeSH9(draw.sh, n)) : ambient;
                 c += kd * (a + in.vertexTerm);
             }
             return {c, 1.0f};
@@ -206,7 +210,7 @@ glm::vec3 seedVertexLights(const VertexLights& lights, const glm::vec3& p, const
 // |objectNormal| is the mesh's normal (seed 004 uses it unnormalised in world space).
 glm::vec3 vertexTerm(const ObjectDraw& draw, const VertexLights& lights, const glm::vec3& ambient,
                      const glm::vec3& p, const glm::vec3& n, const glm::vec3& objectNormal,
-                     const glm::mat4& objectToWorld, const ReferenceOptions& options) {
+                     const glm::mat4& objectToWorld) {
     const glm::vec3 color(draw.material.color);
     if (draw.material.model == ShaderModel::Seed001Phong) {
         return draw.vertexLightsOn ? color * seedVertexLights(lights, p, n) : glm::vec3(0.0f);
@@ -218,7 +222,7 @@ glm::vec3 vertexTerm(const ObjectDraw& draw, const VertexLights& lights, const g
     }
     glm::vec3 term(0.0f);
     if (draw.material.model == ShaderModel::SimpleDiffuse) {
-        term = options.lightProbeSh ? maxZero(scene::shadeSH9(draw.sh, n)) : ambient;
+        term = draw.lightProbeSh ? maxZero(scene::shadeSH9(draw.sh, n)) : ambient;
     }
     if (draw.vertexLightsOn) term += shade4PointLights(lights, p, n);
     return term;
@@ -264,7 +268,12 @@ Result<ObjectDraw> prepareObject(const scene::Scene& scene, const scene::Object&
         }
         draw.adds.push_back(*add);
     }
-    draw.vertexLightsOn = !lights.vertexLights.empty();
+    // Lightmapped objects have no vertex lights (fwdbase: VERTEXLIGHT_ON => !LIGHTMAP_ON); the
+    // lightmap keywords change nothing else in the models known here, whose shaders never sample
+    // a lightmap (LIGHTING.md §8.7).
+    const scene::ObjectLightmaps lightmaps = scene::objectLightmaps(scene, object);
+    draw.vertexLightsOn = !lights.vertexLights.empty() && lightmaps.vertexLights();
+    draw.lightProbeSh = options.lightProbeSh && lightmaps.lightProbes;
     draw.sh = scene::packedSH(scene, object, lights.shLights);
     const VertexLights vertexLights = vertexLightsFor(scene, lights.vertexLights);
 
@@ -279,7 +288,7 @@ Result<ObjectDraw> prepareObject(const scene::Scene& scene, const scene::Object&
         draw.worldPos.push_back(p);
         draw.worldNormal.push_back(n);
         draw.vertexTerm.push_back(vertexTerm(draw, vertexLights, scene.ambient, p, n,
-                                             draw.mesh->normals[i], objectToWorld, options));
+                                             draw.mesh->normals[i], objectToWorld));
     }
     return draw;
 }

@@ -2,6 +2,7 @@
 #include "varc/render/ForwardRenderer.h"
 
 #include <deque>
+#include <map>
 
 #include "CameraTargetCache.h"
 #include "Draw.h"
@@ -15,6 +16,7 @@
 #include "varc/render/SceneValues.h"
 #include "varc/render/VertexLayout.h"
 #include "varc/scene/Mesh.h"
+#include "varc/scene/ObjectLightmaps.h"
 #include "varc/variants/LightKeywords.h"
 #include "varc/vulkan/RenderTarget.h"
 
@@ -47,7 +49,8 @@ namespace {
 
 // The variant a forward pass draws for |light| (nullptr: the base pass without a main light);
 // |shadowed| when the light's shadow map was rendered this frame.
-variants::LightDescription forwardLight(const scene::Scene& scene, const scene::Light* light,
+variants::LightDescription forwardLight(const scene::Scene& scene, const scene::Object& object,
+                                        const scene::Light* light,
                                         const scene::ForwardLightAssignment& assignment,
                                         bool shadowed) {
     variants::LightDescription description;
@@ -56,7 +59,13 @@ variants::LightDescription forwardLight(const scene::Scene& scene, const scene::
     description.cookie = light && light->hasCookie();
     description.vertexLightCount = static_cast<int>(assignment.vertexLights.size());
     description.hdr = scene.camera.hdr;
-    description.lightProbes = true;
+    const scene::ObjectLightmaps lightmaps = scene::objectLightmaps(scene, object);
+    description.lightProbes = lightmaps.lightProbes;
+    description.lightmap = lightmaps.lightmap;
+    description.dirLightmap = lightmaps.dirLightmap;
+    description.dynamicLightmap = lightmaps.dynamicLightmap;
+    description.shadowmask = lightmaps.shadowmask;
+    description.shadowMixing = lightmaps.shadowMixing;
     return description;
 }
 
@@ -79,6 +88,13 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
         storage.values.emplace_back(objectValues(scene, object, matrices, assignment));
     auto material = objectMaterial(what, object.material, shader->properties(), storage);
     if (!material) return material.error();
+    std::map<std::string, TextureBinding, std::less<>> lightmaps;
+    for (const char* name : {"unity_Lightmap", "unity_LightmapInd", "unity_DynamicLightmap",
+                             "unity_DynamicDirectionality", "unity_ShadowMask"}) {
+        auto texture = lightmapTexture(object, name);
+        if (!texture) return makeError(texture.error().code, what + ": " + texture.error().detail);
+        lightmaps.emplace(name, **texture);
+    }
 
     auto addDraw = [&](const char* lightMode, const scene::Light* light) -> Status {
         std::optional<PassView> pass = shader->pass(std::string_view(lightMode));
@@ -93,7 +109,8 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
         } else if (light) {
             shadowMap = shadows.map(lightIndex);
         }
-        auto variant = pass->lookup(forwardLight(scene, light, assignment, shadowMap.has_value()),
+        auto variant = pass->lookup(
+            forwardLight(scene, object, light, assignment, shadowMap.has_value()),
                                     variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         auto draw = objectDraw({what,
@@ -113,11 +130,15 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
         draw->layers[3] = &camera;
         const scene::LightType type = light ? light->type : scene::LightType::Directional;
         const bool cookie = light && light->cookie != "none";
-        draw->textures = [this, light, type, cookie, shadowMap,
+        draw->textures = [this, light, type, cookie, shadowMap, lightmaps,
                           material = std::move(draw->textures)](
                              std::string_view name,
                              pack::ResourceDim dim) -> std::optional<TextureBinding> {
             if (shadowMap && name == "_ShadowMapTexture") return shadowMap;
+            if (auto lightmap = lightmaps.find(name);
+                lightmap != lightmaps.end() && dim == pack::ResourceDim::Dim2D) {
+                return lightmap->second;
+            }
             if (light && name == "_LightTexture0") {
                 if (auto file = cookieFile(*light)) return file;
             }

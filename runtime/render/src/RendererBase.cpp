@@ -190,6 +190,62 @@ Status RendererBase::loadCookieFiles(const std::vector<scene::Light>& lights) {
     return Ok{};
 }
 
+Result<std::optional<TextureBinding>> RendererBase::lightmapTexture(const scene::Object& object,
+                                                                   std::string_view name) {
+    const scene::Lightmap lightmap = object.lightmap.value_or(scene::Lightmap{});
+    const glm::vec4 defaultDirection(0.5f, 0.5f, 1.0f, 1.0f);
+    glm::vec4 texel(1.0f);
+    const std::string* file = nullptr;
+    if (name == "unity_Lightmap") {
+        texel = glm::vec4(lightmap.baked.value_or(glm::vec3(1.0f)), 1.0f);
+        file = &lightmap.bakedFile;
+    } else if (name == "unity_DynamicLightmap") {
+        texel = glm::vec4(lightmap.realtime.value_or(glm::vec3(1.0f)), 1.0f);
+        file = &lightmap.realtimeFile;
+    } else if (name == "unity_LightmapInd" || name == "unity_DynamicDirectionality") {
+        texel = defaultDirection;
+        if (lightmap.directional) {
+            texel = glm::vec4(glm::vec3(*lightmap.directional) * 0.5f + 0.5f,
+                              lightmap.directional->w);
+        }
+        file = &lightmap.directionalFile;
+    } else if (name == "unity_ShadowMask") {
+        texel = lightmap.shadowmask;
+        file = &lightmap.shadowmaskFile;
+    } else {
+        return std::optional<TextureBinding>();
+    }
+    if (!file->empty()) return lightmapFile(*file);
+    const std::array<float, 4> key{texel.r, texel.g, texel.b, texel.a};
+    auto found = mLightmaps.find(key);
+    if (found == mLightmaps.end()) {
+        Image image(1, 1, PixelFormat::RgbaFloat);
+        image.setPixelFloat(0, 0, key);
+        TextureOptions options;
+        options.name = std::string(name);
+        auto texture = Texture::create2D(*context, image, options);
+        if (!texture) return texture.error();
+        found = mLightmaps.emplace(key, std::move(*texture)).first;
+    }
+    return std::optional<TextureBinding>(
+        TextureBinding{found->second.view(), textures->clampSampler()});
+}
+
+Result<std::optional<TextureBinding>> RendererBase::lightmapFile(const std::string& path) {
+    auto found = mLightmapFiles.find(path);
+    if (found == mLightmapFiles.end()) {
+        auto image = readPng(path);
+        if (!image) return makeError(image.error().code, "lightmap: " + image.error().detail);
+        TextureOptions options;  // UNORM: the values as stored, linear
+        options.name = path;
+        auto texture = Texture::create2D(*context, *image, options);
+        if (!texture) return texture.error();
+        found = mLightmapFiles.emplace(path, std::move(*texture)).first;
+    }
+    return std::optional<TextureBinding>(
+        TextureBinding{found->second.view(), textures->clampSampler()});
+}
+
 std::optional<TextureBinding> RendererBase::cookieFile(const scene::Light& light) const {
     if (!scene::isTextureFile(light.cookie)) return std::nullopt;
     auto file = mCookieFiles.find(light.cookie);

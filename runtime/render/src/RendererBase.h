@@ -5,6 +5,7 @@
 // objects, and the drawing of a one-pass frame.
 #pragma once
 
+#include <array>
 #include <deque>
 #include <map>
 #include <optional>
@@ -127,6 +128,17 @@ struct RendererBase {
     // Errors: an unreadable file.
     Status loadCookieFiles(const std::vector<scene::Light>& lights);
 
+    // The lightmap textures of |object| (SHADER_ABI.md §4.13, §6) for |name|: unity_Lightmap,
+    // unity_DynamicLightmap, unity_LightmapInd, unity_DynamicDirectionality, unity_ShadowMask;
+    // 1x1 linear float textures of its lightmap's colours, its PNG files (lightmapFile), or the
+    // defaults (white; direction (0.5, 0.5, 1, 1)) where it has none. nullopt for any other
+    // name. Created on first use; errors: an unreadable PNG (named), Vulkan.
+    Result<std::optional<TextureBinding>> lightmapTexture(const scene::Object& object,
+                                                          std::string_view name);
+    // The lightmap PNG at |path|, loaded once as R8G8B8A8_UNORM (linear), sampled linear with
+    // clamp to edge.
+    Result<std::optional<TextureBinding>> lightmapFile(const std::string& path);
+
     // _LightTexture0 for |light| when it has a PNG cookie: clamped for spot lights, repeating for
     // directional ones; nullopt otherwise (the default cookies come from BuiltinTextures).
     std::optional<TextureBinding> cookieFile(const scene::Light& light) const;
@@ -142,6 +154,8 @@ private:
     std::deque<CachedPipeline> mPipelines;         // a deque: returned pointers stay valid
     std::map<std::string, Texture> mTextureFiles;  // material PNGs (sRGB), by path
     std::map<std::string, Texture> mCookieFiles;   // cookie PNGs (UNORM), by path
+    std::map<std::array<float, 4>, Texture> mLightmaps;  // 1x1 float lightmap texels, by value
+    std::map<std::string, Texture> mLightmapFiles;       // lightmap PNGs (UNORM), by path
 };
 
 }  // namespace varc::runtime

@@ -83,6 +83,12 @@ ShaderValues objectValues(const scene::Scene& scene, const scene::Object& object
     values.set("unity_4LightPosZ0", z);
     values.set("unity_4LightAtten0", atten);
     values.setArray("unity_LightColor", colors);
+    // SHADER_ABI.md §4.13: lightmap uv = uv1 * ST.xy + ST.zw; varc's lightmaps are full HDR.
+    const scene::Lightmap lightmap = object.lightmap.value_or(scene::Lightmap{});
+    values.set("unity_LightmapST", lightmap.scaleOffset);
+    values.set("unity_DynamicLightmapST", lightmap.realtimeScaleOffset);
+    values.set("unity_Lightmap_HDR", glm::vec4(1, 1, 0, 0));
+    values.set("unity_DynamicLightmap_HDR", glm::vec4(1, 1, 0, 0));
     return values;
 }
 

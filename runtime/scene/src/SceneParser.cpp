@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <initializer_list>
+#include <tuple>
 #include <nlohmann/json.hpp>
 #include <utility>
 
@@ -273,9 +274,122 @@ bool readMaterial(Reader& r, const json& value, const std::string& p, Material& 
     return true;
 }
 
-bool readObject(Reader& r, const json& value, const std::string& p, Object& o) {
-    if (!r.onlyKeys(value, p, {"name", "mesh", "position", "rotation", "scale", "material"}))
+// An array of exactly 4 numbers (a scale/offset).
+bool readVec4(Reader& r, const json& value, const std::string& p, glm::vec4& out) {
+    if (!value.is_array() || value.size() != 4)
+        return r.fail(p, "expected an array of 4 numbers, got " + Reader::shortDump(value));
+    for (size_t i = 0; i < 4; ++i) {
+        if (!r.readFloat(value[i], p + "/" + std::to_string(i), out[static_cast<int>(i)]))
+            return false;
+    }
+    return true;
+}
+
+// A lightmap colour: [r, g, b] linear HDR, each component >= 0.
+bool readLightmapColor(Reader& r, const json& value, const std::string& p, glm::vec3& out) {
+    if (!value.is_array() || value.size() != 3)
+        return r.fail(p, "expected a colour [r, g, b], got " + Reader::shortDump(value));
+    glm::vec4 c(0.0f);
+    if (!r.readColor(value, p, c)) return false;
+    if (glm::any(glm::lessThan(glm::vec3(c), glm::vec3(0.0f))))
+        return r.fail(p, "expected components >= 0 (linear HDR), got " + Reader::shortDump(value));
+    out = glm::vec3(c);
+    return true;
+}
+
+// "directional": [x, y, z] or [x, y, z, w]: the dominant direction (any non-zero length) and
+// the rebalancing factor w > 0 (default 1).
+bool readLightmapDirection(Reader& r, const json& value, const std::string& p, glm::vec4& out) {
+    if (!value.is_array() || value.size() < 3 || value.size() > 4)
+        return r.fail(p, "expected [x, y, z] or [x, y, z, w], got " + Reader::shortDump(value));
+    glm::vec4 d(0.0f, 0.0f, 0.0f, 1.0f);
+    for (size_t i = 0; i < value.size(); ++i) {
+        if (!r.readFloat(value[i], p + "/" + std::to_string(i), d[static_cast<int>(i)]))
+            return false;
+    }
+    if (!(glm::length(glm::vec3(d)) > 1e-6f))
+        return r.fail(p, "expected a direction of non-zero length");
+    if (!(d.w > 0.0f)) return r.fail(p + "/3", "expected a rebalancing factor > 0");
+    out = glm::vec4(glm::normalize(glm::vec3(d)), d.w);
+    return true;
+}
+
+// A lightmap given as a PNG file: a string |value| must end in ".png" (|file| set to it,
+// resolved against the scene file; else an error). Any other |value| leaves |file| empty.
+bool readLightmapFile(Reader& r, const json& value, const std::string& p, std::string& file) {
+    if (!value.is_string()) return true;
+    std::string text = value.get<std::string>();
+    if (!isTextureFile(text))
+        return r.fail(p, "expected a PNG file (\"*.png\") or a value, got '" + text + "'");
+    if (std::filesystem::path(text).is_relative())
+        text = (std::filesystem::path(r.path()).parent_path() / text).lexically_normal().string();
+    file = std::move(text);
+    return true;
+}
+
+bool readLightmap(Reader& r, const json& value, const std::string& p, Lightmap& m) {
+    if (!r.onlyKeys(value, p,
+                    {"baked", "realtime", "directional", "shadowmask", "scale_offset",
+                     "realtime_scale_offset"})) {
         return false;
+    }
+    for (auto [key, slot, file] : {std::tuple{"baked", &m.baked, &m.bakedFile},
+                                   std::tuple{"realtime", &m.realtime, &m.realtimeFile}}) {
+        if (!value.contains(key)) continue;
+        if (!readLightmapFile(r, value[key], p + "/" + key, *file)) return false;
+        glm::vec3 c(1.0f);
+        if (file->empty() && !readLightmapColor(r, value[key], p + "/" + key, c)) return false;
+        *slot = c;
+    }
+    if (!m.baked && !m.realtime)
+        return r.fail(p, "a lightmap needs 'baked' (LIGHTMAP_ON), 'realtime' (DYNAMICLIGHTMAP_ON) "
+                         "or both");
+    if (value.contains("directional")) {
+        if (!readLightmapFile(r, value["directional"], p + "/directional", m.directionalFile))
+            return false;
+        glm::vec4 d(0.0f, 0.0f, 1.0f, 1.0f);
+        if (m.directionalFile.empty() &&
+            !readLightmapDirection(r, value["directional"], p + "/directional", d)) {
+            return false;
+        }
+        m.directional = d;
+    }
+    if (value.contains("shadowmask")) {
+        if (!readLightmapFile(r, value["shadowmask"], p + "/shadowmask", m.shadowmaskFile))
+            return false;
+    }
+    if (value.contains("shadowmask") && m.shadowmaskFile.empty()) {
+        if (!r.readColor(value["shadowmask"], p + "/shadowmask", m.shadowmask)) return false;
+        if (glm::any(glm::lessThan(m.shadowmask, glm::vec4(0.0f))) ||
+            glm::any(glm::greaterThan(m.shadowmask, glm::vec4(1.0f)))) {
+            return r.fail(p + "/shadowmask", "expected components in [0, 1] (baked occlusion)");
+        }
+    }
+    if (value.contains("scale_offset") &&
+        !readVec4(r, value["scale_offset"], p + "/scale_offset", m.scaleOffset)) {
+        return false;
+    }
+    return !value.contains("realtime_scale_offset") ||
+           readVec4(r, value["realtime_scale_offset"], p + "/realtime_scale_offset",
+                    m.realtimeScaleOffset);
+}
+
+bool readObject(Reader& r, const json& value, const std::string& p, Object& o) {
+    if (!r.onlyKeys(value, p,
+                    {"name", "mesh", "position", "rotation", "scale", "material", "lightmap",
+                     "light_probes"})) {
+        return false;
+    }
+    if (value.contains("lightmap")) {
+        Lightmap lightmap;
+        if (!readLightmap(r, value["lightmap"], p + "/lightmap", lightmap)) return false;
+        o.lightmap = lightmap;
+    }
+    if (value.contains("light_probes")) {
+        bool probes = false;
+        if (!r.readBool(value["light_probes"], p + "/light_probes", probes)) return false;
+        o.lightProbes = probes;
+    }
     if (value.contains("name") && !r.readString(value["name"], p + "/name", o.name)) return false;
     if (!value.contains("mesh")) return r.fail(p, "missing key 'mesh'");
     if (!r.readEnum<MeshKind>(
@@ -422,7 +536,22 @@ bool readCascades(Reader& r, const json& q, Scene& scene) {
 }
 
 bool readScene(Reader& r, const json& root, Scene& scene) {
-    if (!r.onlyKeys(root, "", {"camera", "ambient", "quality", "objects", "lights"})) return false;
+    if (!r.onlyKeys(root, "", {"camera", "ambient", "quality", "lighting", "objects", "lights"}))
+        return false;
+    if (root.contains("lighting")) {
+        const json& l = root["lighting"];
+        if (!r.onlyKeys(l, "/lighting", {"mixed_mode"})) return false;
+        if (l.contains("mixed_mode") &&
+            !r.readEnum<MixedLightingMode>(
+                l["mixed_mode"], "/lighting/mixed_mode",
+                {{"baked_indirect", MixedLightingMode::BakedIndirect},
+                 {"subtractive", MixedLightingMode::Subtractive},
+                 {"shadowmask", MixedLightingMode::Shadowmask},
+                 {"distance_shadowmask", MixedLightingMode::DistanceShadowmask}},
+                scene.mixedLighting)) {
+            return false;
+        }
+    }
     if (root.contains("camera") && !readCamera(r, root["camera"], "/camera", scene.camera))
         return false;
     if (root.contains("ambient")) {

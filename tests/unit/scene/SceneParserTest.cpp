@@ -149,6 +149,78 @@ TEST(SceneParser, WrongTypesAndRanges) {
               0u);
 }
 
+TEST(SceneParser, ReadsLightmapsAndMixedLighting) {
+    auto scene = parseScene(R"({"lighting": {"mixed_mode": "subtractive"}, "objects": [
+        {"mesh": "cube", "lightmap": {"baked": [2, 1, 0.5], "directional": [0, 2, 0, 0.5],
+                                      "shadowmask": [1, 0, 0, 0],
+                                      "scale_offset": [0.5, 0.5, 0.25, 0]}},
+        {"mesh": "sphere", "lightmap": {"realtime": [0.1, 0.2, 0.3]}, "light_probes": true},
+        {"mesh": "plane", "light_probes": false},
+        {"mesh": "plane"}]})",
+                            "a.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().detail;
+    EXPECT_EQ(scene->mixedLighting, MixedLightingMode::Subtractive);
+    const Lightmap& baked = *scene->objects[0].lightmap;
+    EXPECT_EQ(*baked.baked, glm::vec3(2, 1, 0.5f));
+    EXPECT_FALSE(baked.realtime.has_value());
+    EXPECT_EQ(*baked.directional, glm::vec4(0, 1, 0, 0.5f));  // unit direction, w kept
+    EXPECT_EQ(baked.shadowmask, glm::vec4(1, 0, 0, 0));
+    EXPECT_EQ(baked.scaleOffset, glm::vec4(0.5f, 0.5f, 0.25f, 0));
+    EXPECT_EQ(baked.realtimeScaleOffset, glm::vec4(1, 1, 0, 0));
+    EXPECT_FALSE(scene->objects[0].usesLightProbes());  // lightmapped: no probes by default
+    EXPECT_TRUE(scene->objects[1].usesLightProbes());
+    EXPECT_FALSE(scene->objects[2].usesLightProbes());
+    EXPECT_TRUE(scene->objects[3].usesLightProbes());
+    EXPECT_FALSE(scene->objects[3].lightmap.has_value());
+}
+
+TEST(SceneParser, LightmapPngFilesAreNamedRelativeToTheSceneFile) {
+    auto scene = parseScene(R"({"objects": [{"mesh": "cube", "lightmap": {
+        "baked": "maps/baked.png", "realtime": [1, 1, 1], "directional": "maps/dir.png",
+        "shadowmask": "/abs/mask.png"}}]})",
+                            "scenes/a.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().detail;
+    const Lightmap& m = *scene->objects[0].lightmap;
+    EXPECT_EQ(m.bakedFile, "scenes/maps/baked.png");
+    EXPECT_TRUE(m.baked.has_value());  // a file turns LIGHTMAP_ON on as a colour does
+    EXPECT_EQ(m.realtimeFile, "");
+    EXPECT_EQ(m.directionalFile, "scenes/maps/dir.png");
+    EXPECT_TRUE(m.directional.has_value());
+    EXPECT_EQ(m.shadowmaskFile, "/abs/mask.png");
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","lightmap":{"baked":"baked.exr"}}]})"),
+              "scenes/a.json: /objects/0/lightmap/baked: expected a PNG file (\"*.png\") or a "
+              "value, got 'baked.exr'");
+}
+
+TEST(SceneParser, BadLightmapsNameThePointer) {
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","lightmap":{"shadowmask":[1,1,1,1]}}]})"),
+              "scenes/a.json: /objects/0/lightmap: a lightmap needs 'baked' (LIGHTMAP_ON), "
+              "'realtime' (DYNAMICLIGHTMAP_ON) or both");
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","lightmap":{"baked":[1,-1,1]}}]})"),
+              "scenes/a.json: /objects/0/lightmap/baked: expected components >= 0 (linear HDR), "
+              "got [1,-1,1]");
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","lightmap":{"baked":[1,1,1],
+              "directional":[0,0,0]}}]})"),
+              "scenes/a.json: /objects/0/lightmap/directional: expected a direction of non-zero "
+              "length");
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","lightmap":{"baked":[1,1,1],
+              "scale_offset":[1,1]}}]})"),
+              "scenes/a.json: /objects/0/lightmap/scale_offset: expected an array of 4 numbers, "
+              "got [1,1]");
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","lightmap":{"baked":[1,1,1],
+              "shadowmask":[2,0,0,0]}}]})"),
+              "scenes/a.json: /objects/0/lightmap/shadowmask: expected components in [0, 1] "
+              "(baked occlusion)");
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","light_probes":"yes"}]})"),
+              "scenes/a.json: /objects/0/light_probes: expected true or false, got \"yes\"");
+    EXPECT_EQ(errorOf(R"({"lighting":{"mixed_mode":"mixed"}})"),
+              "scenes/a.json: /lighting/mixed_mode: expected one of baked_indirect, subtractive, "
+              "shadowmask, distance_shadowmask, got 'mixed'");
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","lightmap":{"baked":[1,1,1],"uv":1}}]})")
+                  .rfind("scenes/a.json: /objects/0/lightmap/uv: unknown key", 0),
+              0u);
+}
+
 TEST(SceneParser, SyntaxErrorNamesPath) {
     EXPECT_EQ(errorOf("{\"camera\": ").rfind("scenes/a.json: /: invalid JSON", 0), 0u);
 }
@@ -163,7 +235,8 @@ TEST(SceneParser, LoadSceneReportsUnreadableFile) {
 TEST(SceneParser, ShippedScenesParse) {
     for (const char* name :
          {"directional", "point", "spot", "point-cookie", "directional-cookie", "vertex-lights",
-          "many-lights", "simple-diffuse", "glsl-vertex-lights"}) {
+          "many-lights", "simple-diffuse", "glsl-vertex-lights",
+          "lightmaps-shadowmask-shadow-vertex"}) {
         const std::string path =
             std::string(VARC_SOURCE_DIR) + "/tests/scenes/forward/" + name + ".json";
         auto scene = loadScene(path);

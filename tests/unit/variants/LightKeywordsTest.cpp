@@ -2,6 +2,8 @@
 // lightKeywords: every light type x cookie x shadow mode per pass kind (docs/KEYWORDS.md §9).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "VariantsTestSupport.h"
 #include "varc/variants/LightKeywords.h"
 #include "varc/variants/VariantSelector.h"
@@ -118,6 +120,46 @@ TEST(LightKeywords, RequestsAreExactVariantsOfTheShortcuts) {
     expectStrictHits({"multi_compile_lightpass", "multi_compile ___ UNITY_HDR_ON"},
                      LightPassKind::DeferredLight, false);
     expectStrictHits({"multi_compile_fwdbase"}, LightPassKind::ForwardBase, false);
+}
+
+TEST(LightKeywords, ForwardBaseLightmapsDropVertexLights) {
+    LightDescription light;
+    light.vertexLightCount = 2;
+    light.lightmap = true;
+    light.dirLightmap = true;
+    light.shadowMixing = true;
+    EXPECT_EQ(lightKeywords(light, LightPassKind::ForwardBase),
+              (Names{"DIRECTIONAL", "DIRLIGHTMAP_COMBINED", "LIGHTMAP_ON",
+                     "LIGHTMAP_SHADOW_MIXING"}));
+    light.lightmap = false;  // no lightmap: the direction and the mixing have nothing to act on
+    EXPECT_EQ(lightKeywords(light, LightPassKind::ForwardBase),
+              (Names{"DIRECTIONAL", "VERTEXLIGHT_ON"}));
+}
+
+// Every combination of the ForwardBase inputs is an exact fwdbase variant, and together they
+// reach all 136: the renderer can draw every variant of the shortcut.
+TEST(LightKeywords, ForwardBaseRequestsReachEveryFwdbaseVariant) {
+    VariantSpace space = testing::spaceOf({"multi_compile_fwdbase"}).value();
+    std::vector<VariantKey> variants = space.enumerate();
+    std::vector<bool> reached(variants.size(), false);
+    for (unsigned bits = 0; bits < 256; ++bits) {
+        LightDescription light;
+        light.shadows = (bits & 1) ? ShadowMode::Hard : ShadowMode::None;
+        light.vertexLightCount = (bits & 2) ? 1 : 0;
+        light.lightProbes = bits & 4;
+        light.lightmap = bits & 8;
+        light.dirLightmap = bits & 16;
+        light.dynamicLightmap = bits & 32;
+        light.shadowmask = bits & 64;
+        light.shadowMixing = bits & 128;
+        VariantKey requested =
+            space.table().keyOf(lightKeywords(light, LightPassKind::ForwardBase));
+        Selection selection = selectVariant(variants, requested, SelectionPolicy::Strict);
+        ASSERT_TRUE(selection.exact) << bits;
+        reached[*selection.index] = true;
+    }
+    EXPECT_EQ(variants.size(), 136u);
+    EXPECT_EQ(std::count(reached.begin(), reached.end(), true), 136);
 }
 
 TEST(LightKeywords, ParsesNamesCaseInsensitively) {

@@ -22,6 +22,13 @@ struct LightDescription {
     int vertexLightCount = 0;  // ForwardBase: point lights shaded per vertex (VERTEXLIGHT_ON)
     bool hdr = false;          // camera HDR (UNITY_HDR_ON in deferred passes)
     bool lightProbes = false;  // ForwardBase: object samples SH (LIGHTPROBE_SH)
+    // ForwardBase, the object's lightmaps (docs/KEYWORDS.md §9): LIGHTMAP_ON,
+    // DIRLIGHTMAP_COMBINED, DYNAMICLIGHTMAP_ON, SHADOWS_SHADOWMASK, LIGHTMAP_SHADOW_MIXING.
+    bool lightmap = false;
+    bool dirLightmap = false;
+    bool dynamicLightmap = false;
+    bool shadowmask = false;
+    bool shadowMixing = false;
 };
 
 std::optional<LightType> parseLightType(std::string_view name);
@@ -33,6 +40,7 @@ std::optional<LightPassKind> lightPassKindFromLightMode(std::string_view lightMo
 //   ForwardAdd, point + cookie              -> {POINT_COOKIE}
 //   ForwardAdd, spot, hard shadows          -> {SHADOWS_DEPTH, SPOT}
 //   ForwardBase, directional, 2 vertex lights -> {DIRECTIONAL, VERTEXLIGHT_ON}
+//   ForwardBase, lightmap, 2 vertex lights    -> {DIRECTIONAL, LIGHTMAP_ON} (never both)
 //   DeferredLight, point, soft, hdr         -> {POINT, SHADOWS_CUBE, SHADOWS_SOFT, UNITY_HDR_ON}
 std::vector<std::string> lightKeywords(const LightDescription& light, LightPassKind pass);
 

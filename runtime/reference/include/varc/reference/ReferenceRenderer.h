@@ -52,8 +52,9 @@ Result<MaterialParams> resolveMaterial(const scene::Material& material);
 
 struct ReferenceOptions {
     // Base-pass LIGHTPROBE_SH for shaders with that keyword (SimpleDiffuse, GlslVertexLights):
-    // on = max(0, ShadeSH9) ambient, off = the flat UNITY_LIGHTMODEL_AMBIENT. Unity turns it on
-    // for every object that is not lightmapped.
+    // on = max(0, ShadeSH9) ambient, off = the flat UNITY_LIGHTMODEL_AMBIENT. Each object's
+    // own setting decides (scene::ObjectLightmaps: on unless lightmapped or "light_probes":
+    // false); false turns it off for every object.
     bool lightProbeSh = true;
     // Mutation hooks for the comparator's tests: replace the falloff lookup, or edit the light
     // assignment after assignForwardLights. Leave empty for real references.

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -21,6 +22,9 @@ enum class LightType { Directional, Point, Spot };
 enum class LightRenderMode { Auto, Important, NotImportant };
 enum class RenderPath { Forward, Deferred, SinglePass };
 enum class ShadowType { None, Hard, Soft };
+// Unity's Lighting window "Lighting Mode" for mixed lights, with the quality setting's Shadowmask
+// Mode split in two (docs/SCENES.md "Lightmaps"): which shadow-mixing keywords objects get.
+enum class MixedLightingMode { BakedIndirect, Subtractive, Shadowmask, DistanceShadowmask };
 
 // Unity conventions: left-handed, y up, metres; local +z forward; Euler angles in degrees applied
 // as Unity does (rotation = Ry(y) * Rx(x) * Rz(z), i.e. z first, then x, then y). The rotation
@@ -66,11 +70,32 @@ struct Material {
 // reference model: the scene renders without a comparison).
 std::string referenceModelOf(const Material& material);
 
+// An object's lightmaps ("lightmap" in the scene file), SHADER_ABI.md §4.13, §6: each map a
+// constant (linear HDR colours, bound as 1x1 float textures) or a PNG file (|*File|, a path
+// resolved against the scene file; its values as stored, linear, bound UNORM; the constant is
+// then unused). At least one of |baked| and |realtime| is set.
+struct Lightmap {
+    std::optional<glm::vec3> baked;      // LIGHTMAP_ON: unity_Lightmap
+    std::optional<glm::vec3> realtime;   // DYNAMICLIGHTMAP_ON: unity_DynamicLightmap
+    // DIRLIGHTMAP_COMBINED: the dominant direction (unit, world) and rebalancing factor w of
+    // unity_LightmapInd / unity_DynamicDirectionality (stored as xyz * 0.5 + 0.5, w).
+    std::optional<glm::vec4> directional;
+    glm::vec4 shadowmask{1.0f};                    // unity_ShadowMask (per light channel)
+    std::string bakedFile, realtimeFile, directionalFile, shadowmaskFile;  // "" = the constant
+    glm::vec4 scaleOffset{1.0f, 1.0f, 0.0f, 0.0f};  // unity_LightmapST
+    glm::vec4 realtimeScaleOffset{1.0f, 1.0f, 0.0f, 0.0f};  // unity_DynamicLightmapST
+};
+
 struct Object {
     std::string name;  // "" allowed
     MeshKind mesh = MeshKind::Sphere;
     Transform transform;
     Material material;
+    std::optional<Lightmap> lightmap;  // none: a dynamic object
+    // Unity's renderer "Light Probes" setting ("light_probes"); unset: on for objects without a
+    // lightmap, off for lightmapped ones (usesLightProbes()).
+    std::optional<bool> lightProbes;
+    bool usesLightProbes() const { return lightProbes.value_or(!lightmap.has_value()); }
 };
 
 struct Light {
@@ -109,6 +134,8 @@ struct Scene {
     int shadowCascades = 1;
     glm::vec3 cascadeSplits{0.067f, 0.2f, 0.467f};
     bool stableFit = true;
+    // lighting.mixed_mode: how baked and realtime shadows mix (docs/SCENES.md "Lightmaps").
+    MixedLightingMode mixedLighting = MixedLightingMode::BakedIndirect;
     std::vector<Object> objects;
     std::vector<Light> lights;
 };
