@@ -69,11 +69,13 @@ echo "== varc validate: the single-pass forward scenes (light buffer, per-object
 seeds=../shared/seeds
 if [ -d "$seeds" ]; then
     echo
-    echo "== varc validate: seeds 001 and 004 as their texts print them (assembled in $out/seed-texts;"
-    echo "   the lightmaps-* scenes draw every ForwardBase variant of both),"
+    echo "== varc validate: seeds 001, 003 and 004 as their texts print them"
+    echo "   (assembled in $out/seed-texts; the lightmaps-* scenes draw every ForwardBase variant"
+    echo "   of 001 and 004, the seed003-* scenes both variants of 003),"
     echo "   seed 002's own Custom/DeferredShading as the deferred path's light shader =="
     bash tests/library/assemble_seeds.sh "$seeds" "$out/seed-texts"
-    "$varc" build -o "$out/seed-texts.svpack" "$out/seed-texts/seed001" "$out/seed-texts/seed004"
+    "$varc" build -o "$out/seed-texts.svpack" "$out/seed-texts/seed001" \
+        "$out/seed-texts/seed003" "$out/seed-texts/seed004"
     "$varc" validate "${pack_args[@]}" --pack "$out/seed-texts.svpack" \
         --scenes tests/scenes/seeds --out "$out/seeds" || validate_status=$?
 fi

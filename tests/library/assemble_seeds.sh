@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Assembles the final shaders printed in seeds 001 and 004 from the seed texts, read in place, into
-# OUT_DIR (never into the repository): OUT_DIR/seed001/seed001.shader and
-# OUT_DIR/seed004/seed004.shader. Nothing is rewritten; the only text not taken from the seeds is
-# the glue listed below.
+# Assembles the final shaders printed in seeds 001, 003 and 004 from the seed texts, read in place,
+# into OUT_DIR (never into the repository): OUT_DIR/seed001/seed001.shader,
+# OUT_DIR/seed003/{Shaders,ShaderLibrary}/Lit.{shader,hlsl} and OUT_DIR/seed004/seed004.shader.
+# Nothing is rewritten; the only text not taken from the seeds is the glue listed below.
 #   seed 001: the "Complete Shader Code" block, verbatim (from `Shader "` to the first `}` in
 #             column 0).
 #   seed 004: the skeleton `Shader "BetterDiffuse"` with, in each pass after `#pragma fragment frag`:
@@ -14,6 +14,8 @@
 #             property declarations, then the pass's structs, vertex and fragment functions as
 #             printed: the add pass gets the first versions, the base pass the later
 #             "ForwardBase" vertex_output/vert/frag. Pass PLAIN=1 to leave out the pragmas.
+#   seed 003: assemble_seed003.py (its pieces, their final states and the frame of our own that
+#             the text takes from a previous tutorial are listed there).
 # Usage: assemble_seeds.sh SEEDS_DIR OUT_DIR
 # Exit: 0 written; 1 a seed text is missing or no longer has the expected pieces.
 set -euo pipefail
@@ -21,7 +23,9 @@ set -euo pipefail
 seeds="$1"
 out="$2"
 seed001=$(ls "$seeds"/001_*.txt)
+seed003=$(ls "$seeds"/003_*.txt)
 seed004=$(ls "$seeds"/004_*.txt)
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 
 # Prints the Nth (1-based) piece of FILE that starts at a line matching REGEX and ends where its
 # braces balance (a function body or a struct declaration).
@@ -51,6 +55,9 @@ mkdir -p "$out/seed001" "$out/seed004"
 text=$(awk '/^Shader "/ { on = 1 } on { print } on && /^}/ { exit }' "$seed001")
 require "seed 001 shader" "$text"
 printf '%s\n' "$text" > "$out/seed001/seed001.shader"
+
+# Seed 003.
+python3 "$here/assemble_seed003.py" "$seed003" "$out/seed003"
 
 # Seed 004.
 skeleton=$(line_range "$seed004" '^Shader "BetterDiffuse"' '^}')

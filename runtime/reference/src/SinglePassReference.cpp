@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// SinglePassReference: varc/SinglePassLit on the CPU (docs/LIGHTING.md §8.4), on the shared
-// visibility buffer.
+// SinglePassReference: varc/SinglePassLit and seed 003's Lit shader on the CPU (docs/LIGHTING.md
+// §8.4), on the shared visibility buffer.
 #include "varc/reference/SinglePassReference.h"
 
 #include <algorithm>
@@ -14,23 +14,29 @@
 namespace varc::reference {
 namespace {
 
-constexpr const char* kShader = "varc/SinglePassLit";
+constexpr const char* kLibraryModel = "varc-single-pass-lit";
+// Seed 003's "My Pipeline/Lit": the same light buffer and fades, but the normal is
+// mul((float3x3)UNITY_MATRIX_M, normal) (uniform scale assumed), unnormalised in the vertex
+// stage (its per-vertex lights use it as is) and normalised per fragment.
+constexpr const char* kSeed003Model = "seed003";
 
 float saturate(float x) { return std::clamp(x, 0.0f, 1.0f); }
 
 // What one object's draw needs per fragment.
 struct ObjectShading {
     glm::vec3 albedo{1.0f};
+    bool modelMatrixNormals = false;  // seed003: M's 3x3 part, not the inverse transpose
     std::vector<const scene::Light*> pixelLights;  // idx0[k], k < min(count, 4)
     const scene::Mesh* mesh = nullptr;
     std::vector<glm::vec3> worldPos, worldNormal, vertexLighting;  // per mesh vertex
 };
 
 Result<glm::vec3> albedoOf(const scene::Material& material) {
-    if (scene::referenceModelOf(material) != "varc-single-pass-lit") {
+    const std::string model = scene::referenceModelOf(material);
+    if (model != kLibraryModel && model != kSeed003Model) {
         return makeError(ErrorCode::NotFound,
                          "the single-pass reference has no model for shader '" + material.shader +
-                             "' (only " + kShader + ")");
+                             "' (only " + kLibraryModel + " and " + kSeed003Model + ")");
     }
     auto it = material.properties.find("_Color");
     if (it == material.properties.end()) return glm::vec3(1.0f);
@@ -48,6 +54,7 @@ Result<ObjectShading> prepareObject(const scene::Scene& scene,
     auto albedo = albedoOf(object.material);
     if (!albedo) return albedo.error();
     out.albedo = *albedo;
+    out.modelMatrixNormals = scene::referenceModelOf(object.material) == kSeed003Model;
     scene::ObjectLightList list = scene::objectLightList(scene, visible, object);
     if (options.editLights) options.editLights(list);
     // The shader clamps every index into the 16-slot buffer and reads only the first
@@ -65,11 +72,15 @@ Result<ObjectShading> prepareObject(const scene::Scene& scene,
 
     out.mesh = &scene::builtinMesh(object.mesh);
     const glm::mat4 objectToWorld = object.transform.localToWorld();
-    // normalize(mul(normalOS, (float3x3)unity_WorldToObject)): the inverse transpose.
-    const glm::mat3 normalMatrix = glm::transpose(glm::mat3(glm::inverse(objectToWorld)));
+    // varc-single-pass-lit: normalize(mul(normalOS, (float3x3)unity_WorldToObject)), the
+    // inverse transpose; seed003: mul((float3x3)UNITY_MATRIX_M, normalOS), not normalised.
+    const glm::mat3 normalMatrix = out.modelMatrixNormals
+                                       ? glm::mat3(objectToWorld)
+                                       : glm::transpose(glm::mat3(glm::inverse(objectToWorld)));
     for (size_t i = 0; i < out.mesh->positions.size(); ++i) {
         const glm::vec3 p(objectToWorld * glm::vec4(out.mesh->positions[i], 1.0f));
-        const glm::vec3 n = glm::normalize(normalMatrix * out.mesh->normals[i]);
+        glm::vec3 n = normalMatrix * out.mesh->normals[i];
+        if (!out.modelMatrixNormals) n = glm::normalize(n);
         glm::vec3 lighting(0.0f);
         for (const scene::Light* light : vertexLights) {
             lighting += singlePassIrradiance(*light, p, n, options.spotInnerTangentRatio);
