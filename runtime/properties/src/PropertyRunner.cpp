@@ -118,12 +118,19 @@ public:
         outcome.detail += writeImages("lit", label, lit->image, nullptr) + "\n";
     }
 
-private:
+    // The frame drawn under |label|, or nullptr (not drawn, or its render failed).
+    const runtime::RenderedFrame* frame(const std::string& label) const {
+        auto found = mFrames.find(label);
+        return found == mFrames.end() ? nullptr : &found->second;
+    }
+
     RelationOutcome& outcomeOf(const std::string& relation) {
         for (RelationOutcome& outcome : mReport.relations)
             if (outcome.relation == relation) return outcome;
         return mReport.relations.front();
     }
+
+private:
 
     void checkFinite(const std::string& label, const runtime::RenderedFrame& frame) {
         RelationOutcome& outcome = outcomeOf("finite");
@@ -284,7 +291,106 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
              {{allFrame, 1.0f}}, moved);
 }
 
+
+// The share of the pixels a key light must change (or a doubled light brighten) to count: 2%, as
+// for `lit`, by more than 1/64 (4 8-bit LSB, far above half-float rounding of values <= 4).
+constexpr size_t kSharePercent = 2;
+constexpr float kVisible = 1.0f / 64.0f;
+
+bool atLeastShare(size_t pixels, const Image& image) {
+    return pixels * 100 >= kSharePercent * image.width() * image.height();
+}
+
+void markNotApplicable(ShaderCheck& c, const std::vector<std::string>& relations,
+                       const std::string& reason) {
+    for (const std::string& relation : relations) {
+        RelationOutcome& outcome = c.outcomeOf(relation);
+        outcome.verdict = Verdict::NotApplicable;
+        outcome.detail = reason;
+    }
+}
+
+// "not-lit" when no key light the shader takes changes kSharePercent of the pixels by more than
+// kVisible against the unlit render; returns the counts ("directional 0, point 3 of 4096").
+bool notLit(const ShaderCheck& c, const LightSupport& support, std::string& counts) {
+    const runtime::RenderedFrame* none = c.frame("no lights");
+    if (!none) return false;
+    std::vector<std::string> keys{"directional"};
+    if (support.point) keys.push_back("point");
+    if (support.spot) keys.push_back("spot");
+    for (const std::string& key : keys) {
+        const runtime::RenderedFrame* lit = c.frame(key);
+        if (!lit) return false;
+        const size_t changed = pixelsChanged(lit->image, none->image, kVisible);
+        if (atLeastShare(changed, lit->image)) return false;
+        counts += (counts.empty() ? "" : ", ") + key + " " + std::to_string(changed);
+    }
+    counts += " of " + std::to_string(size_t{none->image.width()} * none->image.height());
+    return true;
+}
+
+// "non-linear" when `intensity` failed but every doubled light brightens (no pixel darker than
+// with the light once, within half-float rounding) and one of them brightens kSharePercent of the
+// pixels by more than kVisible: the shader responds to intensity, only not in proportion.
+bool nonLinear(const ShaderCheck& c, const LightSupport& support, std::string& counts) {
+    std::vector<std::pair<std::string, std::string>> cases{{"directional", "directional x2"}};
+    if (support.point) cases.emplace_back("point", "point x2");
+    bool responds = false;
+    for (const auto& [once, twice] : cases) {
+        const runtime::RenderedFrame* a = c.frame(once);
+        const runtime::RenderedFrame* b = c.frame(twice);
+        if (!a || !b) return false;
+        const Growth growth = contributionGrowth(a->image, b->image, kZero, 2 * kHalfUlp, kVisible);
+        if (growth.shrinking > 0) return false;
+        responds = responds || atLeastShare(growth.growing, a->image);
+        counts += (counts.empty() ? "" : ", ") + once + " x2 brightens " +
+                  std::to_string(growth.growing);
+    }
+    return responds;
+}
+
+// Decides the report's LightingModel from the renders and marks the relations that do not apply.
+void classify(ShaderCheck& c, const LightSupport& support, ShaderReport& report) {
+    if (!report.error.empty()) return;
+    std::string counts;
+    if (notLit(c, support, counts)) {
+        report.model = LightingModel::NotLit;
+        report.modelReason = "not a lit shader: no key light changes 2% of the pixels by > 1/64 (" +
+                             counts + ")";
+        markNotApplicable(c, notLitRelations(), report.modelReason);
+        return;
+    }
+    counts.clear();
+    if (c.outcomeOf("intensity").verdict == Verdict::Fail && nonLinear(c, support, counts)) {
+        report.model = LightingModel::NonLinear;
+        report.modelReason =
+            "non-linear model: a doubled light brightens, darkens nothing, but does not double "
+            "its contribution (" +
+            counts + " pixels): intensity is n/a";
+        markNotApplicable(c, {"intensity"}, report.modelReason);
+    }
+}
+
 }  // namespace
+
+const char* modelName(LightingModel model) {
+    switch (model) {
+        case LightingModel::Lit:
+            return "lit";
+        case LightingModel::NotLit:
+            return "not-lit";
+        case LightingModel::NonLinear:
+            return "non-linear";
+    }
+    return "?";
+}
+
+const std::vector<std::string>& notLitRelations() {
+    static const std::vector<std::string> kNames{"dark",         "lit",        "out_of_range",
+                                                 "black_cookie", "white_cookie", "additivity",
+                                                 "additivity_ldr", "intensity"};
+    return kNames;
+}
 
 const char* verdictName(Verdict verdict) {
     switch (verdict) {
@@ -347,6 +453,7 @@ ShaderReport PropertyRunner::check(const runtime::ShaderView& shader) {
     if (support.spot) report.lights += " spot";
     if (support.directionalCookie) report.lights += " directional-cookie";
     checkRelations(check, report.shader, support, *cookies, mOptions.size);
+    classify(check, support, report);
     return report;
 }
 

@@ -64,6 +64,21 @@ struct NonFinite {
 };
 NonFinite findNonFinite(const runtime::Image& image);
 
+// The pixels where some RGB channel of |a| and |b| differ by more than |by| (either way; 8-bit
+// channels as value / 255); both of one size (VARC_CHECK).
+size_t pixelsChanged(const runtime::Image& a, const runtime::Image& b, float by);
+
+// How a light's contribution (its render minus the unlit render) changes when its intensity
+// doubles: the pixels where some channel of |twice| is below |once| by more than |absolute| +
+// |relative| x (|once| + |twice|) (the contribution shrank), and those where some channel of
+// |twice| exceeds |once| by more than |by| (it grew). All three of one size (VARC_CHECK).
+struct Growth {
+    size_t shrinking = 0;
+    size_t growing = 0;
+};
+Growth contributionGrowth(const runtime::Image& once, const runtime::Image& twice, float absolute,
+                          float relative, float by);
+
 // The pixels where some RGB channel of |lit| exceeds the same channel of |unlit| by more than
 // |by| (8-bit channels as value / 255); both of one size (VARC_CHECK).
 size_t pixelsBrighter(const runtime::Image& lit, const runtime::Image& unlit, float by);
