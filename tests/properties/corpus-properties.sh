@@ -28,7 +28,7 @@ skipped=()
 unlit=()
 status=0
 relations=(finite dark lit out_of_range black_cookie white_cookie additivity additivity_ldr
-           intensity translation rotation scale)
+           intensity translation rotation mirror scale)
 
 # "a, b, c" ("none" when empty).
 commaList() {

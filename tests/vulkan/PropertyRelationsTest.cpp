@@ -94,6 +94,7 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
         {"varc-mutants/UnnormalisedNormal", {"scale"}},
         {"varc-mutants/NanSpot", {"finite"}},
         {"varc-mutants/IntensityIgnored", {"intensity"}},
+        {"varc-mutants/WorldXLight", {"rotation", "mirror"}},
     };
     ASSERT_EQ(reports.size(), expected.size() + 3)
         << "the mutants, the control and the two classification fixtures";

@@ -218,6 +218,23 @@ Growth contributionGrowth(const Image& once, const Image& twice, float absolute,
     return growth;
 }
 
+Image flippedLeftRight(const Image& image) {
+    Image flipped = image;
+    const size_t width = image.width(), channels = 4;
+    auto flipRows = [&](auto source, auto target) {
+        for (size_t y = 0; y < image.height(); ++y)
+            for (size_t x = 0; x < width; ++x)
+                for (size_t c = 0; c < channels; ++c)
+                    target[(y * width + (width - 1 - x)) * channels + c] =
+                        source[(y * width + x) * channels + c];
+    };
+    if (image.isFloat())
+        flipRows(image.floats(), flipped.floats());
+    else
+        flipRows(image.bytes(), flipped.bytes());
+    return flipped;
+}
+
 NonFinite findNonFinite(const Image& image) {
     NonFinite found;
     if (!image.isFloat()) return found;  // 8-bit values are always finite

@@ -118,6 +118,15 @@ public:
         outcome.detail += writeImages("lit", label, lit->image, nullptr) + "\n";
     }
 
+    // |source| with its image flipped left to right, kept under |label| (not a render).
+    const runtime::RenderedFrame* flipped(const std::string& label,
+                                          const runtime::RenderedFrame* source) {
+        if (!source) return nullptr;
+        runtime::RenderedFrame frame = *source;
+        frame.image = flippedLeftRight(source->image);
+        return &mFrames.insert_or_assign(label, std::move(frame)).first->second;
+    }
+
     // The frame drawn under |label|, or nullptr (not drawn, or its render failed).
     const runtime::RenderedFrame* frame(const std::string& label) const {
         auto found = mFrames.find(label);
@@ -287,6 +296,9 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
              {{allFrame, 1.0f}}, moved);
     c.relate("rotation", "40 degrees about y", c.render("all lights turned", turned(allLit, 40.0f)),
              {{allFrame, 1.0f}}, moved);
+    c.relate("mirror", "in the plane x = 0",
+             c.render("all lights mirrored", mirrored(allLit)),
+             {{c.flipped("all lights flipped", allFrame), 1.0f}}, moved);
     c.relate("scale", "x2", c.render("all lights scaled", similar(allLit, 2.0f, glm::vec3(0.0f))),
              {{allFrame, 1.0f}}, moved);
 }
@@ -414,7 +426,8 @@ bool ShaderReport::passed() const {
 const std::vector<std::string>& relationNames() {
     static const std::vector<std::string> kNames{
         "finite",     "dark",           "lit",       "out_of_range", "black_cookie", "white_cookie",
-        "additivity", "additivity_ldr", "intensity", "translation",  "rotation",     "scale"};
+        "additivity", "additivity_ldr", "intensity", "translation",  "rotation",     "mirror",
+        "scale"};
     return kNames;
 }
 

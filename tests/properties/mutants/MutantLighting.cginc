@@ -86,6 +86,9 @@ UnityLight ForwardPixelLight(ForwardVaryings i, float3 normal) {
 #else
     light.color = _LightColor0.rgb * attenuation;
 #endif
+#if defined(MUTANT_WORLD_X_LIGHT)
+    light.color *= light.dir.x >= 0 ? 1.0 : 0.5;  // bug: depends on the world x axis
+#endif
     light.ndotl = saturate(dot(normal, light.dir));
     return light;
 }

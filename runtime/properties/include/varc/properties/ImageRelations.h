@@ -57,6 +57,9 @@ inline constexpr size_t kWorstPixels = 5;
 RelationCheck checkRelation(const runtime::Image& actual, const std::vector<Term>& terms,
                             const Tolerance& tolerance);
 
+// |image| flipped left to right: pixel (x, y) moves to (width - 1 - x, y).
+runtime::Image flippedLeftRight(const runtime::Image& image);
+
 // The pixels of |image| (any format) that hold a NaN or an infinity in any channel.
 struct NonFinite {
     size_t count = 0;

@@ -56,4 +56,12 @@ scene::Scene similar(const scene::Scene& scene, float scale, glm::vec3 offset);
 // Ry(a + y) Rx(x) Rz(z)). The camera turns too, so a correct shader draws the same image.
 scene::Scene turned(const scene::Scene& scene, float degrees);
 
+// |scene| mirrored in the plane x = 0 (S = diag(-1, 1, 1)): positions' x negated, Unity Euler
+// angles (x, y, z) -> (x, -y, -z) (S Ry(y) Rx(x) Rz(z) S = Ry(-y) Rx(x) Rz(-z)) and objects'
+// x scale negated, so each object is its original mirrored vertex by vertex (a transform with a
+// negative determinant, which culls the other side, as in Unity). The camera of emptyScene()
+// lies in that plane looking along it: a correct shader draws the render of |scene| flipped left
+// to right.
+scene::Scene mirrored(const scene::Scene& scene);
+
 }  // namespace varc::properties
