@@ -95,6 +95,7 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
         {"varc-mutants/NanSpot", {"finite"}},
         {"varc-mutants/IntensityIgnored", {"intensity"}},
         {"varc-mutants/WorldXLight", {"rotation", "mirror"}},
+        {"varc-mutants/PointCookieNoFalloff", {"white_cookie"}},
     };
     ASSERT_EQ(reports.size(), expected.size() + 3)
         << "the mutants, the control and the two classification fixtures";
@@ -121,6 +122,12 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
               (std::set<std::string>{"black_cookie"}));
     EXPECT_EQ(failing(reports.at("varc-mutants/UnnormalisedNormal")),
               (std::set<std::string>{"scale"}));
+    // The white cube cookie on a point light: only POINT_COOKIE is broken.
+    EXPECT_EQ(failing(reports.at("varc-mutants/PointCookieNoFalloff")),
+              (std::set<std::string>{"white_cookie"}));
+    EXPECT_NE(detailOf(reports.at("varc-mutants/PointCookieNoFalloff"), "white_cookie")
+                  .find("{POINT_COOKIE}"),
+              std::string::npos);
     // The failure names the case, the variant and the worst pixels.
     const std::string detail = detailOf(reports.at("varc-mutants/CookieIgnored"), "black_cookie");
     EXPECT_NE(detail.find("directional:"), std::string::npos) << detail;

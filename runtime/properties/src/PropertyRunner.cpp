@@ -252,6 +252,12 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
 
     const Tolerance sum{kZero, 3 * kHalfUlp, 0};
     const auto* pOnly = support.point ? c.render("point", lit({p})) : nullptr;
+    // The built-in white cube cookie (alpha 1) turns POINT into POINT_COOKIE, which must draw
+    // the same light: the cookie multiplies the falloff by exactly 1.
+    if (support.pointCookie)
+        c.relate("white_cookie", "point",
+                 c.render("point white cookie", lit({withCookie(p, "white")})), {{pOnly, 1.0f}},
+                 same);
     if (support.point) c.requireLight("point", pOnly, none);
     if (support.spot) c.requireLight("spot", c.render("spot", lit({s})), none);
     if (support.forwardAdd) {
@@ -465,6 +471,7 @@ ShaderReport PropertyRunner::check(const runtime::ShaderView& shader) {
     if (support.point) report.lights += " point";
     if (support.spot) report.lights += " spot";
     if (support.directionalCookie) report.lights += " directional-cookie";
+    if (support.pointCookie) report.lights += " point-cookie";
     checkRelations(check, report.shader, support, *cookies, mOptions.size);
     classify(check, support, report);
     return report;

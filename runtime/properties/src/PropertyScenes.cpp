@@ -34,6 +34,7 @@ LightSupport lightSupportOf(const runtime::ShaderView& shader) {
     support.point = !anyLightKeyword || declares(*add, "POINT");
     support.spot = declares(*add, "SPOT");
     support.directionalCookie = declares(*add, "DIRECTIONAL_COOKIE");
+    support.pointCookie = declares(*add, "POINT_COOKIE");
     return support;
 }
 

@@ -81,6 +81,10 @@ UnityLight ForwardPixelLight(ForwardVaryings i, float3 normal) {
                   max(1e-4, max(_LightColor0.r, max(_LightColor0.g, _LightColor0.b))) * attenuation;
 #elif defined(MUTANT_SQRT_COLOUR)
     light.color = sqrt(_LightColor0.rgb) * attenuation;  // a non-linear model by design
+#elif defined(MUTANT_POINT_COOKIE_NO_FALLOFF) && defined(POINT_COOKIE)
+    // bug: the cube cookie alone, the distance falloff (_LightTextureB0) forgotten
+    float3 lightCoord = mul(unity_WorldToLight, float4(i.worldPos, 1)).xyz;
+    light.color = _LightColor0.rgb * texCUBE(_LightTexture0, lightCoord).w;
 #elif defined(MUTANT_NAN_SPOT) && defined(SPOT)
     light.color = _LightColor0.rgb * attenuation * sqrt(-1.0 - attenuation);  // bug: NaN here
 #else

@@ -14,7 +14,7 @@
 namespace varc::properties {
 
 // Which lights a shader's forward passes can draw, from its ForwardAdd pass's keywords: POINT,
-// SPOT, DIRECTIONAL_COOKIE (multi_compile_fwdadd). A ForwardAdd pass without any light keyword
+// SPOT, DIRECTIONAL_COOKIE, POINT_COOKIE (multi_compile_fwdadd). A ForwardAdd pass without any light keyword
 // (it tells lights apart by _WorldSpaceLightPos0.w) takes directional and point lights only.
 struct LightSupport {
     bool forwardBase = false;  // the shader has a ForwardBase pass: it is checked at all
@@ -22,6 +22,7 @@ struct LightSupport {
     bool point = false;
     bool spot = false;
     bool directionalCookie = false;
+    bool pointCookie = false;
 };
 LightSupport lightSupportOf(const runtime::ShaderView& shader);
 
