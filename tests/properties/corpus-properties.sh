@@ -28,7 +28,7 @@ skipped=()
 unlit=()
 status=0
 relations=(finite dark lit out_of_range black_cookie white_cookie additivity additivity_ldr
-           intensity translation rotation mirror scale)
+           intensity translation rotation mirror scale every_variant)
 
 # "a, b, c" ("none" when empty).
 commaList() {
@@ -68,6 +68,15 @@ rowsOf() {
         }' "$1"
 }
 
+# The screen-space shadow collector (varc's shaders/internal), beside every corpus pack: with it
+# the checks draw directional shadows too (every_variant).
+root=$(cd "$(dirname "$0")/../.." && pwd)
+internal="$work/packs/internal.svpack"
+if ! "$varc" build -o "$internal" "$root/shaders/internal" >"$work/logs/internal.build" 2>&1; then
+    echo "FAIL: shaders/internal does not build (see $work/logs/internal.build)"
+    exit 1
+fi
+
 while IFS= read -r -d '' file; do
     rel=${file#"$compat"/}
     grep -qi "ForwardBase" "$file" || continue
@@ -91,7 +100,8 @@ while IFS= read -r -d '' file; do
         status=1
         continue
     fi
-    timeout 600 "$varc" validate --properties --pack "$pack" --out "$work/images/$name" \
+    timeout 600 "$varc" validate --properties --pack "$pack" --pack "$internal" \
+        --out "$work/images/$name" \
         >"$log.out" 2>"$log.err"
     vstatus=$?
     # "ForwardBase" in the text but no lit pass in the pack: listed, not checked.

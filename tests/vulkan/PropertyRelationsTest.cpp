@@ -73,9 +73,12 @@ TEST_F(PropertyRelationsTest, EveryLibraryAndSeedShaderHoldsEveryRelation) {
                                                       << outcome.detail;
         EXPECT_GE(report.renders, 16u) << name;
     }
-    // varc/Forward takes every light type: every relation applies and passes.
+    // varc/Forward takes every light type: every relation applies and passes, and the checks
+    // draw each of its 15 lit variants (every_variant).
     for (const properties::RelationOutcome& outcome : reports.at("varc/Forward").relations)
         EXPECT_EQ(outcome.verdict, Verdict::Pass) << outcome.relation;
+    EXPECT_EQ(reports.at("varc/Forward").litVariantsDrawn(), 15u);
+    EXPECT_EQ(reports.at("varc/Forward").litVariants, 15u);
     // The GLSL shader's ForwardAdd pass has no light keywords: no spots, no cookies.
     const properties::ShaderReport& glsl = reports.at("varc/GlslVertexLights");
     EXPECT_EQ(verdictOf(glsl, "black_cookie"), Verdict::NotApplicable);

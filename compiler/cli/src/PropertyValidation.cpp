@@ -34,7 +34,7 @@ void printRow(const properties::ShaderReport& report, double seconds, std::ostre
         out << cell;
     }
     const std::string drawn =
-        std::to_string(report.variants.size()) + "/" + std::to_string(report.litVariants);
+        std::to_string(report.litVariantsDrawn()) + "/" + std::to_string(report.litVariants);
     std::snprintf(cell, sizeof cell, "  %-10s %8zu %6s %5.2fs  ", properties::modelName(report.model),
                   report.renders, drawn.c_str(), seconds);
     out << cell << report.lights << (report.error.empty() ? "" : "  ERROR") << "\n";

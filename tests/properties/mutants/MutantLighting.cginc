@@ -66,14 +66,17 @@ UnityLight ForwardPixelLight(ForwardVaryings i, float3 normal) {
     light.dir = normalize(UnityWorldSpaceLightDir(i.worldPos));
     UNITY_LIGHT_ATTENUATION(attenuation, i, i.worldPos);
 #if defined(MUTANT_NO_ATTENUATION)
-    light.color = _LightColor0.rgb;  // bug: attenuation (falloff, cookie) forgotten
+    // bug: attenuation (falloff, cookie) forgotten; 1e-30 x attenuation vanishes next to any
+    // light colour but keeps the shadow coordinates read (the validation layer reports vertex
+    // outputs a fragment program drops)
+    light.color = _LightColor0.rgb + 1e-30 * attenuation;
 #elif defined(MUTANT_COOKIE_IGNORED) && (defined(DIRECTIONAL_COOKIE) || defined(SPOT))
     // bug: the cookie is not sampled; a spot keeps only its distance falloff
     #if defined(SPOT)
     float3 lightCoord = mul(unity_WorldToLight, float4(i.worldPos, 1)).xyz;
-    light.color = _LightColor0.rgb * UnitySpotAttenuate(lightCoord);
+    light.color = _LightColor0.rgb * UnitySpotAttenuate(lightCoord) + 1e-30 * attenuation;
     #else
-    light.color = _LightColor0.rgb;
+    light.color = _LightColor0.rgb + 1e-30 * attenuation;
     #endif
 #elif defined(MUTANT_INTENSITY_IGNORED)
     // bug: the light's intensity is ignored (its colour scaled to a maximum of 1)
@@ -84,7 +87,7 @@ UnityLight ForwardPixelLight(ForwardVaryings i, float3 normal) {
 #elif defined(MUTANT_POINT_COOKIE_NO_FALLOFF) && defined(POINT_COOKIE)
     // bug: the cube cookie alone, the distance falloff (_LightTextureB0) forgotten
     float3 lightCoord = mul(unity_WorldToLight, float4(i.worldPos, 1)).xyz;
-    light.color = _LightColor0.rgb * texCUBE(_LightTexture0, lightCoord).w;
+    light.color = _LightColor0.rgb * texCUBE(_LightTexture0, lightCoord).w + 1e-30 * attenuation;
 #elif defined(MUTANT_NAN_SPOT) && defined(SPOT)
     light.color = _LightColor0.rgb * attenuation * sqrt(-1.0 - attenuation);  // bug: NaN here
 #else

@@ -58,11 +58,12 @@ struct ShaderReport {
     size_t litVariants = 0;          // variants of the ForwardBase and ForwardAdd passes
     std::string error;               // a render that failed ("" when all drew)
     bool passed() const;             // no error and no relation failed
+    size_t litVariantsDrawn() const;  // the |variants| of ForwardBase and ForwardAdd passes
 };
 
 // The relations in the order they are checked and printed: finite, dark, lit, out_of_range,
 // black_cookie, white_cookie, additivity, additivity_ldr, intensity, translation, rotation,
-// mirror, scale.
+// mirror, scale, every_variant.
 const std::vector<std::string>& relationNames();
 
 // The shaders of |packs| with a ForwardBase pass, in pack order; a name in two packs once (the
