@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <functional>
+#include <utility>
 #include <glm/gtc/constants.hpp>
 
 #include "VulkanTestSupport.h"
@@ -190,6 +191,23 @@ scene::Light makeLight(scene::LightType type, const std::string& cookie) {
     light.cookie = cookie;
     light.cookieSize = 2.0f;
     return light;
+}
+
+// Unity matches default texture names without regard to case: `_Tex ("Tex", 2D) = "Gray" {}`
+// is the gray texture (a corpus shader, RealisticShader, names it so), an unknown name is none.
+TEST_F(BuiltinHelpersTest, DefaultTextureNamesIgnoreAsciiCase) {
+    const BuiltinTextures& builtin = *mTextures;
+    for (const auto& [lower, other] : {std::pair{"gray", "Gray"}, std::pair{"white", "WHITE"},
+                                       std::pair{"bump", "Bump"}}) {
+        auto expected = builtin.named(lower, pack::ResourceDim::Dim2D);
+        auto got = builtin.named(other, pack::ResourceDim::Dim2D);
+        ASSERT_TRUE(expected && got) << other;
+        EXPECT_EQ(got->view, expected->view) << other;
+    }
+    EXPECT_NE(builtin.named("Gray", pack::ResourceDim::Dim2D)->view,
+              builtin.named("white", pack::ResourceDim::Dim2D)->view);
+    EXPECT_FALSE(builtin.named("Grayish", pack::ResourceDim::Dim2D));
+    EXPECT_TRUE(builtin.named("White", pack::ResourceDim::Cube));
 }
 
 struct AttenuationCase {

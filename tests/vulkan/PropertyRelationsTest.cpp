@@ -66,14 +66,19 @@ TEST_F(PropertyRelationsTest, EveryLibraryAndSeedShaderHoldsEveryRelation) {
     }
     for (const auto& [name, report] : reports) {
         EXPECT_TRUE(report.error.empty()) << name << ": " << report.error;
+        EXPECT_EQ(report.model, properties::LightingModel::Lit) << name << ": "
+                                                               << report.modelReason;
         for (const properties::RelationOutcome& outcome : report.relations)
             EXPECT_NE(outcome.verdict, Verdict::Fail) << name << " " << outcome.relation << ":\n"
                                                       << outcome.detail;
         EXPECT_GE(report.renders, 16u) << name;
     }
-    // varc/Forward takes every light type: every relation applies and passes.
+    // varc/Forward takes every light type: every relation applies and passes, and the checks
+    // draw each of its 15 lit variants (every_variant).
     for (const properties::RelationOutcome& outcome : reports.at("varc/Forward").relations)
         EXPECT_EQ(outcome.verdict, Verdict::Pass) << outcome.relation;
+    EXPECT_EQ(reports.at("varc/Forward").litVariantsDrawn(), 15u);
+    EXPECT_EQ(reports.at("varc/Forward").litVariants, 15u);
     // The GLSL shader's ForwardAdd pass has no light keywords: no spots, no cookies.
     const properties::ShaderReport& glsl = reports.at("varc/GlslVertexLights");
     EXPECT_EQ(verdictOf(glsl, "black_cookie"), Verdict::NotApplicable);
@@ -91,8 +96,12 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
         {"varc-mutants/CookieIgnored", {"black_cookie"}},
         {"varc-mutants/UnnormalisedNormal", {"scale"}},
         {"varc-mutants/NanSpot", {"finite"}},
+        {"varc-mutants/IntensityIgnored", {"intensity"}},
+        {"varc-mutants/WorldXLight", {"rotation", "mirror"}},
+        {"varc-mutants/PointCookieNoFalloff", {"white_cookie"}},
     };
-    ASSERT_EQ(reports.size(), expected.size() + 1) << "the mutants and the control";
+    ASSERT_EQ(reports.size(), expected.size() + 3)
+        << "the mutants, the control and the two classification fixtures";
     const properties::ShaderReport& control = reports.at("varc-mutants/Control");
     EXPECT_TRUE(control.passed()) << "the unmodified copy must hold every relation";
     for (const properties::RelationOutcome& outcome : control.relations)
@@ -104,17 +113,55 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
         std::set<std::string> failed = failing(report);
         for (const std::string& relation : catchers)
             EXPECT_TRUE(failed.count(relation)) << name << " is not caught by " << relation;
+        // A bug is never excused as a model: every mutant stays "lit".
+        EXPECT_EQ(report.model, properties::LightingModel::Lit) << name << ": "
+                                                               << report.modelReason;
     }
+    // A light whose intensity is ignored does not brighten when doubled: a bug, not a model.
+    EXPECT_EQ(failing(reports.at("varc-mutants/IntensityIgnored")),
+              (std::set<std::string>{"intensity"}));
     // The narrow mutants break nothing else: the relations are specific, not noisy.
     EXPECT_EQ(failing(reports.at("varc-mutants/CookieIgnored")),
               (std::set<std::string>{"black_cookie"}));
     EXPECT_EQ(failing(reports.at("varc-mutants/UnnormalisedNormal")),
               (std::set<std::string>{"scale"}));
+    // The white cube cookie on a point light: only POINT_COOKIE is broken.
+    EXPECT_EQ(failing(reports.at("varc-mutants/PointCookieNoFalloff")),
+              (std::set<std::string>{"white_cookie"}));
+    EXPECT_NE(detailOf(reports.at("varc-mutants/PointCookieNoFalloff"), "white_cookie")
+                  .find("{POINT_COOKIE}"),
+              std::string::npos);
     // The failure names the case, the variant and the worst pixels.
     const std::string detail = detailOf(reports.at("varc-mutants/CookieIgnored"), "black_cookie");
     EXPECT_NE(detail.find("directional:"), std::string::npos) << detail;
     EXPECT_NE(detail.find("{DIRECTIONAL_COOKIE}"), std::string::npos) << detail;
     EXPECT_NE(detail.find("expected 0 got"), std::string::npos) << detail;
+}
+
+// Relations that do not apply are n/a with the reason, never failures: a shader drawn the same
+// whatever its lights is not lit; one whose light colour goes through sqrt is a non-linear model.
+TEST_F(PropertyRelationsTest, ModelsThatTheRelationsDoNotDescribeAreNotApplicable) {
+    auto reports = check("mutants.svpack");
+    ASSERT_TRUE(reports.count("varc-mutants/Unlit") && reports.count("varc-mutants/SqrtColour"));
+    const properties::ShaderReport& unlit = reports.at("varc-mutants/Unlit");
+    EXPECT_EQ(unlit.model, properties::LightingModel::NotLit);
+    EXPECT_TRUE(unlit.passed()) << unlit.modelReason;
+    EXPECT_NE(unlit.modelReason.find("directional 0, point 0, spot 0 of 4096"), std::string::npos)
+        << unlit.modelReason;
+    for (const std::string& relation : properties::notLitRelations()) {
+        EXPECT_EQ(verdictOf(unlit, relation), Verdict::NotApplicable) << relation;
+        EXPECT_EQ(detailOf(unlit, relation), unlit.modelReason) << relation;
+    }
+    for (const char* relation : {"finite", "translation", "rotation", "scale"})
+        EXPECT_EQ(verdictOf(unlit, relation), Verdict::Pass) << relation;
+
+    const properties::ShaderReport& sqrtColour = reports.at("varc-mutants/SqrtColour");
+    EXPECT_EQ(sqrtColour.model, properties::LightingModel::NonLinear) << sqrtColour.modelReason;
+    EXPECT_EQ(verdictOf(sqrtColour, "intensity"), Verdict::NotApplicable);
+    for (const properties::RelationOutcome& outcome : sqrtColour.relations) {
+        if (outcome.relation == "intensity") continue;
+        EXPECT_EQ(outcome.verdict, Verdict::Pass) << outcome.relation << ":\n" << outcome.detail;
+    }
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ void printHeader(std::ostream& out) {
         std::snprintf(cell, sizeof cell, " %s", name.c_str());
         out << cell;
     }
-    out << "  renders  drawn   time  lights\n";
+    out << "  model       renders  drawn   time  lights\n";
 }
 
 void printRow(const properties::ShaderReport& report, double seconds, std::ostream& out) {
@@ -34,14 +34,17 @@ void printRow(const properties::ShaderReport& report, double seconds, std::ostre
         out << cell;
     }
     const std::string drawn =
-        std::to_string(report.variants.size()) + "/" + std::to_string(report.litVariants);
-    std::snprintf(cell, sizeof cell, "  %7zu %6s %5.2fs  ", report.renders, drawn.c_str(), seconds);
+        std::to_string(report.litVariantsDrawn()) + "/" + std::to_string(report.litVariants);
+    std::snprintf(cell, sizeof cell, "  %-10s %8zu %6s %5.2fs  ", properties::modelName(report.model),
+                  report.renders, drawn.c_str(), seconds);
     out << cell << report.lights << (report.error.empty() ? "" : "  ERROR") << "\n";
 }
 
 void printFailures(const properties::ShaderReport& report, std::ostream& err) {
     if (!report.error.empty())
         err << "varc: error: " << report.shader << ": " << report.error << "\n";
+    if (report.model != properties::LightingModel::Lit)
+        err << report.shader << ": " << report.modelReason << "\n";
     for (const properties::RelationOutcome& outcome : report.relations) {
         if (outcome.verdict != properties::Verdict::Fail) continue;
         err << report.shader << ": relation " << outcome.relation << " fails:\n" << outcome.detail;

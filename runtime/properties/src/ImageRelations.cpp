@@ -187,6 +187,54 @@ size_t pixelsBrighter(const Image& lit, const Image& unlit, float by) {
     return count;
 }
 
+size_t pixelsChanged(const Image& a, const Image& b, float by) {
+    VARC_CHECK(a.width() == b.width() && a.height() == b.height());
+    const std::vector<float> x = floatsOf(a), y = floatsOf(b);
+    size_t count = 0;
+    for (size_t i = 0; i < x.size(); i += 4) {
+        bool changed = false;
+        for (size_t c = 0; c < 3; ++c) changed = changed || !(std::abs(x[i + c] - y[i + c]) <= by);
+        if (changed) ++count;
+    }
+    return count;
+}
+
+Growth contributionGrowth(const Image& once, const Image& twice, float absolute, float relative,
+                          float by) {
+    VARC_CHECK(once.width() == twice.width() && once.height() == twice.height());
+    const std::vector<float> a = floatsOf(once), b = floatsOf(twice);
+    Growth growth;
+    for (size_t i = 0; i < a.size(); i += 4) {
+        bool shrinks = false, grows = false;
+        for (size_t c = 0; c < 3; ++c) {
+            const float allowed = absolute + relative * (std::abs(a[i + c]) + std::abs(b[i + c]));
+            // A NaN counts as shrinking: it never passes for monotone growth.
+            shrinks = shrinks || !(b[i + c] >= a[i + c] - allowed);
+            grows = grows || b[i + c] - a[i + c] > by;
+        }
+        if (shrinks) ++growth.shrinking;
+        if (grows) ++growth.growing;
+    }
+    return growth;
+}
+
+Image flippedLeftRight(const Image& image) {
+    Image flipped = image;
+    const size_t width = image.width(), channels = 4;
+    auto flipRows = [&](auto source, auto target) {
+        for (size_t y = 0; y < image.height(); ++y)
+            for (size_t x = 0; x < width; ++x)
+                for (size_t c = 0; c < channels; ++c)
+                    target[(y * width + (width - 1 - x)) * channels + c] =
+                        source[(y * width + x) * channels + c];
+    };
+    if (image.isFloat())
+        flipRows(image.floats(), flipped.floats());
+    else
+        flipRows(image.bytes(), flipped.bytes());
+    return flipped;
+}
+
 NonFinite findNonFinite(const Image& image) {
     NonFinite found;
     if (!image.isFloat()) return found;  // 8-bit values are always finite

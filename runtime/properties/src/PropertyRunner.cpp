@@ -12,6 +12,7 @@
 #include "varc/reader/PassView.h"
 #include "varc/properties/ImageRelations.h"
 #include "varc/properties/PropertyScenes.h"
+#include "varc/variants/LightKeywords.h"
 
 namespace varc::properties {
 
@@ -118,12 +119,43 @@ public:
         outcome.detail += writeImages("lit", label, lit->image, nullptr) + "\n";
     }
 
-private:
+    // Like render(), for a coverage render that may fail without failing the check (directional
+    // shadows need Hidden/varc/ScreenSpaceShadows in a pack): the error goes to |why|.
+    const runtime::RenderedFrame* tryRender(const std::string& label, const scene::Scene& scene,
+                                            std::string& why) {
+        auto frame = mRenderer.render(scene);
+        if (!frame) {
+            why = label + ": " + frame.error().detail;
+            return nullptr;
+        }
+        ++mReport.renders;
+        mReport.variants.insert(frame->variants.begin(), frame->variants.end());
+        checkFinite(label, *frame);
+        return &mFrames.insert_or_assign(label, std::move(*frame)).first->second;
+    }
+
+    // |source| with its image flipped left to right, kept under |label| (not a render).
+    const runtime::RenderedFrame* flipped(const std::string& label,
+                                          const runtime::RenderedFrame* source) {
+        if (!source) return nullptr;
+        runtime::RenderedFrame frame = *source;
+        frame.image = flippedLeftRight(source->image);
+        return &mFrames.insert_or_assign(label, std::move(frame)).first->second;
+    }
+
+    // The frame drawn under |label|, or nullptr (not drawn, or its render failed).
+    const runtime::RenderedFrame* frame(const std::string& label) const {
+        auto found = mFrames.find(label);
+        return found == mFrames.end() ? nullptr : &found->second;
+    }
+
     RelationOutcome& outcomeOf(const std::string& relation) {
         for (RelationOutcome& outcome : mReport.relations)
             if (outcome.relation == relation) return outcome;
         return mReport.relations.front();
     }
+
+private:
 
     void checkFinite(const std::string& label, const runtime::RenderedFrame& frame) {
         RelationOutcome& outcome = outcomeOf("finite");
@@ -198,9 +230,125 @@ scene::Light brighter(scene::Light light) {
     return light;
 }
 
-// The relations on HDR renders (and additivity_ldr on RGBA8), in relationNames() order.
-void checkRelations(ShaderCheck& c, const std::string& shader, const LightSupport& support,
-                    const std::pair<std::string, std::string>& cookies, uint32_t size) {
+// Four point lights drawn per vertex in the base pass (VERTEXLIGHT_ON).
+std::vector<scene::Light> vertexLights() {
+    std::vector<scene::Light> lights;
+    for (int i = 0; i < 4; ++i) {
+        scene::Light light = keyPoint();
+        light.renderMode = scene::LightRenderMode::NotImportant;
+        light.transform.position.x += 0.5f * static_cast<float>(i);
+        lights.push_back(light);
+    }
+    return lights;
+}
+
+// The renders that reach the variants the relations leave out (each is checked for `finite`):
+// per shadow type (hard, soft) the main light and every light type the shader takes, with
+// cookies, in one scene (vertex lights too with hard shadows), and the second directional light
+// shadowed under an unshadowed main light (both Important: the main light is the first
+// directional light by importance, then brightness); vertex lights alone. When directional
+// shadows cannot be drawn (no screen-space shadow shader in the packs) the scenes are drawn
+// without them; returns why ("" when every coverage scene drew).
+template <typename LitScene>
+std::string drawCoverage(ShaderCheck& c, const LightSupport& support,
+                         const std::pair<std::string, std::string>& cookies, const LitScene& lit) {
+    using scene::Light;
+    std::string why;
+    bool directionalShadows = true;
+    Light main = keyDirectional();
+    main.renderMode = scene::LightRenderMode::Important;
+    for (scene::ShadowType shadows : {scene::ShadowType::Hard, scene::ShadowType::Soft}) {
+        const std::string kind = shadows == scene::ShadowType::Hard ? "hard" : "soft";
+        auto scene = [&](bool withDirectional) {
+            std::vector<Light> lights{main};
+            if (support.point) lights.push_back(keyPoint());
+            if (support.spot) lights.push_back(keySpot());
+            if (support.directionalCookie)
+                lights.push_back(withCookie(secondDirectional(), cookies.first));
+            if (support.pointCookie) lights.push_back(withCookie(keyPoint(), "white"));
+            for (Light& light : lights)
+                if (withDirectional || light.type != scene::LightType::Directional)
+                    light.shadows = shadows;
+            // Vertex lights with hard shadows only: the base pass's SHADOWS_SCREEN is the same
+            // for soft shadows, so the soft scene draws it without VERTEXLIGHT_ON.
+            if (shadows == scene::ShadowType::Hard)
+                for (const Light& light : vertexLights()) lights.push_back(light);
+            return lit(lights);
+        };
+        const std::string label = "coverage " + kind + " shadows";
+        if (directionalShadows && !c.tryRender(label, scene(true), why))
+            directionalShadows = false;
+        if (!directionalShadows) c.render(label + " (no directional)", scene(false));
+        if (!support.forwardAdd || !directionalShadows) continue;
+        Light second = secondDirectional();
+        second.shadows = shadows;
+        c.render(label + ", second directional", lit({main, second}));
+    }
+    std::vector<Light> vertexLit{main};
+    for (const Light& light : vertexLights()) vertexLit.push_back(light);
+    c.render("coverage vertex lights", lit(vertexLit));
+    return why;
+}
+
+// The variants of |shader|'s (first) ForwardBase and ForwardAdd passes that the forward renderer
+// can select for some light (variants::lightKeywords: light type, cookie, shadows, vertex
+// lights, HDR; light probes on; no material keywords), as VariantView::describe() gives them.
+std::set<std::string> reachableVariants(const runtime::ShaderView& shader) {
+    std::set<std::string> reachable;
+    for (const char* lightMode : {"ForwardBase", "ForwardAdd"}) {
+        std::optional<runtime::PassView> pass = shader.pass(std::string_view(lightMode));
+        if (!pass) continue;
+        for (auto type : {variants::LightType::Directional, variants::LightType::Point,
+                          variants::LightType::Spot}) {
+            for (bool cookie : {false, true}) {
+                for (auto shadows : {variants::ShadowMode::None, variants::ShadowMode::Hard,
+                                     variants::ShadowMode::Soft}) {
+                    for (int vertexLightCount : {0, 4}) {
+                        variants::LightDescription light;
+                        light.type = type;
+                        light.cookie = cookie;
+                        light.shadows = shadows;
+                        light.vertexLightCount = vertexLightCount;
+                        light.lightProbes = true;
+                        for (bool hdr : {false, true}) {
+                            light.hdr = hdr;
+                            auto variant = pass->lookup(light, variants::SelectionPolicy::Closest);
+                            if (variant) reachable.insert(variant->describe());
+                        }
+                    }
+                }
+            }
+        }
+    }
+    return reachable;
+}
+
+// `every_variant`: each variant the renderer can select was drawn by some render of the check;
+// when directional shadows could not be drawn (|why|), the SHADOWS_SCREEN variants are left out.
+void checkEveryVariant(ShaderCheck& c, const runtime::ShaderView& shader, ShaderReport& report,
+                       const std::string& why) {
+    if (!report.error.empty()) return;
+    const std::set<std::string> reachable = reachableVariants(shader);
+    std::vector<std::string> missing;
+    for (const std::string& variant : reachable) {
+        if (report.variants.count(variant)) continue;
+        if (!why.empty() && variant.find("SHADOWS_SCREEN") != std::string::npos) continue;
+        missing.push_back(variant);
+    }
+    RelationOutcome& outcome = c.outcomeOf("every_variant");
+    outcome.verdict = missing.empty() ? Verdict::Pass : Verdict::Fail;
+    if (missing.empty()) return;
+    outcome.detail = std::to_string(missing.size()) + " of " + std::to_string(reachable.size()) +
+                     " variants a light selects were not drawn:";
+    for (const std::string& variant : missing) outcome.detail += " [" + variant + "]";
+    if (!why.empty()) outcome.detail += "; SHADOWS_SCREEN variants left out: " + why;
+    outcome.detail += "\n";
+}
+
+// The relations on HDR renders (and additivity_ldr on RGBA8), in relationNames() order, then
+// the coverage renders; returns why directional shadows were not drawn ("" when they were).
+std::string checkRelations(ShaderCheck& c, const std::string& shader, const LightSupport& support,
+                           const std::pair<std::string, std::string>& cookies, uint32_t size) {
     using scene::Light;
     const scene::Scene empty = emptyScene(shader, true, size);
     auto lit = [&](const std::vector<Light>& lights) { return withLights(empty, lights); };
@@ -236,6 +384,12 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
 
     const Tolerance sum{kZero, 3 * kHalfUlp, 0};
     const auto* pOnly = support.point ? c.render("point", lit({p})) : nullptr;
+    // The built-in white cube cookie (alpha 1) turns POINT into POINT_COOKIE, which must draw
+    // the same light: the cookie multiplies the falloff by exactly 1.
+    if (support.pointCookie)
+        c.relate("white_cookie", "point",
+                 c.render("point white cookie", lit({withCookie(p, "white")})), {{pOnly, 1.0f}},
+                 same);
     if (support.point) c.requireLight("point", pOnly, none);
     if (support.spot) c.requireLight("spot", c.render("spot", lit({s})), none);
     if (support.forwardAdd) {
@@ -280,11 +434,114 @@ void checkRelations(ShaderCheck& c, const std::string& shader, const LightSuppor
              {{allFrame, 1.0f}}, moved);
     c.relate("rotation", "40 degrees about y", c.render("all lights turned", turned(allLit, 40.0f)),
              {{allFrame, 1.0f}}, moved);
+    c.relate("mirror", "in the plane x = 0",
+             c.render("all lights mirrored", mirrored(allLit)),
+             {{c.flipped("all lights flipped", allFrame), 1.0f}}, moved);
     c.relate("scale", "x2", c.render("all lights scaled", similar(allLit, 2.0f, glm::vec3(0.0f))),
              {{allFrame, 1.0f}}, moved);
+    return drawCoverage(c, support, cookies, lit);
+}
+
+
+// The share of the pixels a key light must change (or a doubled light brighten) to count: 2%, as
+// for `lit`, by more than 1/64 (4 8-bit LSB, far above half-float rounding of values <= 4).
+constexpr size_t kSharePercent = 2;
+constexpr float kVisible = 1.0f / 64.0f;
+
+bool atLeastShare(size_t pixels, const Image& image) {
+    return pixels * 100 >= kSharePercent * image.width() * image.height();
+}
+
+void markNotApplicable(ShaderCheck& c, const std::vector<std::string>& relations,
+                       const std::string& reason) {
+    for (const std::string& relation : relations) {
+        RelationOutcome& outcome = c.outcomeOf(relation);
+        outcome.verdict = Verdict::NotApplicable;
+        outcome.detail = reason;
+    }
+}
+
+// "not-lit" when no key light the shader takes changes kSharePercent of the pixels by more than
+// kVisible against the unlit render; returns the counts ("directional 0, point 3 of 4096").
+bool notLit(const ShaderCheck& c, const LightSupport& support, std::string& counts) {
+    const runtime::RenderedFrame* none = c.frame("no lights");
+    if (!none) return false;
+    std::vector<std::string> keys{"directional"};
+    if (support.point) keys.push_back("point");
+    if (support.spot) keys.push_back("spot");
+    for (const std::string& key : keys) {
+        const runtime::RenderedFrame* lit = c.frame(key);
+        if (!lit) return false;
+        const size_t changed = pixelsChanged(lit->image, none->image, kVisible);
+        if (atLeastShare(changed, lit->image)) return false;
+        counts += (counts.empty() ? "" : ", ") + key + " " + std::to_string(changed);
+    }
+    counts += " of " + std::to_string(size_t{none->image.width()} * none->image.height());
+    return true;
+}
+
+// "non-linear" when `intensity` failed but every doubled light brightens (no pixel darker than
+// with the light once, within half-float rounding) and one of them brightens kSharePercent of the
+// pixels by more than kVisible: the shader responds to intensity, only not in proportion.
+bool nonLinear(const ShaderCheck& c, const LightSupport& support, std::string& counts) {
+    std::vector<std::pair<std::string, std::string>> cases{{"directional", "directional x2"}};
+    if (support.point) cases.emplace_back("point", "point x2");
+    bool responds = false;
+    for (const auto& [once, twice] : cases) {
+        const runtime::RenderedFrame* a = c.frame(once);
+        const runtime::RenderedFrame* b = c.frame(twice);
+        if (!a || !b) return false;
+        const Growth growth = contributionGrowth(a->image, b->image, kZero, 2 * kHalfUlp, kVisible);
+        if (growth.shrinking > 0) return false;
+        responds = responds || atLeastShare(growth.growing, a->image);
+        counts += (counts.empty() ? "" : ", ") + once + " x2 brightens " +
+                  std::to_string(growth.growing);
+    }
+    return responds;
+}
+
+// Decides the report's LightingModel from the renders and marks the relations that do not apply.
+void classify(ShaderCheck& c, const LightSupport& support, ShaderReport& report) {
+    if (!report.error.empty()) return;
+    std::string counts;
+    if (notLit(c, support, counts)) {
+        report.model = LightingModel::NotLit;
+        report.modelReason = "not a lit shader: no key light changes 2% of the pixels by > 1/64 (" +
+                             counts + ")";
+        markNotApplicable(c, notLitRelations(), report.modelReason);
+        return;
+    }
+    counts.clear();
+    if (c.outcomeOf("intensity").verdict == Verdict::Fail && nonLinear(c, support, counts)) {
+        report.model = LightingModel::NonLinear;
+        report.modelReason =
+            "non-linear model: a doubled light brightens, darkens nothing, but does not double "
+            "its contribution (" +
+            counts + " pixels): intensity is n/a";
+        markNotApplicable(c, {"intensity"}, report.modelReason);
+    }
 }
 
 }  // namespace
+
+const char* modelName(LightingModel model) {
+    switch (model) {
+        case LightingModel::Lit:
+            return "lit";
+        case LightingModel::NotLit:
+            return "not-lit";
+        case LightingModel::NonLinear:
+            return "non-linear";
+    }
+    return "?";
+}
+
+const std::vector<std::string>& notLitRelations() {
+    static const std::vector<std::string> kNames{"dark",         "lit",        "out_of_range",
+                                                 "black_cookie", "white_cookie", "additivity",
+                                                 "additivity_ldr", "intensity"};
+    return kNames;
+}
 
 const char* verdictName(Verdict verdict) {
     switch (verdict) {
@@ -305,10 +562,20 @@ bool ShaderReport::passed() const {
     return true;
 }
 
+size_t ShaderReport::litVariantsDrawn() const {
+    size_t count = 0;
+    for (const std::string& variant : variants)
+        if (variant.find("(LightMode ForwardBase)") != std::string::npos ||
+            variant.find("(LightMode ForwardAdd)") != std::string::npos)
+            ++count;
+    return count;
+}
+
 const std::vector<std::string>& relationNames() {
     static const std::vector<std::string> kNames{
         "finite",     "dark",           "lit",       "out_of_range", "black_cookie", "white_cookie",
-        "additivity", "additivity_ldr", "intensity", "translation",  "rotation",     "scale"};
+        "additivity", "additivity_ldr", "intensity", "translation",  "rotation",     "mirror",
+        "scale",      "every_variant"};
     return kNames;
 }
 
@@ -346,7 +613,11 @@ ShaderReport PropertyRunner::check(const runtime::ShaderView& shader) {
     if (support.point) report.lights += " point";
     if (support.spot) report.lights += " spot";
     if (support.directionalCookie) report.lights += " directional-cookie";
-    checkRelations(check, report.shader, support, *cookies, mOptions.size);
+    if (support.pointCookie) report.lights += " point-cookie";
+    const std::string noDirectionalShadows =
+        checkRelations(check, report.shader, support, *cookies, mOptions.size);
+    checkEveryVariant(check, shader, report, noDirectionalShadows);
+    classify(check, support, report);
     return report;
 }
 

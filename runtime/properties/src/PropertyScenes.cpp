@@ -34,6 +34,7 @@ LightSupport lightSupportOf(const runtime::ShaderView& shader) {
     support.point = !anyLightKeyword || declares(*add, "POINT");
     support.spot = declares(*add, "SPOT");
     support.directionalCookie = declares(*add, "DIRECTIONAL_COOKIE");
+    support.pointCookie = declares(*add, "POINT_COOKIE");
     return support;
 }
 
@@ -154,6 +155,26 @@ scene::Scene turned(const scene::Scene& original, float degrees) {
     for (scene::Light& light : scene.lights) {
         light.transform.position = turn * light.transform.position;
         light.transform.rotationDegrees.y += degrees;
+    }
+    return scene;
+}
+
+scene::Scene mirrored(const scene::Scene& original) {
+    scene::Scene scene = original;
+    auto mirror = [](glm::vec3 p) { return glm::vec3(-p.x, p.y, p.z); };
+    auto mirrorAngles = [](glm::vec3 a) { return glm::vec3(a.x, -a.y, -a.z); };
+    scene.camera.position = mirror(scene.camera.position);
+    scene.camera.target = mirror(scene.camera.target);
+    for (scene::Object& object : scene.objects) {
+        object.transform.position = mirror(object.transform.position);
+        object.transform.rotationDegrees = mirrorAngles(object.transform.rotationDegrees);
+        // S M = T(S t) (S R S) (S Sc): each vertex lands on the mirror of its original, so
+        // the triangulation (and per-vertex shading) is mirrored exactly.
+        object.transform.scale.x = -object.transform.scale.x;
+    }
+    for (scene::Light& light : scene.lights) {
+        light.transform.position = mirror(light.transform.position);
+        light.transform.rotationDegrees = mirrorAngles(light.transform.rotationDegrees);
     }
     return scene;
 }

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "varc/core/AsciiCase.h"
 #include "varc/scene/LightTextures.h"
 #include "varc/vulkan/Sampler.h"
 
@@ -96,8 +97,10 @@ Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
     return textures;
 }
 
-std::optional<TextureBinding> BuiltinTextures::named(std::string_view name,
+std::optional<TextureBinding> BuiltinTextures::named(std::string_view givenName,
                                                      pack::ResourceDim dim) const {
+    // Unity matches the default texture names without regard to case ("Gray" {} is gray).
+    const std::string name = toAsciiLower(givenName);
     if (dim == pack::ResourceDim::Cube) {
         if (name == "white" || name.empty())
             return TextureBinding{mWhiteCube->view(), mRepeat.get()};

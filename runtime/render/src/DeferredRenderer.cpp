@@ -243,6 +243,7 @@ Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t inde
         if (shadowMap && name == "_ShadowMapTexture") return shadowMap;
         if (name == "_LightTexture0") {
             if (auto file = cookieFile(light)) return file;
+            if (light.cookie == "white") return textures->named("white", dim);
         }
         if (name == "_CameraDepthTexture") return gbuffer.depth;
         if (name == "_CameraGBufferTexture0") return gbuffer.diffuse;

@@ -14,7 +14,8 @@ ShaderValues deferredLightValues(const scene::Light& light, bool asQuad) {
     values.set("_LightColor", light.finalColor(), light.intensity);
     values.set("_LightAsQuad", asQuad ? 1.0f : 0.0f);
     values.set("unity_LightmapFade", glm::vec4(0.0f));
-    values.set("unity_WorldToLight", scene::worldToLight(light, /*deferredSpotConvention=*/true));
+    for (const char* name : {"unity_WorldToLight", "_LightMatrix0"})
+        values.set(name, scene::worldToLight(light, /*deferredSpotConvention=*/true));
     values.set("_LightShadowData", glm::vec4(0.0f));
     values.set("unity_ShadowFadeCenterAndType", glm::vec4(0.0f));
     values.set("_LightProjectionParams", glm::vec4(0, 0, 0, 1));

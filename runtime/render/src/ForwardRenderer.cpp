@@ -141,6 +141,7 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
             }
             if (light && name == "_LightTexture0") {
                 if (auto file = cookieFile(*light)) return file;
+                if (light->cookie == "white") return textures->named("white", dim);
             }
             if (auto texture = textures->lightTexture(name, dim, type, cookie, false))
                 return texture;

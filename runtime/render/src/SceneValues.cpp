@@ -101,7 +101,9 @@ ShaderValues forwardLightValues(const scene::Light* light) {
         values.set("_LightColor0", glm::vec4(0.0f));
         // A unit direction: shaders normalize it, and normalize(0) is NaN (times a zero colour).
         values.set("_WorldSpaceLightPos0", glm::vec4(0, 1, 0, 0));
-        values.set("unity_WorldToLight", glm::mat4(1.0f));
+        // _LightMatrix0: the legacy name a GLSLPROGRAM declares as a loose uniform.
+        for (const char* name : {"unity_WorldToLight", "_LightMatrix0"})
+            values.set(name, glm::mat4(1.0f));
         return values;
     }
     glm::vec3 position = light->transform.position;
@@ -112,7 +114,8 @@ ShaderValues forwardLightValues(const scene::Light* light) {
     }
     values.set("_LightColor0", light->finalColor(), light->intensity);
     values.set("_LightPositionRange", position, 1.0f / light->range);
-    values.set("unity_WorldToLight", scene::worldToLight(*light, /*deferredSpotConvention=*/false));
+    for (const char* name : {"unity_WorldToLight", "_LightMatrix0"})
+        values.set(name, scene::worldToLight(*light, /*deferredSpotConvention=*/false));
     return values;
 }
 

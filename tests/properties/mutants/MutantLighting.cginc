@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // A copy of shaders/forward/ForwardLighting.cginc for the property mutation tests (issue #16):
 // unchanged unless the including shader defines one MUTANT_* macro, each a deliberate bug that
-// docs/PROPERTIES.md says which relation must catch. Keep it in step with the library copy.
+// docs/PROPERTIES.md says which relation must catch, or a model the classification must name
+// (MUTANT_SQRT_COLOUR, MUTANT_UNLIT). Keep it in step with the library copy.
 #ifndef VARC_MUTANT_LIGHTING_INCLUDED
 #define VARC_MUTANT_LIGHTING_INCLUDED
 
@@ -65,19 +66,35 @@ UnityLight ForwardPixelLight(ForwardVaryings i, float3 normal) {
     light.dir = normalize(UnityWorldSpaceLightDir(i.worldPos));
     UNITY_LIGHT_ATTENUATION(attenuation, i, i.worldPos);
 #if defined(MUTANT_NO_ATTENUATION)
-    light.color = _LightColor0.rgb;  // bug: attenuation (falloff, cookie) forgotten
+    // bug: attenuation (falloff, cookie) forgotten; 1e-30 x attenuation vanishes next to any
+    // light colour but keeps the shadow coordinates read (the validation layer reports vertex
+    // outputs a fragment program drops)
+    light.color = _LightColor0.rgb + 1e-30 * attenuation;
 #elif defined(MUTANT_COOKIE_IGNORED) && (defined(DIRECTIONAL_COOKIE) || defined(SPOT))
     // bug: the cookie is not sampled; a spot keeps only its distance falloff
     #if defined(SPOT)
     float3 lightCoord = mul(unity_WorldToLight, float4(i.worldPos, 1)).xyz;
-    light.color = _LightColor0.rgb * UnitySpotAttenuate(lightCoord);
+    light.color = _LightColor0.rgb * UnitySpotAttenuate(lightCoord) + 1e-30 * attenuation;
     #else
-    light.color = _LightColor0.rgb;
+    light.color = _LightColor0.rgb + 1e-30 * attenuation;
     #endif
+#elif defined(MUTANT_INTENSITY_IGNORED)
+    // bug: the light's intensity is ignored (its colour scaled to a maximum of 1)
+    light.color = _LightColor0.rgb /
+                  max(1e-4, max(_LightColor0.r, max(_LightColor0.g, _LightColor0.b))) * attenuation;
+#elif defined(MUTANT_SQRT_COLOUR)
+    light.color = sqrt(_LightColor0.rgb) * attenuation;  // a non-linear model by design
+#elif defined(MUTANT_POINT_COOKIE_NO_FALLOFF) && defined(POINT_COOKIE)
+    // bug: the cube cookie alone, the distance falloff (_LightTextureB0) forgotten
+    float3 lightCoord = mul(unity_WorldToLight, float4(i.worldPos, 1)).xyz;
+    light.color = _LightColor0.rgb * texCUBE(_LightTexture0, lightCoord).w + 1e-30 * attenuation;
 #elif defined(MUTANT_NAN_SPOT) && defined(SPOT)
     light.color = _LightColor0.rgb * attenuation * sqrt(-1.0 - attenuation);  // bug: NaN here
 #else
     light.color = _LightColor0.rgb * attenuation;
+#endif
+#if defined(MUTANT_WORLD_X_LIGHT)
+    light.color *= light.dir.x >= 0 ? 1.0 : 0.5;  // bug: depends on the world x axis
 #endif
     light.ndotl = saturate(dot(normal, light.dir));
     return light;
@@ -113,6 +130,16 @@ float4 ForwardFragment(ForwardVaryings i) : SV_Target {
                                    normal, viewDir, ForwardPixelLight(i, normal),
                                    ForwardIndirectLight(i, normal));
     colour.a = 1;
+#if defined(MUTANT_UNLIT)
+    // Not lit by design: the base pass draws half the albedo, the add pass nothing. The lit
+    // colour, scaled to nothing a half float can hold, keeps every vertex output read (the
+    // validation layer reports outputs the fragment program drops).
+    #if defined(VARC_FORWARD_BASE)
+    colour.rgb = 0.5 * albedo + 1e-30 * colour.rgb;
+    #else
+    colour.rgb = 1e-30 * colour.rgb;
+    #endif
+#endif
     return colour;
 }
 

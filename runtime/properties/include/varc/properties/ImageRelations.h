@@ -57,12 +57,30 @@ inline constexpr size_t kWorstPixels = 5;
 RelationCheck checkRelation(const runtime::Image& actual, const std::vector<Term>& terms,
                             const Tolerance& tolerance);
 
+// |image| flipped left to right: pixel (x, y) moves to (width - 1 - x, y).
+runtime::Image flippedLeftRight(const runtime::Image& image);
+
 // The pixels of |image| (any format) that hold a NaN or an infinity in any channel.
 struct NonFinite {
     size_t count = 0;
     uint32_t firstX = 0, firstY = 0;
 };
 NonFinite findNonFinite(const runtime::Image& image);
+
+// The pixels where some RGB channel of |a| and |b| differ by more than |by| (either way; 8-bit
+// channels as value / 255); both of one size (VARC_CHECK).
+size_t pixelsChanged(const runtime::Image& a, const runtime::Image& b, float by);
+
+// How a light's contribution (its render minus the unlit render) changes when its intensity
+// doubles: the pixels where some channel of |twice| is below |once| by more than |absolute| +
+// |relative| x (|once| + |twice|) (the contribution shrank), and those where some channel of
+// |twice| exceeds |once| by more than |by| (it grew). All three of one size (VARC_CHECK).
+struct Growth {
+    size_t shrinking = 0;
+    size_t growing = 0;
+};
+Growth contributionGrowth(const runtime::Image& once, const runtime::Image& twice, float absolute,
+                          float relative, float by);
 
 // The pixels where some RGB channel of |lit| exceeds the same channel of |unlit| by more than
 // |by| (8-bit channels as value / 255); both of one size (VARC_CHECK).

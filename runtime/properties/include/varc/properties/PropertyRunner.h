@@ -28,24 +28,42 @@ struct RelationOutcome {
     std::string relation;  // one of relationNames()
     Verdict verdict = Verdict::NotApplicable;
     // Why it failed: per failing case its scenes, the variants drawn, the worst pixels and the
-    // images written; for n/a the light types the shader does not take.
+    // images written; for n/a by classification the model's reason ("" when the shader does not
+    // take the light types the relation needs).
     std::string detail;
 };
+
+// What the renders show about a shader's lighting (docs/PROPERTIES.md, "Classification").
+enum class LightingModel {
+    Lit,        // the key lights change the image: every relation applies
+    NotLit,     // no key light changes 2% of the pixels: unlit, emissive, a debug view; the
+                // relations about lights (notLitRelations()) are n/a
+    NonLinear,  // lit, but a doubled intensity brightens without doubling the light's
+                // contribution (toon ramps, clamped colours): `intensity` is n/a
+};
+const char* modelName(LightingModel model);  // "lit", "not-lit", "non-linear"
+
+// The relations that are n/a for a shader that is not lit: dark, lit, out_of_range,
+// black_cookie, white_cookie, additivity, additivity_ldr, intensity.
+const std::vector<std::string>& notLitRelations();
 
 struct ShaderReport {
     std::string shader;
     std::vector<RelationOutcome> relations;  // in relationNames() order
+    LightingModel model = LightingModel::Lit;
+    std::string modelReason;  // the measurement that decided a model other than Lit
     std::string lights;  // the light types drawn: "directional point spot directional-cookie"
     size_t renders = 0;
     std::set<std::string> variants;  // every variant drawn (VariantView::describe())
     size_t litVariants = 0;          // variants of the ForwardBase and ForwardAdd passes
     std::string error;               // a render that failed ("" when all drew)
     bool passed() const;             // no error and no relation failed
+    size_t litVariantsDrawn() const;  // the |variants| of ForwardBase and ForwardAdd passes
 };
 
 // The relations in the order they are checked and printed: finite, dark, lit, out_of_range,
 // black_cookie, white_cookie, additivity, additivity_ldr, intensity, translation, rotation,
-// scale.
+// mirror, scale, every_variant.
 const std::vector<std::string>& relationNames();
 
 // The shaders of |packs| with a ForwardBase pass, in pack order; a name in two packs once (the

@@ -14,7 +14,7 @@
 namespace varc::properties {
 
 // Which lights a shader's forward passes can draw, from its ForwardAdd pass's keywords: POINT,
-// SPOT, DIRECTIONAL_COOKIE (multi_compile_fwdadd). A ForwardAdd pass without any light keyword
+// SPOT, DIRECTIONAL_COOKIE, POINT_COOKIE (multi_compile_fwdadd). A ForwardAdd pass without any light keyword
 // (it tells lights apart by _WorldSpaceLightPos0.w) takes directional and point lights only.
 struct LightSupport {
     bool forwardBase = false;  // the shader has a ForwardBase pass: it is checked at all
@@ -22,6 +22,7 @@ struct LightSupport {
     bool point = false;
     bool spot = false;
     bool directionalCookie = false;
+    bool pointCookie = false;
 };
 LightSupport lightSupportOf(const runtime::ShaderView& shader);
 
@@ -55,5 +56,13 @@ scene::Scene similar(const scene::Scene& scene, float scale, glm::vec3 offset);
 // lights (positions turned, Unity Euler y angles increased: Ry(a) Ry(y) Rx(x) Rz(z) =
 // Ry(a + y) Rx(x) Rz(z)). The camera turns too, so a correct shader draws the same image.
 scene::Scene turned(const scene::Scene& scene, float degrees);
+
+// |scene| mirrored in the plane x = 0 (S = diag(-1, 1, 1)): positions' x negated, Unity Euler
+// angles (x, y, z) -> (x, -y, -z) (S Ry(y) Rx(x) Rz(z) S = Ry(-y) Rx(x) Rz(-z)) and objects'
+// x scale negated, so each object is its original mirrored vertex by vertex (a transform with a
+// negative determinant, which culls the other side, as in Unity). The camera of emptyScene()
+// lies in that plane looking along it: a correct shader draws the render of |scene| flipped left
+// to right.
+scene::Scene mirrored(const scene::Scene& scene);
 
 }  // namespace varc::properties

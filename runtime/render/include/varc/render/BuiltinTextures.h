@@ -16,8 +16,8 @@ class BuiltinTextures {
 public:
     static Result<BuiltinTextures> create(VulkanContext& context);
 
-    // "white", "black", "bump", "gray" ("grey"), "red" (2D; Unity's default texture names),
-    // "white" (cube) and "white" (3D), linear-repeat sampled.
+    // "white", "black", "bump", "gray" ("grey"), "red" (2D; Unity's default texture names, in any
+    // ASCII case: "Gray" is gray), "white" (cube) and "white" (3D), linear-repeat sampled.
     std::optional<TextureBinding> named(std::string_view name, pack::ResourceDim dim) const;
     VkSampler repeatSampler() const { return mRepeat.get(); }  // linear, repeat
     VkSampler clampSampler() const { return mClamp.get(); }    // linear, clamp to edge

@@ -105,7 +105,10 @@ struct Light {
     Transform transform;          // position and rotation used; light travels along local +z
     float range = 10.0f;          // point, spot
     float spotAngle = 30.0f;      // degrees, full cone angle
-    std::string cookie = "none";  // "none" | "default" | a PNG file (spot, directional; alpha)
+    // "none" | "default" (built-in patterns) | "white" (built-in, alpha 1 everywhere: 2D, or a
+    // cube for point lights; not known to the CPU reference) | a PNG file (spot, directional;
+    // alpha).
+    std::string cookie = "none";
     float cookieSize = 10.0f;     // directional cookies: metres covered by one cookie tile
     LightRenderMode renderMode = LightRenderMode::Auto;
     // Real-time shadows (SHADER_ABI.md §4.7 turns these into the shaders' shadow uniforms).

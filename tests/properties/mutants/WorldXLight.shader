@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: Apache-2.0
+// Property mutation test (issue #16): a copy of shaders/forward/Forward.shader. A light whose
+// direction has x < 0 is halved: a world axis as a fixed direction (the corpus's Scoop tests
+// `lightDirection >= 0`, which keeps only x).
+Shader "varc-mutants/WorldXLight" {
+    Properties {
+        _Color ("Albedo colour", Color) = (1, 1, 1, 1)
+        _MainTex ("Albedo (RGB)", 2D) = "white" {}
+        _Metallic ("Metallic", Range(0, 1)) = 0
+        _Smoothness ("Smoothness", Range(0, 1)) = 0.5
+    }
+
+    SubShader {
+        Tags { "RenderType" = "Opaque" }
+
+        Pass {
+            Tags { "LightMode" = "ForwardBase" }
+
+            CGPROGRAM
+            #pragma target 3.0
+            #pragma multi_compile _ VERTEXLIGHT_ON
+            #pragma vertex ForwardVertex
+            #pragma fragment ForwardFragment
+            #define VARC_FORWARD_BASE 1
+            #define MUTANT_WORLD_X_LIGHT 1
+            #include "MutantLighting.cginc"
+            ENDCG
+        }
+
+        Pass {
+            Tags { "LightMode" = "ForwardAdd" }
+            Blend One One
+            ZWrite Off
+
+            CGPROGRAM
+            #pragma target 3.0
+            #pragma multi_compile_fwdadd_fullshadows
+            #pragma vertex ForwardVertex
+            #pragma fragment ForwardFragment
+            #define MUTANT_WORLD_X_LIGHT 1
+            #include "MutantLighting.cginc"
+            ENDCG
+        }
+    }
+    Fallback "Legacy Shaders/VertexLit"
+}
