@@ -222,6 +222,20 @@ TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
          [](scene::Scene& s, reference::ReferenceOptions&) {
              for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::Hard;
          }},
+        // Alpha-tested casters (Transparent/Cutout/*): the holes must show in every light's map.
+        {"cutout-spot-shadow.json", "spot caster ignores _Cutoff",
+         [](scene::Scene&, reference::ReferenceOptions& o) { o.ignoreCasterCutoff = true; }},
+        {"cutout-point-shadow.json", "point caster ignores _Cutoff",
+         [](scene::Scene&, reference::ReferenceOptions& o) { o.ignoreCasterCutoff = true; }},
+        {"cutout-directional-shadow.json", "directional caster ignores _Cutoff",
+         [](scene::Scene&, reference::ReferenceOptions& o) { o.ignoreCasterCutoff = true; }},
+        {"cutout-spot-shadow.json", "the VertexLit object casts no shadow",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Object& object : s.objects) {
+                 if (object.material.shader == "Legacy Shaders/VertexLit")
+                     object.transform.position.x += 5.0f;
+             }
+         }},
         // Lightmaps (LIGHTING.md §8.7): what the lightmap variants change in these shaders.
         {"lightmaps-shadowmask-shadow-vertex.json", "lightmapped objects keep vertex lights and SH",
          [](scene::Scene& s, reference::ReferenceOptions&) {
