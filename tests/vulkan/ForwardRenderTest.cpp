@@ -236,6 +236,12 @@ TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
                      object.transform.position.x += 5.0f;
              }
          }},
+        {"fallback-casters-point.json", "Standard's _ALPHATEST_ON caster ignores _Cutoff",
+         [](scene::Scene&, reference::ReferenceOptions& o) { o.ignoreCasterCutoff = true; }},
+        {"fallback-casters-spot.json", "Standard's alpha-blended casters taken as opaque",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Object& object : s.objects) object.material.keywords.clear();
+         }},
         // Lightmaps (LIGHTING.md §8.7): what the lightmap variants change in these shaders.
         {"lightmaps-shadowmask-shadow-vertex.json", "lightmapped objects keep vertex lights and SH",
          [](scene::Scene& s, reference::ReferenceOptions&) {
@@ -310,7 +316,7 @@ protected:
     static scene::Scene probeScene(std::optional<scene::Lightmap> lightmap,
                                    scene::MixedLightingMode mode) {
         scene::Scene scene = oneSphere();
-        scene.objects[0].material = {"Test/LightmapProbe", {}, ""};
+        scene.objects[0].material = {"Test/LightmapProbe", {}, "", {}};
         scene.objects[0].lightmap = std::move(lightmap);
         scene.mixedLighting = mode;
         return scene;

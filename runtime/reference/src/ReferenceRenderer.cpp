@@ -311,12 +311,44 @@ glm::vec4 accumulate(const glm::vec4& base, const std::vector<glm::vec4>& adds, 
     return hdr ? dst : dst / 255.0f;
 }
 
+// Standard's caster (UnityStandardShadow.cginc) under the material's shader_feature keywords:
+// _ALPHATEST_ON clips at _Cutoff; _ALPHABLEND_ON and _ALPHAPREMULTIPLY_ON dither, the latter
+// with alpha raised to 1 - oneMinusReflectivity + alpha * oneMinusReflectivity (linear colour
+// space: oneMinusReflectivity = 0.96 - 0.96 * _Metallic). Without them it is opaque. The
+// three are one shader_feature: InvalidInput when the material names more than one.
+Status applyStandardCasterKeywords(const std::vector<std::string>& keywords, MaterialParams& p) {
+    auto has = [&](const char* k) {
+        return std::find(keywords.begin(), keywords.end(), k) != keywords.end();
+    };
+    const int named = int{has("_ALPHATEST_ON")} + int{has("_ALPHABLEND_ON")} +
+                      int{has("_ALPHAPREMULTIPLY_ON")};
+    if (named > 1) {
+        return makeError(ErrorCode::InvalidInput,
+                         "material keywords: at most one of _ALPHATEST_ON, _ALPHABLEND_ON and "
+                         "_ALPHAPREMULTIPLY_ON (one shader_feature)");
+    }
+    if (has("_ALPHATEST_ON")) {
+        p.casterAlphaTest = true;
+    } else if (has("_ALPHABLEND_ON")) {
+        p.casterDither = true;
+    } else if (has("_ALPHAPREMULTIPLY_ON")) {
+        p.casterDither = true;
+        const float oneMinusReflectivity = 0.96f - 0.96f * p.metallic;
+        p.casterAlphaScale = oneMinusReflectivity;
+        p.casterAlphaBias = 1.0f - oneMinusReflectivity;
+    }
+    return Ok{};
+}
+
 // How |m|'s object draws into the shadow maps.
 ShadowCaster casterOf(const MaterialParams& m, const ReferenceOptions& options) {
     ShadowCaster caster;
     caster.casts = m.castsShadows;
     caster.cullOff = m.casterCullOff;
     caster.alphaTest = m.casterAlphaTest && !options.ignoreCasterCutoff;
+    caster.dither = m.casterDither;
+    caster.alphaScale = m.casterAlphaScale;
+    caster.alphaBias = m.casterAlphaBias;
     caster.cutoff = m.cutoff;
     caster.colorAlpha = m.color.a;
     caster.mainTexAlpha = m.mainTex.a;
@@ -352,7 +384,8 @@ Result<MaterialParams> resolveMaterial(const scene::Material& material) {
         p.model = ShaderModel::Seed004Diffuse;
         p.castsShadows = true;         // Fallback "VertexLit"
         p.receivesBaseShadows = true;  // multi_compile_fwdbase; its add pass has no shadow keywords
-    } else if (model == "varc-caster" || model == "varc-caster-cutout") {
+    } else if (model == "varc-caster" || model == "varc-caster-cutout" ||
+               model == "varc-standard-caster") {
         p.model = ShaderModel::CasterOnly;
         p.castsShadows = true;
         p.casterCullOff = p.casterAlphaTest = model == "varc-caster-cutout";
@@ -383,6 +416,10 @@ Result<MaterialParams> resolveMaterial(const scene::Material& material) {
             status = readFloatProperty(value, name, p.cutoff);
         }
         if (!status) return status.error();
+    }
+    if (model == "varc-standard-caster") {
+        if (Status keywords = applyStandardCasterKeywords(material.keywords, p); !keywords)
+            return keywords.error();
     }
     return p;
 }

@@ -60,17 +60,31 @@ constexpr float kAxisEpsilon = 1e-5f;
 
 namespace {
 
-// The alpha test's value clip() compares with 0 (ShadowCaster), at mesh uv |uv|.
-float clipValue(const ShadowCaster& caster, const glm::vec2& uv) {
+// How close the alpha test's value may come to 0 (or the dither slice coordinate to a slice
+// boundary) before a conformant GPU could decide either way: 8-bit texels, bilinear weights,
+// half-precision alpha and interpolated texture coordinates of finite precision.
+constexpr float kClipEpsilon = 1.0f / 64.0f;
+
+enum class Coverage { None, Unknown, Full };
+
+// Whether the caster's fragment at mesh uv |uv| writes depth (ShadowCaster's clip()).
+Coverage coverageAt(const ShadowCaster& caster, const glm::vec2& uv) {
+    if (!caster.alphaTest && !caster.dither) return Coverage::Full;
     const glm::vec4& st = caster.mainTexST;
     const glm::vec2 at = uv * glm::vec2(st) + glm::vec2(st.z, st.w);
-    const float alpha = caster.mainTexture ? caster.mainTexture->sample(at).a : caster.mainTexAlpha;
-    return alpha * caster.colorAlpha - caster.cutoff;
+    const float texel = caster.mainTexture ? caster.mainTexture->sample(at).a : caster.mainTexAlpha;
+    const float alpha = texel * caster.colorAlpha * caster.alphaScale + caster.alphaBias;
+    if (caster.alphaTest) {
+        const float value = alpha - caster.cutoff;
+        return value < -kClipEpsilon ? Coverage::None
+               : value > kClipEpsilon ? Coverage::Full
+                                      : Coverage::Unknown;
+    }
+    const float slice = alpha * 15.0f;  // (alpha * 15/16) * 16 slices
+    return slice < 1.0f - kClipEpsilon    ? Coverage::None
+           : slice > 15.0f + kClipEpsilon ? Coverage::Full
+                                          : Coverage::Unknown;
 }
-
-// How close the alpha test's value may come to 0 before a conformant GPU could decide either
-// way: 8-bit texels, bilinear weights and interpolated texture coordinates of finite precision.
-constexpr float kClipEpsilon = 1.0f / 64.0f;
 
 }  // namespace
 
@@ -105,14 +119,11 @@ void ShadowMapReference::drawCasters(const scene::Scene& scene,
             const std::array<glm::vec4, 3> triangle = {clip[index[0]], clip[index[1]],
                                                        clip[index[2]]};
             rasterizeTriangle(triangle, tile, tile, cull, [&](const Fragment& f) {
-                bool sure = true;
-                if (caster.alphaTest) {
-                    glm::vec2 uv(0.0f);
-                    for (int k = 0; k < 3; ++k) uv += f.bary[k] * mesh.uvs[index[size_t(k)]];
-                    const float value = clipValue(caster, uv);
-                    if (value < -kClipEpsilon) return;  // discarded
-                    sure = value > kClipEpsilon;
-                }
+                glm::vec2 uv(0.0f);
+                for (int k = 0; k < 3; ++k) uv += f.bary[k] * mesh.uvs[index[size_t(k)]];
+                const Coverage coverage = coverageAt(caster, uv);
+                if (coverage == Coverage::None) return;  // discarded
+                const bool sure = coverage == Coverage::Full;
                 const size_t texel = size_t{f.y + origin.y} * mSize + f.x + origin.x;
                 if (sure) depths[texel] = std::min(depths[texel], f.depth);
                 nearDepths[texel] = std::min(nearDepths[texel], f.depth);
@@ -369,7 +380,7 @@ std::vector<ShadowInterval> ShadowMapReference::screenMask(const scene::Scene& s
         const SurfaceSample& sample = depth.samples[i];
         if (sample.object < 0) continue;  // the far plane: beyond every cascade, lit
         const size_t index = original[static_cast<size_t>(sample.object)];
-        if (casters[index].alphaTest) {  // a hole here or not: the pixel's term is unknown
+        if (casters[index].alphaTest || casters[index].dither) {  // a hole or not: unknown
             mask[i] = {1.0f - mStrength, 1.0f};
             continue;
         }

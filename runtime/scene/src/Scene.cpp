@@ -64,7 +64,7 @@ std::string referenceModelOf(const Material& material) {
         {"Mobile/VertexLit", "varc-caster"},
         {"Mobile/Diffuse", "varc-caster"},
         {"Mobile/Bumped Diffuse", "varc-caster"},
-        {"Standard", "varc-caster"},  // its caster's variant without material keywords: opaque
+        {"Standard", "varc-standard-caster"},
         {"Legacy Shaders/Transparent/Cutout/VertexLit", "varc-caster-cutout"},
         {"Legacy Shaders/Transparent/Cutout/Diffuse", "varc-caster-cutout"},
         {"Legacy Shaders/Transparent/Cutout/Specular", "varc-caster-cutout"},

@@ -49,10 +49,15 @@ struct MaterialParams {
     bool casterCullOff = false;
     bool casterAlphaTest = false;
     float cutoff = 0.5f;
+    // Standard's alpha-blended caster (_ALPHABLEND_ON, _ALPHAPREMULTIPLY_ON): dithered
+    // coverage of alpha * casterAlphaScale + casterAlphaBias (ShadowCaster).
+    bool casterDither = false;
+    float casterAlphaScale = 1.0f, casterAlphaBias = 0.0f;
 };
 // The parameters of |material| for its reference model (scene::referenceModelOf: "seed000",
 // "varc-forward", "varc-simple-diffuse", "varc-glsl-vertex-lights", "seed001", "seed004",
-// "varc-caster" and "varc-caster-cutout" for the fallbacks that only cast) with
+// "varc-caster", "varc-caster-cutout" and "varc-standard-caster" (material keywords
+// _ALPHATEST_ON, _ALPHABLEND_ON, _ALPHAPREMULTIPLY_ON) for the fallbacks that only cast) with
 // that shader's Properties defaults. _MainTex may be "white", "black" or a PNG file (loaded
 // here). NotFound when the material names no model the forward reference knows (the scene can
 // still be rendered, without a comparison); Unsupported for other texture names; InvalidInput

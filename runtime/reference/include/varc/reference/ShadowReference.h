@@ -37,13 +37,20 @@ ShadowFade shadowFadeFor(const scene::Scene& scene, const scene::Light& light);
 // How one object draws into shadow maps and the collector's camera depth: whether it casts, its
 // caster pass's culling, and its alpha test (Legacy Shaders/Transparent/Cutout/VertexLit's
 // caster, as Unity's: clip(tex2D(_MainTex, TRANSFORM_TEX(uv, _MainTex)).a * _Color.a - _Cutoff),
-// a fragment with a negative value writes no depth).
+// a fragment with a negative value writes no depth) or Standard's dithered coverage
+// (_ALPHABLEND_ON, _ALPHAPREMULTIPLY_ON: slice floor(alpha * 15) of _DitherMaskLOD; slice 0
+// covers nothing, slice 15 everything; the partial slices are not modelled: their fragments
+// are taken both ways).
 struct ShadowCaster {
     bool casts = false;
     bool cullOff = false;    // Cull Off (else Cull Back)
     bool alphaTest = false;  // clip against _Cutoff
     float cutoff = 0.5f;     // _Cutoff
     float colorAlpha = 1.0f;                           // _Color.a
+    bool dither = false;     // Standard's alpha-blended caster
+    // alpha = tex.a * _Color.a * alphaScale + alphaBias (premultiplied Standard materials cast
+    // their reflective part: scale = oneMinusReflectivity, bias = 1 - oneMinusReflectivity).
+    float alphaScale = 1.0f, alphaBias = 0.0f;
     float mainTexAlpha = 1.0f;                         // the constant _MainTex's alpha
     std::shared_ptr<const LinearTexture> mainTexture;  // _MainTex as a PNG file, else null
     glm::vec4 mainTexST{1.0f, 1.0f, 0.0f, 0.0f};       // _MainTex_ST
