@@ -222,6 +222,26 @@ TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
          [](scene::Scene& s, reference::ReferenceOptions&) {
              for (scene::Light& light : s.lights) light.shadows = scene::ShadowType::Hard;
          }},
+        // Alpha-tested casters (Transparent/Cutout/*): the holes must show in every light's map.
+        {"cutout-spot-shadow.json", "spot caster ignores _Cutoff",
+         [](scene::Scene&, reference::ReferenceOptions& o) { o.ignoreCasterCutoff = true; }},
+        {"cutout-point-shadow.json", "point caster ignores _Cutoff",
+         [](scene::Scene&, reference::ReferenceOptions& o) { o.ignoreCasterCutoff = true; }},
+        {"cutout-directional-shadow.json", "directional caster ignores _Cutoff",
+         [](scene::Scene&, reference::ReferenceOptions& o) { o.ignoreCasterCutoff = true; }},
+        {"cutout-spot-shadow.json", "the VertexLit object casts no shadow",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Object& object : s.objects) {
+                 if (object.material.shader == "Legacy Shaders/VertexLit")
+                     object.transform.position.x += 5.0f;
+             }
+         }},
+        {"fallback-casters-point.json", "Standard's _ALPHATEST_ON caster ignores _Cutoff",
+         [](scene::Scene&, reference::ReferenceOptions& o) { o.ignoreCasterCutoff = true; }},
+        {"fallback-casters-spot.json", "Standard's alpha-blended casters taken as opaque",
+         [](scene::Scene& s, reference::ReferenceOptions&) {
+             for (scene::Object& object : s.objects) object.material.keywords.clear();
+         }},
         // Lightmaps (LIGHTING.md §8.7): what the lightmap variants change in these shaders.
         {"lightmaps-shadowmask-shadow-vertex.json", "lightmapped objects keep vertex lights and SH",
          [](scene::Scene& s, reference::ReferenceOptions&) {
@@ -296,7 +316,7 @@ protected:
     static scene::Scene probeScene(std::optional<scene::Lightmap> lightmap,
                                    scene::MixedLightingMode mode) {
         scene::Scene scene = oneSphere();
-        scene.objects[0].material = {"Test/LightmapProbe", {}, ""};
+        scene.objects[0].material = {"Test/LightmapProbe", {}, "", {}};
         scene.objects[0].lightmap = std::move(lightmap);
         scene.mixedLighting = mode;
         return scene;

@@ -233,7 +233,9 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
     if (Status cookies = textures.loadCookieFiles(scene.lights); !cookies) return cookies.error();
     // Every G-buffer object casts (varc/DeferredGBuffer falls back to VertexLit's caster).
     DeferredShadows shadows;
-    const std::vector<bool> casts(scene.objects.size(), true);
+    ShadowCaster opaque;
+    opaque.casts = true;
+    const std::vector<ShadowCaster> casts(scene.objects.size(), opaque);
     bool anyShadowMap = false;
     for (const scene::Light& light : scene.lights) {
         shadows.fades.push_back(shadowFadeFor(scene, light));

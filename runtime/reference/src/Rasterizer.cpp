@@ -129,12 +129,14 @@ void rasterizeTriangle(const std::array<glm::vec4, 3>& clip, uint32_t width, uin
     }
 }
 
-VisibilityBuffer rasterizeScene(const scene::Scene& scene, const scene::CameraMatrices& camera) {
+VisibilityBuffer rasterizeScene(const scene::Scene& scene, const scene::CameraMatrices& camera,
+                                const std::vector<bool>& drawn) {
     VisibilityBuffer buffer;
     buffer.width = scene.camera.width;
     buffer.height = scene.camera.height;
     buffer.samples.assign(size_t{buffer.width} * buffer.height, SurfaceSample{});
     for (size_t o = 0; o < scene.objects.size(); ++o) {
+        if (o < drawn.size() && !drawn[o]) continue;
         const scene::Object& object = scene.objects[o];
         const scene::Mesh& mesh = scene::builtinMesh(object.mesh);
         const glm::mat4 toWorld = object.transform.localToWorld();

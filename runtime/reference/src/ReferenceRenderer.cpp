@@ -189,6 +189,8 @@ glm::vec4 shadePass(const ObjectDraw& draw, const Varyings& in, const PassLight&
             return {seed001Phong(m, in, light, n, cameraPos, ambient, base), 1.0f};
         case ShaderModel::Seed004Diffuse:
             return seed004Diffuse(draw, in, light, ambient, base, textures, upper);
+        case ShaderModel::CasterOnly:  // not in the camera: never shaded
+            break;
     }
     return glm::vec4(0.0f);
 }
@@ -309,6 +311,52 @@ glm::vec4 accumulate(const glm::vec4& base, const std::vector<glm::vec4>& adds, 
     return hdr ? dst : dst / 255.0f;
 }
 
+// Standard's caster (UnityStandardShadow.cginc) under the material's shader_feature keywords:
+// _ALPHATEST_ON clips at _Cutoff; _ALPHABLEND_ON and _ALPHAPREMULTIPLY_ON dither, the latter
+// with alpha raised to 1 - oneMinusReflectivity + alpha * oneMinusReflectivity (linear colour
+// space: oneMinusReflectivity = 0.96 - 0.96 * _Metallic). Without them it is opaque. The
+// three are one shader_feature: InvalidInput when the material names more than one.
+Status applyStandardCasterKeywords(const std::vector<std::string>& keywords, MaterialParams& p) {
+    auto has = [&](const char* k) {
+        return std::find(keywords.begin(), keywords.end(), k) != keywords.end();
+    };
+    const int named = int{has("_ALPHATEST_ON")} + int{has("_ALPHABLEND_ON")} +
+                      int{has("_ALPHAPREMULTIPLY_ON")};
+    if (named > 1) {
+        return makeError(ErrorCode::InvalidInput,
+                         "material keywords: at most one of _ALPHATEST_ON, _ALPHABLEND_ON and "
+                         "_ALPHAPREMULTIPLY_ON (one shader_feature)");
+    }
+    if (has("_ALPHATEST_ON")) {
+        p.casterAlphaTest = true;
+    } else if (has("_ALPHABLEND_ON")) {
+        p.casterDither = true;
+    } else if (has("_ALPHAPREMULTIPLY_ON")) {
+        p.casterDither = true;
+        const float oneMinusReflectivity = 0.96f - 0.96f * p.metallic;
+        p.casterAlphaScale = oneMinusReflectivity;
+        p.casterAlphaBias = 1.0f - oneMinusReflectivity;
+    }
+    return Ok{};
+}
+
+// How |m|'s object draws into the shadow maps.
+ShadowCaster casterOf(const MaterialParams& m, const ReferenceOptions& options) {
+    ShadowCaster caster;
+    caster.casts = m.castsShadows;
+    caster.cullOff = m.casterCullOff;
+    caster.alphaTest = m.casterAlphaTest && !options.ignoreCasterCutoff;
+    caster.dither = m.casterDither;
+    caster.alphaScale = m.casterAlphaScale;
+    caster.alphaBias = m.casterAlphaBias;
+    caster.cutoff = m.cutoff;
+    caster.colorAlpha = m.color.a;
+    caster.mainTexAlpha = m.mainTex.a;
+    caster.mainTexture = m.mainTexture;
+    caster.mainTexST = m.mainTexST;
+    return caster;
+}
+
 }  // namespace
 
 Result<MaterialParams> resolveMaterial(const scene::Material& material) {
@@ -336,6 +384,11 @@ Result<MaterialParams> resolveMaterial(const scene::Material& material) {
         p.model = ShaderModel::Seed004Diffuse;
         p.castsShadows = true;         // Fallback "VertexLit"
         p.receivesBaseShadows = true;  // multi_compile_fwdbase; its add pass has no shadow keywords
+    } else if (model == "varc-caster" || model == "varc-caster-cutout" ||
+               model == "varc-standard-caster") {
+        p.model = ShaderModel::CasterOnly;
+        p.castsShadows = true;
+        p.casterCullOff = p.casterAlphaTest = model == "varc-caster-cutout";
     } else {
         return makeError(ErrorCode::NotFound,
                          "no reference model for shader '" + material.shader + "'" +
@@ -359,8 +412,14 @@ Result<MaterialParams> resolveMaterial(const scene::Material& material) {
             p.specColor = glm::vec3(c);
         } else if (name == "_Shininess") {
             status = readFloatProperty(value, name, p.shininess);
+        } else if (name == "_Cutoff") {
+            status = readFloatProperty(value, name, p.cutoff);
         }
         if (!status) return status.error();
+    }
+    if (model == "varc-standard-caster") {
+        if (Status keywords = applyStandardCasterKeywords(material.keywords, p); !keywords)
+            return keywords.error();
     }
     return p;
 }
@@ -369,10 +428,12 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
     if (scene.camera.path != scene::RenderPath::Forward) {
         return makeError(ErrorCode::Unsupported, "the CPU reference renders the forward path only");
     }
-    std::vector<bool> casts;
+    std::vector<ShadowCaster> casts;
+    std::vector<bool> drawn;  // in the camera
     for (const scene::Object& object : scene.objects) {
         auto material = resolveMaterial(object.material);
-        casts.push_back(material && material->castsShadows);
+        casts.push_back(material ? casterOf(*material, options) : ShadowCaster{});
+        drawn.push_back(!material || material->model != ShaderModel::CasterOnly);
     }
     ShadowMapSet shadowMaps;
     shadowMaps.maps.resize(scene.lights.size());
@@ -405,7 +466,7 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
 
     const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);
     ReferenceImage out;
-    out.visibility = rasterizeScene(scene, camera);
+    out.visibility = rasterizeScene(scene, camera, drawn);
     out.classes = classifyPixels(scene, out.visibility);
     const uint32_t w = scene.camera.width, h = scene.camera.height;
     out.color = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);

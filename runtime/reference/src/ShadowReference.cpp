@@ -58,20 +58,55 @@ constexpr float kAxisEpsilon = 1e-5f;
 
 }  // namespace
 
-void ShadowMapReference::drawCasters(const scene::Scene& scene, const std::vector<bool>& casts,
+namespace {
+
+// How close the alpha test's value may come to 0 (or the dither slice coordinate to a slice
+// boundary) before a conformant GPU could decide either way: 8-bit texels, bilinear weights,
+// half-precision alpha and interpolated texture coordinates of finite precision.
+constexpr float kClipEpsilon = 1.0f / 64.0f;
+
+enum class Coverage { None, Unknown, Full };
+
+// Whether the caster's fragment at mesh uv |uv| writes depth (ShadowCaster's clip()).
+Coverage coverageAt(const ShadowCaster& caster, const glm::vec2& uv) {
+    if (!caster.alphaTest && !caster.dither) return Coverage::Full;
+    const glm::vec4& st = caster.mainTexST;
+    const glm::vec2 at = uv * glm::vec2(st) + glm::vec2(st.z, st.w);
+    const float texel = caster.mainTexture ? caster.mainTexture->sample(at).a : caster.mainTexAlpha;
+    const float alpha = texel * caster.colorAlpha * caster.alphaScale + caster.alphaBias;
+    if (caster.alphaTest) {
+        const float value = alpha - caster.cutoff;
+        return value < -kClipEpsilon ? Coverage::None
+               : value > kClipEpsilon ? Coverage::Full
+                                      : Coverage::Unknown;
+    }
+    const float slice = alpha * 15.0f;  // (alpha * 15/16) * 16 slices
+    return slice < 1.0f - kClipEpsilon    ? Coverage::None
+           : slice > 15.0f + kClipEpsilon ? Coverage::Full
+                                          : Coverage::Unknown;
+}
+
+}  // namespace
+
+void ShadowMapReference::drawCasters(const scene::Scene& scene,
+                                     const std::vector<ShadowCaster>& casters,
                                      const glm::mat4& viewProjection, const glm::vec4& bias,
                                      bool mirrored, size_t face, glm::uvec2 origin,
                                      uint32_t tileSize) {
     std::vector<float>& depths = mFaces[face];
+    std::vector<float>& nearDepths = mNearFaces[face];
     const uint32_t tile = tileSize ? tileSize : mSize;
     for (size_t o = 0; o < scene.objects.size(); ++o) {
-        if (o >= casts.size() || !casts[o]) continue;
+        if (o >= casters.size() || !casters[o].casts) continue;
+        const ShadowCaster& caster = casters[o];
         const scene::Object& object = scene.objects[o];
         const scene::Mesh& mesh = scene::builtinMesh(object.mesh);
         const glm::mat4 toWorld = object.transform.localToWorld();
         const glm::mat3 normalMatrix = glm::transpose(glm::mat3(glm::inverse(toWorld)));
         const bool flipped = (glm::determinant(toWorld) < 0.0f) != mirrored;
-        const CullMode cull = flipped ? CullMode::Front : CullMode::Back;
+        const CullMode cull = caster.cullOff ? CullMode::None
+                              : flipped      ? CullMode::Front
+                                             : CullMode::Back;
         std::vector<glm::vec4> clip(mesh.positions.size());
         for (size_t v = 0; v < mesh.positions.size(); ++v) {
             const glm::vec3 world(toWorld * glm::vec4(mesh.positions[v], 1.0f));
@@ -79,11 +114,19 @@ void ShadowMapReference::drawCasters(const scene::Scene& scene, const std::vecto
             clip[v] = casterClip(world, normal, mLightVector, viewProjection, bias);
         }
         for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-            const std::array<glm::vec4, 3> triangle = {
-                clip[mesh.indices[t]], clip[mesh.indices[t + 1]], clip[mesh.indices[t + 2]]};
+            const std::array<uint32_t, 3> index = {mesh.indices[t], mesh.indices[t + 1],
+                                                   mesh.indices[t + 2]};
+            const std::array<glm::vec4, 3> triangle = {clip[index[0]], clip[index[1]],
+                                                       clip[index[2]]};
             rasterizeTriangle(triangle, tile, tile, cull, [&](const Fragment& f) {
-                float& stored = depths[size_t{f.y + origin.y} * mSize + f.x + origin.x];
-                stored = std::min(stored, f.depth);
+                glm::vec2 uv(0.0f);
+                for (int k = 0; k < 3; ++k) uv += f.bary[k] * mesh.uvs[index[size_t(k)]];
+                const Coverage coverage = coverageAt(caster, uv);
+                if (coverage == Coverage::None) return;  // discarded
+                const bool sure = coverage == Coverage::Full;
+                const size_t texel = size_t{f.y + origin.y} * mSize + f.x + origin.x;
+                if (sure) depths[texel] = std::min(depths[texel], f.depth);
+                nearDepths[texel] = std::min(nearDepths[texel], f.depth);
             });
         }
     }
@@ -91,7 +134,7 @@ void ShadowMapReference::drawCasters(const scene::Scene& scene, const std::vecto
 
 ShadowMapReference ShadowMapReference::renderSpot(const scene::Scene& scene,
                                                   const scene::Light& light,
-                                                  const std::vector<bool>& casts) {
+                                                  const std::vector<ShadowCaster>& casters) {
     ShadowMapReference map;
     map.mCamera = scene::spotShadowCamera(light);
     map.mStrength = light.shadowStrength;
@@ -99,13 +142,15 @@ ShadowMapReference ShadowMapReference::renderSpot(const scene::Scene& scene,
     map.mLightPos = light.transform.position;
     map.mLightVector = glm::vec4(map.mLightPos, 1.0f);
     map.mFaces.assign(1, std::vector<float>(size_t{map.mSize} * map.mSize, 1.0f));
-    map.drawCasters(scene, casts, map.mCamera.matrices.viewProjection, map.mCamera.bias, false, 0);
+    map.mNearFaces = map.mFaces;
+    map.drawCasters(scene, casters, map.mCamera.matrices.viewProjection, map.mCamera.bias, false,
+                    0);
     return map;
 }
 
 ShadowMapReference ShadowMapReference::renderPoint(const scene::Scene& scene,
                                                    const scene::Light& light,
-                                                   const std::vector<bool>& casts) {
+                                                   const std::vector<ShadowCaster>& casters) {
     const scene::PointShadowCamera camera = scene::pointShadowCamera(light);
     ShadowMapReference map;
     map.mCube = true;
@@ -115,8 +160,9 @@ ShadowMapReference ShadowMapReference::renderPoint(const scene::Scene& scene,
     map.mLightPos = light.transform.position;
     map.mLightVector = glm::vec4(map.mLightPos, 1.0f);
     map.mFaces.assign(6, std::vector<float>(size_t{map.mSize} * map.mSize, 1.0f));
+    map.mNearFaces = map.mFaces;
     for (size_t face = 0; face < 6; ++face) {
-        map.drawCasters(scene, casts, camera.faceViewProjection[face], camera.bias,
+        map.drawCasters(scene, casters, camera.faceViewProjection[face], camera.bias,
                         camera.mirrored[face], face);
     }
     return map;
@@ -124,7 +170,7 @@ ShadowMapReference ShadowMapReference::renderPoint(const scene::Scene& scene,
 
 ShadowMapReference ShadowMapReference::renderDirectional(const scene::Scene& scene,
                                                          const scene::Light& light,
-                                                         const std::vector<bool>& casts) {
+                                                         const std::vector<ShadowCaster>& casters) {
     ShadowMapReference map;
     map.mDirectional = true;
     map.mCascades = scene::directionalShadowSetup(scene, light);
@@ -132,9 +178,10 @@ ShadowMapReference ShadowMapReference::renderDirectional(const scene::Scene& sce
     map.mSize = map.mCascades.resolution;
     map.mLightVector = glm::vec4(-light.forward(), 0.0f);
     map.mFaces.assign(1, std::vector<float>(size_t{map.mSize} * map.mSize, 1.0f));
+    map.mNearFaces = map.mFaces;
     for (int c = 0; c < map.mCascades.cascades; ++c) {
         const auto i = static_cast<size_t>(c);
-        map.drawCasters(scene, casts, map.mCascades.viewProjection[i], map.mCascades.bias, false,
+        map.drawCasters(scene, casters, map.mCascades.viewProjection[i], map.mCascades.bias, false,
                         0, map.mCascades.tileOrigin[i], map.mCascades.tileSize);
     }
     return map;
@@ -158,12 +205,16 @@ ShadowInterval ShadowMapReference::tap(size_t face, const glm::vec2& uv, float z
     bool surelyLit = true, maybeLit = false;
     for (int a = 0; a < counts[0]; ++a) {
         for (int b = 0; b < counts[1]; ++b) {
-            const float stored = depth(static_cast<uint32_t>(candidates[0][a]),
-                                       static_cast<uint32_t>(candidates[1][b]), face);
-            const bool lit = mFlipped ? z >= stored : z <= stored;
-            const bool close = std::abs(z - stored) <= kDepthEpsilon;
-            surelyLit = surelyLit && lit && !close;
-            maybeLit = maybeLit || lit || close;
+            const auto x = static_cast<uint32_t>(candidates[0][a]);
+            const auto y = static_cast<uint32_t>(candidates[1][b]);
+            // The GPU stored a depth between the nearest and the farthest possible.
+            const float nearest = mNearFaces[face][size_t{y} * mSize + x];
+            for (const float stored : {depth(x, y, face), nearest}) {
+                const bool lit = mFlipped ? z >= stored : z <= stored;
+                const bool close = std::abs(z - stored) <= kDepthEpsilon;
+                surelyLit = surelyLit && lit && !close;
+                maybeLit = maybeLit || lit || close;
+            }
         }
     }
     return {surelyLit ? 1.0f : 0.0f, maybeLit ? 1.0f : 0.0f};
@@ -310,25 +361,30 @@ ShadowInterval ShadowMapReference::collect(const glm::vec3& p, float viewZ, bool
 }
 
 std::vector<ShadowInterval> ShadowMapReference::screenMask(const scene::Scene& scene,
-                                                           const std::vector<bool>& casts,
+                                                           const std::vector<ShadowCaster>& casters,
                                                            bool soft) const {
-    scene::Scene casters = scene;
-    casters.objects.clear();
+    scene::Scene casting = scene;
+    casting.objects.clear();
     std::vector<size_t> original;
     for (size_t o = 0; o < scene.objects.size(); ++o) {
-        if (o < casts.size() && casts[o]) {
-            casters.objects.push_back(scene.objects[o]);
+        if (o < casters.size() && casters[o].casts) {
+            casting.objects.push_back(scene.objects[o]);
             original.push_back(o);
         }
     }
     const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);
-    const VisibilityBuffer depth = rasterizeScene(casters, camera);
+    const VisibilityBuffer depth = rasterizeScene(casting, camera);
     const glm::vec3 forward = glm::normalize(scene.camera.target - scene.camera.position);
     std::vector<ShadowInterval> mask(depth.samples.size(), ShadowInterval{1.0f, 1.0f});
     for (size_t i = 0; i < depth.samples.size(); ++i) {
         const SurfaceSample& sample = depth.samples[i];
         if (sample.object < 0) continue;  // the far plane: beyond every cascade, lit
-        const scene::Object& object = scene.objects[original[static_cast<size_t>(sample.object)]];
+        const size_t index = original[static_cast<size_t>(sample.object)];
+        if (casters[index].alphaTest || casters[index].dither) {  // a hole or not: unknown
+            mask[i] = {1.0f - mStrength, 1.0f};
+            continue;
+        }
+        const scene::Object& object = scene.objects[index];
         const scene::Mesh& mesh = scene::builtinMesh(object.mesh);
         const glm::mat4 toWorld = object.transform.localToWorld();
         glm::vec3 p(0.0f);

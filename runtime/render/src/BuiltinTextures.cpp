@@ -41,6 +41,25 @@ std::vector<Image> cookieLayers(const scene::CookieImage& cookie) {
     return layers;
 }
 
+// The 16 slices of _DitherMaskLOD: texel (x, y) of slice k has alpha 1 when its rank in the 4 x 4
+// Bayer matrix is below round(16 k / 15), else 0 (slice 0: nothing, slice 15: everything).
+std::vector<Image> ditherSlices() {
+    constexpr uint8_t kBayer[4][4] = {{0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
+    std::vector<Image> slices;
+    for (uint32_t k = 0; k < 16; ++k) {
+        const uint32_t covered = (16 * k + 7) / 15;
+        Image image(4, 4, PixelFormat::Rgba8);
+        for (uint32_t y = 0; y < 4; ++y) {
+            for (uint32_t x = 0; x < 4; ++x) {
+                const uint8_t a = kBayer[y][x] < covered ? 255 : 0;
+                image.setPixel8(x, y, {255, 255, 255, a});
+            }
+        }
+        slices.push_back(std::move(image));
+    }
+    return slices;
+}
+
 Result<Texture> make2D(VulkanContext& context, const Image& image, const char* name) {
     TextureOptions options;
     options.name = name;
@@ -82,6 +101,10 @@ Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
                                      {false, false, "point cookie"});
     if (!point) return point.error();
     textures.mPoint.emplace(std::move(*point));
+    const std::vector<Image> dither = ditherSlices();
+    auto ditherMask = Texture::createVolume(context, dither, {false, false, "dither mask"});
+    if (!ditherMask) return ditherMask.error();
+    textures.mDither.emplace(std::move(*ditherMask));
 
     SamplerDesc repeat;
     repeat.name = "linear repeat";
@@ -94,6 +117,13 @@ Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
     auto clampSampler = createSampler(context, clamp);
     if (!clampSampler) return clampSampler.error();
     textures.mClamp = std::move(*clampSampler);
+    SamplerDesc nearest;
+    nearest.filter = VK_FILTER_NEAREST;
+    nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    nearest.name = "nearest repeat";
+    auto nearestSampler = createSampler(context, nearest);
+    if (!nearestSampler) return nearestSampler.error();
+    textures.mNearestRepeat = std::move(*nearestSampler);
     return textures;
 }
 
@@ -120,6 +150,9 @@ std::optional<TextureBinding> BuiltinTextures::named(std::string_view givenName,
 }
 
 TextureBinding BuiltinTextures::falloff() const { return {mFalloff->view(), mClamp.get()}; }
+TextureBinding BuiltinTextures::ditherMask() const {
+    return {mDither->view(), mNearestRepeat.get()};
+}
 TextureBinding BuiltinTextures::spotCookie() const { return {mSpot->view(), mClamp.get()}; }
 TextureBinding BuiltinTextures::directionalCookie() const {
     return {mDirectional->view(), mRepeat.get()};

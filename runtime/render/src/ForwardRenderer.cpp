@@ -83,6 +83,12 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
     const Pack* pack = nullptr;
     auto shader = objectShader(what, object, &pack);
     if (!shader) return shader.error();
+    // A shader with a ShadowCaster pass and no ForwardBase pass (varc's built-in fallbacks used
+    // directly) draws into the shadow maps only, as in Unity.
+    if (!shader->pass(std::string_view("ForwardBase")) &&
+        shader->pass(std::string_view("ShadowCaster"))) {
+        return Ok{};
+    }
     const scene::ForwardLightAssignment assignment = scene::assignForwardLights(scene, object);
     const ShaderValues& objectLayer =
         storage.values.emplace_back(objectValues(scene, object, matrices, assignment));

@@ -136,8 +136,11 @@ Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
         if (!shader) return shader.error();
         std::optional<PassView> pass = shader->pass(std::string_view("ShadowCaster"));
         if (!pass) continue;  // casts no shadow
-        auto variant = pass->lookup(std::vector<std::string>{keyword},
-                                    variants::SelectionPolicy::Closest);
+        // The light's keyword and the material's (shader_feature variants, e.g. Standard's
+        // _ALPHATEST_ON).
+        std::vector<std::string> keywords = object.material.keywords;
+        keywords.push_back(keyword);
+        auto variant = pass->lookup(keywords, variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         auto material =
             renderer.objectMaterial(what, object.material, shader->properties(), storage);
@@ -152,6 +155,13 @@ Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
         if (!draw) return draw.error();
         draw->layers[1] = &objectLayer;
         draw->layers[3] = &camera;
+        draw->textures = [dither = renderer.textures->ditherMask(),
+                          material = std::move(draw->textures)](
+                             std::string_view name,
+                             pack::ResourceDim dim) -> std::optional<TextureBinding> {
+            if (name == "_DitherMaskLOD" && dim == pack::ResourceDim::Dim3D) return dither;
+            return material(name, dim);
+        };
         draws.push_back(std::move(*draw));
         drawn.push_back(variant->describe());
     }

@@ -55,6 +55,19 @@ std::string referenceModelOf(const Material& material) {
         {"varc/GlslVertexLights", "varc-glsl-vertex-lights"},
         {"varc/DeferredGBuffer", "varc-deferred-gbuffer"},
         {"varc/SinglePassLit", "varc-single-pass-lit"},
+        // varc's built-in fallbacks drawn directly: a ShadowCaster pass and nothing else.
+        {"Legacy Shaders/VertexLit", "varc-caster"},
+        {"Legacy Shaders/Diffuse", "varc-caster"},
+        {"Legacy Shaders/Specular", "varc-caster"},
+        {"Legacy Shaders/Bumped Diffuse", "varc-caster"},
+        {"Legacy Shaders/Bumped Specular", "varc-caster"},
+        {"Mobile/VertexLit", "varc-caster"},
+        {"Mobile/Diffuse", "varc-caster"},
+        {"Mobile/Bumped Diffuse", "varc-caster"},
+        {"Standard", "varc-standard-caster"},
+        {"Legacy Shaders/Transparent/Cutout/VertexLit", "varc-caster-cutout"},
+        {"Legacy Shaders/Transparent/Cutout/Diffuse", "varc-caster-cutout"},
+        {"Legacy Shaders/Transparent/Cutout/Specular", "varc-caster-cutout"},
     };
     auto it = kDefaults.find(material.shader);
     return it == kDefaults.end() ? std::string() : it->second;

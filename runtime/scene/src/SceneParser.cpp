@@ -256,12 +256,25 @@ bool readProperty(Reader& r, const json& value, const std::string& p, PropertyVa
 }
 
 bool readMaterial(Reader& r, const json& value, const std::string& p, Material& m) {
-    if (!r.onlyKeys(value, p, {"shader", "properties", "reference"})) return false;
+    if (!r.onlyKeys(value, p, {"shader", "properties", "reference", "keywords"})) return false;
     if (value.contains("shader") && !r.readString(value["shader"], p + "/shader", m.shader))
         return false;
     if (value.contains("reference") &&
         !r.readString(value["reference"], p + "/reference", m.reference)) {
         return false;
+    }
+    if (value.contains("keywords")) {
+        const json& keywords = value["keywords"];
+        if (!keywords.is_array()) {
+            return r.fail(p + "/keywords",
+                          "expected an array of keyword names, got " + Reader::shortDump(keywords));
+        }
+        for (size_t i = 0; i < keywords.size(); ++i) {
+            std::string keyword;
+            if (!r.readString(keywords[i], p + "/keywords/" + std::to_string(i), keyword))
+                return false;
+            m.keywords.push_back(std::move(keyword));
+        }
     }
     if (!value.contains("properties")) return true;
     const json& props = value["properties"];

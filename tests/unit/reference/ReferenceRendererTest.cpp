@@ -146,8 +146,66 @@ TEST(ReferenceRenderer, TheMaterialsReferenceFieldPicksTheModel) {
     EXPECT_NE(image.error().detail.find("reference 'no-such-model'"), std::string::npos);
 }
 
+// A spot light straight above a receiving plane and, between them, a plane drawn with a shader
+// that only casts (|shader|, alpha _Color.a against _Cutoff 0.5 where it tests alpha).
+scene::Scene casterScene(const std::string& shader, float alpha,
+                         const std::string& keywords = "[]") {
+    const std::string json = R"({
+      "camera": {"position": [0, 2, -2], "target": [0, -0.5, 0], "width": 65, "height": 65},
+      "objects": [
+        {"mesh": "plane", "position": [0, -0.5, 0], "scale": [0.3, 1, 0.3],
+         "material": {"shader": "varc/SimpleDiffuse", "properties": {"_Color": [1, 1, 1, 1]}}},
+        {"mesh": "plane", "position": [0, 0.5, 0], "scale": [0.05, 1, 0.05],
+         "material": {"shader": ")" + shader + R"(", "keywords": )" + keywords + R"(,
+                      "properties": {"_Color": [1, 1, 1, )" + std::to_string(alpha) + R"(],
+                                     "_Cutoff": 0.5}}}],
+      "lights": [{"type": "spot", "position": [0, 2, 0], "rotation": [90, 0, 0],
+                  "spot_angle": 60, "range": 5, "shadows": "hard"}]})";
+    auto scene = scene::parseScene(json, "caster.json");
+    EXPECT_TRUE(scene.ok()) << (scene.ok() ? "" : scene.error().detail);
+    return scene.ok() ? *scene : scene::Scene{};
+}
+
+float centreOf(const scene::Scene& s) {
+    auto image = renderReference(s);
+    EXPECT_TRUE(image.ok()) << (image.ok() ? "" : image.error().detail);
+    if (!image.ok()) return -1.0f;
+    for (const SurfaceSample& sample : image->visibility.samples)
+        EXPECT_NE(sample.object, 1) << "a shader that only casts draws nothing in the camera";
+    return image->color.pixelFloat(32, 32)[0];
+}
+
+TEST(ReferenceRenderer, CasterOnlyShadersCastAndAlphaTestAgainstCutoff) {
+    const float lit = centreOf(casterScene("Legacy Shaders/Transparent/Cutout/VertexLit", 0.3f));
+    const float shadowed =
+        centreOf(casterScene("Legacy Shaders/Transparent/Cutout/VertexLit", 0.9f));
+    EXPECT_GT(lit, shadowed + 0.1f) << "alpha 0.3 < _Cutoff: no shadow; 0.9: a shadow";
+    // The opaque caster ignores alpha; so does the mutation hook for alpha-tested ones.
+    EXPECT_NEAR(centreOf(casterScene("Legacy Shaders/VertexLit", 0.3f)), shadowed, 1e-6f);
+    ReferenceOptions ignoring;
+    ignoring.ignoreCasterCutoff = true;
+    auto mutated = renderReference(
+        casterScene("Legacy Shaders/Transparent/Cutout/Diffuse", 0.3f), ignoring);
+    ASSERT_TRUE(mutated.ok());
+    EXPECT_NEAR(mutated->color.pixelFloat(32, 32)[0], shadowed, 1e-6f);
+}
+
+TEST(ReferenceRenderer, StandardCasterFollowsTheMaterialKeywords) {
+    const float shadowed = centreOf(casterScene("Standard", 0.3f));  // no keyword: opaque
+    const float lit = centreOf(casterScene("Standard", 0.3f, R"(["_ALPHATEST_ON"])"));
+    EXPECT_GT(lit, shadowed + 0.1f);
+    // Dithered: alpha 0 is slice 0 (nothing); premultiplied alpha 0 is 0.04 (still slice 0).
+    EXPECT_NEAR(centreOf(casterScene("Standard", 0.0f, R"(["_ALPHABLEND_ON"])")), lit, 1e-6f);
+    EXPECT_NEAR(centreOf(casterScene("Standard", 0.0f, R"(["_ALPHAPREMULTIPLY_ON"])")), lit,
+                1e-6f);
+    auto both = renderReference(
+        casterScene("Standard", 1.0f, R"(["_ALPHATEST_ON", "_ALPHABLEND_ON"])"));
+    ASSERT_FALSE(both.ok());
+    EXPECT_EQ(both.error().code, ErrorCode::InvalidInput);
+}
+
 TEST(ReferenceRenderer, RejectsWhatItCannotModel) {
-    scene::Scene s = centredScene("Legacy Shaders/Diffuse");
+    scene::Scene s = centredScene("Legacy Shaders/Reflective/Diffuse");
     auto image = renderReference(s);
     ASSERT_FALSE(image.ok());
     EXPECT_EQ(image.error().code, ErrorCode::NotFound) << "no model: rendered, not compared";

@@ -89,6 +89,20 @@ TEST(SceneParser, EmptyObjectGivesDefaults) {
     EXPECT_TRUE(scene->objects.empty());
 }
 
+TEST(SceneParser, MaterialKeywords) {
+    auto scene = parseScene(R"({"objects":[{"mesh":"cube",
+                                            "material":{"keywords":["_ALPHATEST_ON"]}}]})",
+                            "a.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().detail;
+    EXPECT_EQ(scene->objects[0].material.keywords, std::vector<std::string>{"_ALPHATEST_ON"});
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","material":{"keywords":"_ALPHATEST_ON"}}]})"),
+              "scenes/a.json: /objects/0/material/keywords: expected an array of keyword names, "
+              "got \"_ALPHATEST_ON\"");
+    EXPECT_EQ(errorOf(R"({"objects":[{"mesh":"cube","material":{"keywords":[1]}}]})")
+                  .rfind("scenes/a.json: /objects/0/material/keywords/0: expected a string", 0),
+              0u);
+}
+
 TEST(SceneParser, DeferredShaderNamesTheLightShader) {
     auto scene = parseScene(
         R"({"camera":{"path":"deferred","deferred_shader":"Custom/DeferredShading"}})", "a.json");

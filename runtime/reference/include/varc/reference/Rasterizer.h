@@ -50,7 +50,9 @@ struct VisibilityBuffer {
     std::vector<SurfaceSample> samples;  // row-major, row 0 at the top
     const SurfaceSample& at(uint32_t x, uint32_t y) const { return samples[size_t{y} * width + x]; }
 };
-VisibilityBuffer rasterizeScene(const scene::Scene& scene, const scene::CameraMatrices& camera);
+// Objects whose |drawn| entry is false are left out (an empty |drawn| draws every object).
+VisibilityBuffer rasterizeScene(const scene::Scene& scene, const scene::CameraMatrices& camera,
+                                const std::vector<bool>& drawn = {});
 
 // Background: no triangle covers the pixel centre and none covers a neighbour's; Edge: within one
 // pixel of a silhouette, an object boundary or a crease (two neighbouring pixels of one object

@@ -24,6 +24,9 @@ enum class ShaderModel {
     GlslBlinnPhong,  // "varc/GlslVertexLights"
     Seed001Phong,    // seed 001 as written: per-pixel Phong, 1/d point lights, 4 vertex lights
     Seed004Diffuse,  // seed 004 as written: object-space Lambert, ambient x2 and light x2
+    // varc's built-in fallbacks used directly ("Legacy Shaders/VertexLit", "Standard", the
+    // Transparent/Cutout family): a ShadowCaster pass only, nothing drawn in the camera.
+    CasterOnly,
 };
 struct MaterialParams {
     ShaderModel model = ShaderModel::ForwardPbs;
@@ -41,9 +44,20 @@ struct MaterialParams {
     bool castsShadows = false;
     bool receivesAddShadows = false;
     bool receivesBaseShadows = false;  // the main directional light's (SHADOWS_SCREEN) in ForwardBase
+    // The caster pass's Cull Off and alpha test against _Cutoff (ShadowCaster), and the
+    // property the test reads (the shader's default 0.5 unless the material sets it).
+    bool casterCullOff = false;
+    bool casterAlphaTest = false;
+    float cutoff = 0.5f;
+    // Standard's alpha-blended caster (_ALPHABLEND_ON, _ALPHAPREMULTIPLY_ON): dithered
+    // coverage of alpha * casterAlphaScale + casterAlphaBias (ShadowCaster).
+    bool casterDither = false;
+    float casterAlphaScale = 1.0f, casterAlphaBias = 0.0f;
 };
 // The parameters of |material| for its reference model (scene::referenceModelOf: "seed000",
-// "varc-forward", "varc-simple-diffuse", "varc-glsl-vertex-lights", "seed001", "seed004") with
+// "varc-forward", "varc-simple-diffuse", "varc-glsl-vertex-lights", "seed001", "seed004",
+// "varc-caster", "varc-caster-cutout" and "varc-standard-caster" (material keywords
+// _ALPHATEST_ON, _ALPHABLEND_ON, _ALPHAPREMULTIPLY_ON) for the fallbacks that only cast) with
 // that shader's Properties defaults. _MainTex may be "white", "black" or a PNG file (loaded
 // here). NotFound when the material names no model the forward reference knows (the scene can
 // still be rendered, without a comparison); Unsupported for other texture names; InvalidInput
@@ -62,6 +76,8 @@ struct ReferenceOptions {
     std::function<void(scene::ForwardLightAssignment&)> editAssignment;
     // Mutation: forward receivers ignore the shadow-distance fade.
     bool ignoreShadowFade = false;
+    // Mutation: alpha-tested casters ignore _Cutoff (cast as if opaque).
+    bool ignoreCasterCutoff = false;
     // Edits each CPU shadow map after it is rasterised (e.g. ShadowMapReference's mutations).
     std::function<void(ShadowMapReference&)> editShadowMap;
 };
@@ -76,7 +92,8 @@ struct ReferenceImage {
 };
 
 // Renders |scene| (camera.path must be Forward): background = camera.background; per object the
-// base pass (main directional light, vertex lights, SH) and one additive pass per add light.
+// base pass (main directional light, vertex lights, SH) and one additive pass per add light;
+// objects whose shader only casts (ShaderModel::CasterOnly) draw into the shadow maps only.
 // LDR (camera.hdr = false) models an RGBA8_UNORM attachment: each pass's output is clamped to
 // [0, 1] and rounded to 8 bits, blended One One with saturation. HDR models
 // R16G16B16A16_SFLOAT: each pass output and each sum is rounded to half precision.

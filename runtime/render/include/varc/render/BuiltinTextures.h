@@ -25,6 +25,9 @@ public:
     TextureBinding spotCookie() const;                         // linear, clamp
     TextureBinding directionalCookie() const;                  // linear, repeat
     TextureBinding pointCookie() const;                        // cube, linear, clamp
+    // `_DitherMaskLOD` (SHADER_ABI.md §6): 4 x 4 x 16, slice k covers round(16 k / 15) texels of
+    // the 4 x 4 tile in the order of the 4 x 4 Bayer matrix; nearest, repeat.
+    TextureBinding ditherMask() const;
 
     // `_LightTexture0` / `_LightTextureB0` for a light (SHADER_ABI.md §6); nullopt for any other
     // name. Forward POINT reads its falloff from _LightTexture0; the deferred light pass reads
@@ -35,8 +38,8 @@ public:
 
 private:
     std::optional<Texture> mWhite, mBlack, mBump, mGray, mRed, mWhiteCube, mWhite3D, mFalloff, mSpot,
-        mDirectional, mPoint;
-    UniqueHandle<VkSampler> mRepeat, mClamp;
+        mDirectional, mPoint, mDither;
+    UniqueHandle<VkSampler> mRepeat, mClamp, mNearestRepeat;
 };
 
 }  // namespace varc::runtime

@@ -63,6 +63,10 @@ struct Material {
     // The CPU reference's lighting model for this material ("reference" in the scene file), e.g.
     // "seed004"; "" = the default for the shader (referenceModelOf).
     std::string reference;
+    // The material's shader keywords ("keywords" in the scene file), e.g. "_ALPHATEST_ON": they
+    // select shader_feature variants of the passes the object draws, as Unity's material
+    // keywords do.
+    std::vector<std::string> keywords;
 };
 
 // The reference model a material selects: its own `reference`, else the default for varc's
