@@ -6,6 +6,7 @@
 #include <string>
 
 #include "varc/build/CompileDriver.h"
+#include "varc/build/PackAssembler.h"
 #include "varc/core/Diagnostic.h"
 
 namespace varc::bench {
@@ -69,7 +70,10 @@ void addBuildableCorpus(BenchInputs& inputs, uint64_t maxVariantsPerPass, unsign
         compiler::BuildOptions build;
         build.jobs = jobs;
         build.maxVariantsPerPass = maxVariantsPerPass;
-        if (!compiler::buildPrograms(one, inputs.sourceMap, build, diagnostics)) continue;
+        // As `varc build` accepts a shader: it compiles and its stages fit together.
+        std::optional<compiler::BuildOutput> output =
+            compiler::buildPrograms(one, inputs.sourceMap, build, diagnostics);
+        if (!output || !compiler::checkStageInterfaces(one, *output, diagnostics)) continue;
         inputs.variants += one.front().variantCount();
         inputs.shaders.push_back(std::move(one.front()));
         ++inputs.corpusFiles;

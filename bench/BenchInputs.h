@@ -24,7 +24,7 @@ struct BenchInputs {
 // Adds every .shader file of ../shared/fixtures and shaders/, sorted by path.
 void addLibraryAndFixtures(BenchInputs& inputs);
 
-// Adds the corpus shaders that build with passes of at most |maxVariantsPerPass| variants
+// Adds the corpus shaders that `varc build` accepts with passes of at most |maxVariantsPerPass| variants
 // (those varc refuses are listed in docs/COMPATIBILITY.md; the few larger passes would dominate
 // any timing), each with its repository folder as include root, as the corpus test builds them.
 // Finding out which build costs one cold build of each, on |jobs| threads.
