@@ -109,7 +109,7 @@ while IFS= read -r -d '' file; do
         if grep -q "is not compiled: its '#pragma" "$log.build"; then
             unlit+=("\`$rel\` (not for Vulkan)")
         else
-            unlit+=("\`$rel\` (LightMode on the SubShader)")
+            unlit+=("\`$rel\` (no ForwardBase pass compiled)")
         fi
         continue
     fi
@@ -159,9 +159,16 @@ build/compat-properties --update\` (the cause column, written by hand, is kept).
 not lit: their relations about lights are n/a; $nonLinear with a non-linear model: \`intensity\`
 is n/a). Not checked, more than $max variants: $(commaList "${skipped[@]}"). No lit pass in
 varc's pack, though the text names \`ForwardBase\`: $(commaList "${unlit[@]}"). A
-pass whose \`#pragma only_renderers\` leaves out Vulkan is not compiled, as in Unity. varc reads
-\`LightMode\` on passes only; Unity's compiled listings show a SubShader's tags among each
-pass's tags, so these passes may be lit in Unity: a varc limit to settle (not yet checked).
+pass whose \`#pragma only_renderers\` leaves out Vulkan is not compiled, as in Unity.
+
+**\`LightMode\` on a SubShader.** varc gives a SubShader's (or its Category's) \`LightMode\` tag
+to each of its passes that sets none; a pass's own tag wins. Unity's manual asks for
+\`LightMode\` in the Pass, but Unity's compiler writes a SubShader's tags into each pass's tags:
+its compiled listings show a SubShader's \`Queue\` and \`RenderType\` in every Pass's \`Tags\`,
+and shaders rely on it (the Crest ocean's built-in-pipeline shader, wave-harmonic/crest, tags
+only its SubShader \`"LightMode"="ForwardBase"\` so that Unity sets the main light's uniforms).
+Eleven corpus files are written so (Shell, ToonLit, BlinnPhong and eight of liminal-bear's); they
+are checked below.
 
 | file | shader | model | $(IFS='|'; echo "${relations[*]}" | sed 's/|/ | /g') | cause of each FAIL |
 |---|---|---|$(printf -- '---|%.0s' "${relations[@]}")---|
