@@ -29,7 +29,7 @@ trimmed=()
 unlit=()
 status=0
 relations=(finite dark lit out_of_range black_cookie white_cookie additivity additivity_ldr
-           intensity translation rotation mirror scale every_variant)
+           intensity translation rotation mirror scale light_axis every_variant)
 
 # "a, b, c" ("none" when empty).
 commaList() {
@@ -47,7 +47,7 @@ causeOf() {
 }
 
 # One table row per shader from `varc validate --properties` output: the row's fields end with
-# the 12 verdicts, the model, renders, drawn, time and the light types; the name may hold spaces.
+# the 15 verdicts, the model, renders, drawn, time and the light types; the name may hold spaces.
 rowsOf() {
     awk -v n="${#relations[@]}" '
         NR == 1 { next }
