@@ -23,7 +23,7 @@ if [ "${1:-}" = --sanitize ]; then
         ctest --output-on-failure -j "$(nproc)" -LE "vulkan|compat")
     # The compatibility corpus builds several times slower under the sanitizers: there it runs
     # for crashes, hangs and unmapped messages only, with small variant spaces. Its property
-    # check (compat.properties, label compat) is left out: it draws ~30 packs on lavapipe,
+    # check (compat.properties, label compat) is left out: it draws ~45 packs on lavapipe,
     # whose JIT runs many times slower under ASan, and the renderer code it drives is the code
     # the vulkan-labelled property tests (library, seeds, mutants) already run here.
     ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 bash "$root/tests/compat/corpus.sh" \

@@ -30,6 +30,7 @@ bool ShaderParser::parse(ShaderFile& shader) {
         return mCursor.unexpected("end of file after the Shader block");
     }
     mScopes.assignTo(shader);
+    for (SubShader& subShader : shader.subShaders) inheritLightMode(subShader);
     return true;
 }
 
@@ -102,6 +103,19 @@ void ShaderParser::applyCategory(const CategoryState& category, SubShader& subSh
     }
     if (subShader.lod == 0) subShader.lod = category.lod;
     for (Pass& pass : subShader.passes) pass.state = pass.state.inheritedFrom(category.state);
+}
+
+// A SubShader's `LightMode` (its own or its Category's) goes to each pass that sets none, as
+// Unity's compiler writes a SubShader's tags into its passes' tags (docs/COMPATIBILITY.md,
+// "LightMode on a SubShader"). `UsePass` entries keep the tags of the pass they name.
+void ShaderParser::inheritLightMode(SubShader& subShader) {
+    std::string lightMode = findTag(subShader.tags, "LightMode");
+    if (lightMode.empty()) return;
+    for (Pass& pass : subShader.passes) {
+        if (pass.usePass.empty() && pass.lightMode().empty()) {
+            pass.tags.emplace_back("LightMode", lightMode);
+        }
+    }
 }
 
 // `Fallback "Diffuse"` or `Fallback Off`.

@@ -34,6 +34,7 @@ private:
     bool parseCategory(ShaderFile& shader);
     bool parseCategoryItem(ShaderFile& shader, CategoryState& category);
     static void applyCategory(const CategoryState& category, SubShader& subShader);
+    static void inheritLightMode(SubShader& subShader);
     bool parseFallback(ShaderFile& shader);
     bool parseDependency(ShaderFile& shader);
     bool parseStringArguments(std::string_view command, size_t count, std::string* first);

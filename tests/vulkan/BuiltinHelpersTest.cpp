@@ -210,6 +210,19 @@ TEST_F(BuiltinHelpersTest, DefaultTextureNamesIgnoreAsciiCase) {
     EXPECT_TRUE(builtin.named("White", pack::ResourceDim::Cube));
 }
 
+// A Cube property whose default is "" takes Unity's texture for an empty name, gray (the
+// renderer passes "gray"): a gray cube, not the white one (a corpus shader, litTransformable,
+// declares `_CustomSkybox ("...", Cube) = "" {}`).
+TEST_F(BuiltinHelpersTest, AGrayCubeStandsForAnEmptyCubeDefault) {
+    const BuiltinTextures& builtin = *mTextures;
+    auto gray = builtin.named("Gray", pack::ResourceDim::Cube);
+    auto white = builtin.named("white", pack::ResourceDim::Cube);
+    ASSERT_TRUE(gray && white);
+    EXPECT_NE(gray->view, white->view);
+    EXPECT_EQ(builtin.named("grey", pack::ResourceDim::Cube)->view, gray->view);
+    EXPECT_FALSE(builtin.named("bump", pack::ResourceDim::Cube));
+}
+
 struct AttenuationCase {
     const char* keyword;
     scene::LightType type;

@@ -97,7 +97,7 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
         {"varc-mutants/UnnormalisedNormal", {"scale"}},
         {"varc-mutants/NanSpot", {"finite"}},
         {"varc-mutants/IntensityIgnored", {"intensity"}},
-        {"varc-mutants/WorldXLight", {"rotation", "mirror"}},
+        {"varc-mutants/WorldXLight", {"rotation", "mirror", "light_axis"}},
         {"varc-mutants/PointCookieNoFalloff", {"white_cookie"}},
     };
     ASSERT_EQ(reports.size(), expected.size() + 3)

@@ -235,6 +235,24 @@ Image flippedLeftRight(const Image& image) {
     return flipped;
 }
 
+Image quarterTurned(const Image& image) {
+    VARC_CHECK(image.width() == image.height());
+    Image turned = image;
+    const size_t size = image.width(), channels = 4;
+    auto turn = [&](auto source, auto target) {
+        for (size_t y = 0; y < size; ++y)
+            for (size_t x = 0; x < size; ++x)
+                for (size_t c = 0; c < channels; ++c)
+                    target[(x * size + (size - 1 - y)) * channels + c] =
+                        source[(y * size + x) * channels + c];
+    };
+    if (image.isFloat())
+        turn(image.floats(), turned.floats());
+    else
+        turn(image.bytes(), turned.bytes());
+    return turned;
+}
+
 NonFinite findNonFinite(const Image& image) {
     NonFinite found;
     if (!image.isFloat()) return found;  // 8-bit values are always finite

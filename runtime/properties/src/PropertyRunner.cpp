@@ -143,6 +143,15 @@ public:
         return &mFrames.insert_or_assign(label, std::move(frame)).first->second;
     }
 
+    // |source| with its image turned a quarter turn clockwise, kept under |label| (not a render).
+    const runtime::RenderedFrame* quarterTurned(const std::string& label,
+                                                const runtime::RenderedFrame* source) {
+        if (!source) return nullptr;
+        runtime::RenderedFrame frame = *source;
+        frame.image = properties::quarterTurned(source->image);
+        return &mFrames.insert_or_assign(label, std::move(frame)).first->second;
+    }
+
     // The frame drawn under |label|, or nullptr (not drawn, or its render failed).
     const runtime::RenderedFrame* frame(const std::string& label) const {
         auto found = mFrames.find(label);
@@ -439,6 +448,18 @@ std::string checkRelations(ShaderCheck& c, const std::string& shader, const Ligh
              {{c.flipped("all lights flipped", allFrame), 1.0f}}, moved);
     c.relate("scale", "x2", c.render("all lights scaled", similar(allLit, 2.0f, glm::vec3(0.0f))),
              {{allFrame, 1.0f}}, moved);
+
+    // Seen from above with every light on the y axis: the objects turned a quarter turn about
+    // it draw the image turned a quarter turn (exactly onto the pixel grid: no resampling).
+    std::vector<Light> axial{overheadDirectional()};
+    if (support.point) axial.push_back(onLightAxis(p, 1.6f));
+    if (support.spot) axial.push_back(onLightAxis(s, 2.5f));
+    const scene::Scene above = fromAbove(lit(axial));
+    c.relate("light_axis", "objects turned 90 degrees about y",
+             c.render("axial lights, objects turned", objectsTurned(above, 90.0f)),
+             {{c.quarterTurned("axial lights, image turned", c.render("axial lights", above)),
+               1.0f}},
+             moved);
     return drawCoverage(c, support, cookies, lit);
 }
 
@@ -575,7 +596,7 @@ const std::vector<std::string>& relationNames() {
     static const std::vector<std::string> kNames{
         "finite",     "dark",           "lit",       "out_of_range", "black_cookie", "white_cookie",
         "additivity", "additivity_ldr", "intensity", "translation",  "rotation",     "mirror",
-        "scale",      "every_variant"};
+        "scale",      "light_axis",     "every_variant"};
     return kNames;
 }
 

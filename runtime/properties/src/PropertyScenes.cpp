@@ -159,6 +159,33 @@ scene::Scene turned(const scene::Scene& original, float degrees) {
     return scene;
 }
 
+scene::Light overheadDirectional() {
+    scene::Light light = keyDirectional();
+    light.transform.rotationDegrees = {90.0f, 0.0f, 0.0f};  // +z -> -y: straight down
+    return light;
+}
+
+scene::Light onLightAxis(scene::Light light, float height) {
+    light.transform.position = {0.0f, height, 0.0f};
+    return light;
+}
+
+scene::Scene fromAbove(scene::Scene scene) {
+    scene.camera.position = {0.0f, 6.5f, 0.0f};
+    scene.camera.target = glm::vec3(0.0f);
+    return scene;
+}
+
+scene::Scene objectsTurned(const scene::Scene& original, float degrees) {
+    scene::Scene scene = original;
+    const glm::mat3 turn = scene::Transform{{}, {0.0f, degrees, 0.0f}, glm::vec3(1.0f)}.rotation();
+    for (scene::Object& object : scene.objects) {
+        object.transform.position = turn * object.transform.position;
+        object.transform.rotationDegrees.y += degrees;
+    }
+    return scene;
+}
+
 scene::Scene mirrored(const scene::Scene& original) {
     scene::Scene scene = original;
     auto mirror = [](glm::vec3 p) { return glm::vec3(-p.x, p.y, p.z); };

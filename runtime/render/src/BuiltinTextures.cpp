@@ -93,6 +93,11 @@ Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
     auto whiteCube = Texture::createCube(context, whiteFaces, {false, false, "white cube"});
     if (!whiteCube) return whiteCube.error();
     textures.mWhiteCube.emplace(std::move(*whiteCube));
+    // A Cube property whose default is "" or "gray" (Unity's texture for an empty name).
+    std::vector<Image> grayFaces(6, solid(128, 128, 128, 255));
+    auto grayCube = Texture::createCube(context, grayFaces, {false, false, "gray cube"});
+    if (!grayCube) return grayCube.error();
+    textures.mGrayCube.emplace(std::move(*grayCube));
     auto white3D = Texture::createVolume(context, std::span<const Image>(whiteFaces.data(), 1),
                                          {false, false, "white 3D"});
     if (!white3D) return white3D.error();
@@ -134,6 +139,8 @@ std::optional<TextureBinding> BuiltinTextures::named(std::string_view givenName,
     if (dim == pack::ResourceDim::Cube) {
         if (name == "white" || name.empty())
             return TextureBinding{mWhiteCube->view(), mRepeat.get()};
+        if (name == "gray" || name == "grey")
+            return TextureBinding{mGrayCube->view(), mRepeat.get()};
         return std::nullopt;
     }
     if (dim == pack::ResourceDim::Dim3D) {

@@ -2,6 +2,7 @@
 // ImageRelations on synthetic images: sums, tolerances, saturation, the 3x3 window, NaN.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -90,6 +91,20 @@ TEST(ImageRelationsTest, TheWindowWorksBothWays) {
     Image expected = filled(0.0f), actual = filled(0.0f);
     actual.setPixelFloat(3, 3, {1, 1, 1, 1});
     EXPECT_FALSE(checkRelation(actual, {{&expected, 1}}, {0.001f, 0, 1}).passed);
+}
+
+TEST(ImageRelationsTest, QuarterTurnMovesEachPixelClockwise) {
+    Image image = filled(0.0f, 4);
+    image.setPixelFloat(1, 0, {0.5f, 0.0f, 0.0f, 1.0f});  // top row, second column
+    Image bytes = filled8(0, 4);
+    bytes.setPixel8(1, 0, {7, 0, 0, 255});
+    Image turned = quarterTurned(image), turned8 = quarterTurned(bytes);
+    // (x, y) -> (size - 1 - y, x): the top row becomes the right column.
+    EXPECT_FLOAT_EQ(turned.pixelFloat(3, 1)[0], 0.5f);
+    EXPECT_FLOAT_EQ(turned.pixelFloat(1, 0)[0], 0.0f);
+    EXPECT_EQ(turned8.bytes()[(1 * 4 + 3) * 4], 7);
+    Image full = quarterTurned(quarterTurned(quarterTurned(quarterTurned(image))));
+    EXPECT_TRUE(std::equal(full.floats().begin(), full.floats().end(), image.floats().begin()));
 }
 
 TEST(ImageRelationsTest, NanFailsItsPixelAndIsFound) {

@@ -87,6 +87,31 @@ TEST(PropertyScenesTest, TurnedTurnsPositionsAndDirectionsAlike) {
     EXPECT_NEAR(after[0].z, -before[0].x, 1e-5f);
 }
 
+TEST(PropertyScenesTest, ObjectsTurnedAboutTheLightAxisSeenFromAbove) {
+    scene::Scene scene = fromAbove(withLights(
+        emptyScene("s", true, 64), {overheadDirectional(), onLightAxis(keyPoint(), 1.6f)}));
+    EXPECT_EQ(scene.camera.position, glm::vec3(0.0f, 6.5f, 0.0f));
+    EXPECT_EQ(scene.camera.target, glm::vec3(0.0f));
+    glm::vec3 down = scene.lights[0].forward();
+    EXPECT_NEAR(down.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(down.y, -1.0f, 1e-6f);
+    EXPECT_NEAR(down.z, 0.0f, 1e-6f);
+    EXPECT_EQ(scene.lights[1].transform.position, glm::vec3(0.0f, 1.6f, 0.0f));
+    scene::Scene turnedScene = objectsTurned(scene, 90.0f);
+    // The camera and the lights stay; the objects turn as turned() turns them.
+    EXPECT_EQ(turnedScene.camera.position, scene.camera.position);
+    EXPECT_EQ(turnedScene.lights[0].transform.rotationDegrees,
+              scene.lights[0].transform.rotationDegrees);
+    EXPECT_EQ(turnedScene.lights[1].transform.position, scene.lights[1].transform.position);
+    scene::Scene both = turned(scene, 90.0f);
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        EXPECT_EQ(turnedScene.objects[i].transform.position, both.objects[i].transform.position);
+        EXPECT_EQ(turnedScene.objects[i].transform.rotationDegrees,
+                  both.objects[i].transform.rotationDegrees);
+    }
+    EXPECT_NEAR(turnedScene.objects[0].transform.position.z, 1.2f, 1e-5f);  // sphere: -x -> +z
+}
+
 TEST(PropertyScenesTest, EveryObjectUsesTheShaderWithItsDefaults) {
     scene::Scene scene = emptyScene("varc/Forward", false, 48);
     ASSERT_EQ(scene.objects.size(), 3u);

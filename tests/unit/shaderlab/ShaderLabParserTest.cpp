@@ -170,6 +170,44 @@ TEST(ShaderLabParser, SubShaderStateAppliesToEveryPassUnlessThePassOverrides) {
     EXPECT_EQ(passes.at(1).state.zWrite.literal, "Off");
 }
 
+TEST(ShaderLabParser, SubShaderLightModeAppliesToPassesThatSetNone) {
+    auto outcome = parse(trimMargin(R"(
+        |Shader "A" {
+        |    SubShader {
+        |        Pass { Tags { "Queue" = "Geometry" } }
+        |        Pass { Tags { "LightMode" = "ForwardAdd" } }
+        |        UsePass "Other/SHADOWCASTER"
+        |        Tags { "RenderType" = "Opaque" "lightmode" = "ForwardBase" }
+        |    }
+        |    SubShader { Tags { "RenderType" = "Opaque" } Pass { } }
+        |}
+    )"));
+    ASSERT_TRUE(outcome.shader) << outcome.firstMessage();
+    const auto& passes = outcome.shader->subShaders.at(0).passes;
+    ASSERT_EQ(passes.size(), 3u);
+    // Written after the passes, the SubShader's tag still applies; only LightMode is copied.
+    EXPECT_EQ(passes[0].tags, (Tags{{"Queue", "Geometry"}, {"LightMode", "ForwardBase"}}));
+    EXPECT_EQ(passes[0].lightMode(), "ForwardBase");
+    EXPECT_EQ(passes[1].tags, (Tags{{"LightMode", "ForwardAdd"}}));  // the pass's own wins
+    EXPECT_TRUE(passes[2].tags.empty());  // a UsePass keeps the named pass's tags
+    EXPECT_TRUE(outcome.shader->subShaders.at(1).passes.at(0).tags.empty());
+}
+
+TEST(ShaderLabParser, CategoryLightModeReachesPassesThroughTheSubShader) {
+    auto outcome = parse(trimMargin(R"(
+        |Shader "A" {
+        |    Category {
+        |        SubShader { Pass { } }
+        |        SubShader { Tags { "LightMode" = "Always" } Pass { } }
+        |        Tags { "LightMode" = "ShadowCaster" }
+        |    }
+        |}
+    )"));
+    ASSERT_TRUE(outcome.shader) << outcome.firstMessage();
+    EXPECT_EQ(outcome.shader->subShaders.at(0).passes.at(0).lightMode(), "ShadowCaster");
+    EXPECT_EQ(outcome.shader->subShaders.at(1).passes.at(0).lightMode(), "Always");
+}
+
 TEST(ShaderLabParser, LaterTagWithSameKeyReplacesEarlierValue) {
     auto outcome = testing::parsePassBody(
         R"(Tags { "LightMode" = "ForwardBase" "Other" = "x" "lightmode" = "ForwardAdd" })");

@@ -50,7 +50,7 @@ struct PassOrigin {
 
 struct Pass {
     std::string name;        // from `Name "..."`, "" if none
-    Tags tags;               // the pass's own tags
+    Tags tags;               // own tags; then the SubShader's LightMode when the pass sets none
     RenderState state;       // effective: SubShader/Category state already inherited
     std::optional<ProgramBlock> program;
     // Shared *INCLUDE blocks in scope (shader, category, subshader, pass level) in file order;

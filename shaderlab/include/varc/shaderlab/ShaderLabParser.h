@@ -22,6 +22,9 @@ namespace varc::shaderlab {
 //    including passes written before the block; Pass::includeBlocks lists them in file order.
 //  * Render state and Tags/LOD of a Category, and render state of a SubShader, apply to all
 //    enclosed passes/subshaders wherever they are written in the block.
+//  * A SubShader's (or its Category's) `LightMode` tag applies to each of its passes that sets
+//    none (Unity's compiled shaders list a SubShader's tags among each pass's); a pass's own
+//    wins. varc acts on no other pass tag, so no other SubShader tag is copied.
 //  * `GrabPass { ... }` is accepted and skipped; `UsePass` yields a Pass with only `usePass`.
 //  * Legacy fixed-function commands (Lighting, Material, SetTexture, Fog, ...) are skipped.
 //

@@ -60,6 +60,10 @@ RelationCheck checkRelation(const runtime::Image& actual, const std::vector<Term
 // |image| flipped left to right: pixel (x, y) moves to (width - 1 - x, y).
 runtime::Image flippedLeftRight(const runtime::Image& image);
 
+// Square |image| turned a quarter turn clockwise on screen (rows down): pixel (x, y) moves to
+// (size - 1 - y, x). VARC_CHECK: width == height.
+runtime::Image quarterTurned(const runtime::Image& image);
+
 // The pixels of |image| (any format) that hold a NaN or an infinity in any channel.
 struct NonFinite {
     size_t count = 0;

@@ -65,4 +65,20 @@ scene::Scene turned(const scene::Scene& scene, float degrees);
 // to right.
 scene::Scene mirrored(const scene::Scene& scene);
 
+// A directional light shining straight down the y axis.
+scene::Light overheadDirectional();
+
+// |light| (a point or spot light) moved onto the y axis at height |height|; a spot keeps its
+// direction (keySpot() points straight down).
+scene::Light onLightAxis(scene::Light light, float height);
+
+// |scene| seen from straight above: the camera at (0, 6.5, 0) looking down the y axis at the
+// origin (image right = world +x, image up = world +z).
+scene::Scene fromAbove(scene::Scene scene);
+
+// |scene| with its objects (not the camera or the lights) turned by |degrees| about the world y
+// axis through the origin. Seen fromAbove() with lights on that axis (overheadDirectional(),
+// onLightAxis()), a correct shader draws the image turned by |degrees| (clockwise on screen).
+scene::Scene objectsTurned(const scene::Scene& scene, float degrees);
+
 }  // namespace varc::properties

@@ -17,7 +17,8 @@ public:
     static Result<BuiltinTextures> create(VulkanContext& context);
 
     // "white", "black", "bump", "gray" ("grey"), "red" (2D; Unity's default texture names, in any
-    // ASCII case: "Gray" is gray), "white" (cube) and "white" (3D), linear-repeat sampled.
+    // ASCII case: "Gray" is gray), "white" and "gray" (cube: a Cube property whose default is "")
+    // and "white" (3D), linear-repeat sampled.
     std::optional<TextureBinding> named(std::string_view name, pack::ResourceDim dim) const;
     VkSampler repeatSampler() const { return mRepeat.get(); }  // linear, repeat
     VkSampler clampSampler() const { return mClamp.get(); }    // linear, clamp to edge
@@ -37,8 +38,8 @@ public:
                                                bool deferred) const;
 
 private:
-    std::optional<Texture> mWhite, mBlack, mBump, mGray, mRed, mWhiteCube, mWhite3D, mFalloff, mSpot,
-        mDirectional, mPoint, mDither;
+    std::optional<Texture> mWhite, mBlack, mBump, mGray, mRed, mWhiteCube, mGrayCube, mWhite3D,
+        mFalloff, mSpot, mDirectional, mPoint, mDither;
     UniqueHandle<VkSampler> mRepeat, mClamp, mNearestRepeat;
 };
 
