@@ -35,6 +35,11 @@ constexpr float kLsb = 1.0f / 255.0f;
 // margin over half-float storage and is far below the 50% of an unnormalised normal at scale 2.
 constexpr float kMovedRelative = 1.0f / 256.0f;
 constexpr float kMovedAbsolute = 1.0f / 512.0f;
+// Forward against deferred: the G-buffer stores the colours as 8-bit sRGB and the smoothness in
+// 8 bits. One sRGB LSB is <= 0.93% of a diffuse colour of 0.96, 3.4% of a specular colour of
+// 0.04; half a smoothness LSB moves GGX's peak by ~3.2%: <= 0.93% x (1 - s) + 7% x s for a
+// specular share s <= 14% (F0 0.04, smoothness 0.5) is <= 1.8% (docs/PROPERTIES.md; measured 0.5%).
+constexpr float kGBufferRelative = 0.02f;
 
 std::string fileSafe(std::string text) {
     for (char& c : text)
@@ -354,6 +359,37 @@ void checkEveryVariant(ShaderCheck& c, const runtime::ShaderView& shader, Shader
     outcome.detail += "\n";
 }
 
+// `forward_deferred`: a shader with a Deferred pass draws each key light it takes alone, and
+// |allLit|, through the deferred path (G-buffer, then varc/DeferredLight per light) as the forward
+// path draws them (the forward renders are the other relations' own); n/a without a Deferred pass. A deferred render that fails (no deferred light
+// shader in the packs, a G-buffer variant missing) fails the relation with the renderer's error.
+void checkForwardDeferred(ShaderCheck& c, const LightSupport& support, const scene::Scene& empty,
+                          const scene::Scene& allLit) {
+    RelationOutcome& outcome = c.outcomeOf("forward_deferred");
+    if (!support.deferred) {
+        outcome.detail = "no Deferred pass";
+        return;
+    }
+    std::vector<std::pair<std::string, scene::Scene>> cases{
+        {"directional", withLights(empty, {keyDirectional()})}};
+    if (support.point) cases.emplace_back("point", withLights(empty, {keyPoint()}));
+    if (support.spot) cases.emplace_back("spot", withLights(empty, {keySpot()}));
+    cases.emplace_back("all lights", allLit);
+    const Tolerance paths{kZero, kGBufferRelative, 0};
+    for (auto& [label, scene] : cases) {
+        const runtime::RenderedFrame* forward = c.render(label, scene);
+        scene.camera.path = scene::RenderPath::Deferred;
+        std::string why;
+        const runtime::RenderedFrame* deferred = c.tryRender("deferred " + label, scene, why);
+        if (!deferred) {
+            outcome.verdict = Verdict::Fail;
+            outcome.detail += "deferred " + label + ": the render failed: " + why + "\n";
+            continue;
+        }
+        c.relate("forward_deferred", label, deferred, {{forward, 1.0f}}, paths);
+    }
+}
+
 // The relations on HDR renders (and additivity_ldr on RGBA8), in relationNames() order, then
 // the coverage renders; returns why directional shadows were not drawn ("" when they were).
 std::string checkRelations(ShaderCheck& c, const std::string& shader, const LightSupport& support,
@@ -460,6 +496,7 @@ std::string checkRelations(ShaderCheck& c, const std::string& shader, const Ligh
              {{c.quarterTurned("axial lights, image turned", c.render("axial lights", above)),
                1.0f}},
              moved);
+    checkForwardDeferred(c, support, empty, allLit);
     return drawCoverage(c, support, cookies, lit);
 }
 
@@ -596,7 +633,7 @@ const std::vector<std::string>& relationNames() {
     static const std::vector<std::string> kNames{
         "finite",     "dark",           "lit",       "out_of_range", "black_cookie", "white_cookie",
         "additivity", "additivity_ldr", "intensity", "translation",  "rotation",     "mirror",
-        "scale",      "light_axis",     "every_variant"};
+        "scale",      "light_axis",     "forward_deferred", "every_variant"};
     return kNames;
 }
 
