@@ -146,12 +146,13 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
     EXPECT_EQ(failing(reports.at("varc-mutants/UnnormalisedNormal")),
               (std::set<std::string>{"scale"}));
     // Each path alone is a correct light: only the comparison of the two sees the Lambert
-    // forward passes, in every case (each key light alone and all together), with the deferred
-    // light pass's variant named.
+    // forward passes, in every case (each key light alone and all together, HDR and LDR), with
+    // the deferred light pass's variant named.
     const properties::ShaderReport& lambert = reports.at("varc-mutants/LambertForward");
     EXPECT_EQ(failing(lambert), (std::set<std::string>{"forward_deferred"}));
     const std::string paths = detailOf(lambert, "forward_deferred");
-    for (const char* label : {"directional:", "point:", "spot:", "all lights:"})
+    for (const char* label :
+         {"directional:", "point:", "spot:", "all lights:", "ldr directional:", "ldr all lights:"})
         EXPECT_NE(paths.find(label), std::string::npos) << paths;
     EXPECT_NE(paths.find("'varc/DeferredLight' pass 0 {SPOT UNITY_HDR_ON}"), std::string::npos)
         << paths;

@@ -40,6 +40,9 @@ constexpr float kMovedAbsolute = 1.0f / 512.0f;
 // 0.04; half a smoothness LSB moves GGX's peak by ~3.2%: <= 0.93% x (1 - s) + 7% x s for a
 // specular share s <= 14% (F0 0.04, smoothness 0.5) is <= 1.8% (docs/PROPERTIES.md; measured 0.5%).
 constexpr float kGBufferRelative = 0.02f;
+// The LDR light buffer holds q = 2^-c in 8 bits: half an LSB of q is 0.5 / (q ln 2) = 0.72 x 2^c
+// LSB of the decoded c.
+constexpr float kLdrDecodeLsb = 0.72f;
 
 std::string fileSafe(std::string text) {
     for (char& c : text)
@@ -359,6 +362,37 @@ void checkEveryVariant(ShaderCheck& c, const runtime::ShaderView& shader, Shader
     outcome.detail += "\n";
 }
 
+// `forward_deferred` in 8-bit targets: the directional light alone and |all| lights, forward
+// against the deferred LDR path (light buffer exp2(-c) in RGBA8 UNORM, multiplied into per
+// light, decoded by -log2). n lights round the buffer n times by <= 1/2 LSB each, which decodes to
+// <= n x 0.72 LSB x 2^c <= n x 0.72 LSB x (1 + c) for c <= 1; the forward target is rounded n
+// times (base, then each add) and the decode once, 1/2 LSB each; the G-buffer's roundings as for
+// HDR. Pixels at 254/255 or more are skipped (the targets clamp).
+void checkForwardDeferredLdr(ShaderCheck& c, scene::Scene empty,
+                             const std::vector<scene::Light>& all) {
+    empty.camera.hdr = false;
+    const std::vector<std::pair<std::string, std::vector<scene::Light>>> cases{
+        {"directional", {keyDirectional()}}, {"all lights", all}};
+    for (const auto& [label, lights] : cases) {
+        scene::Scene scene = withLights(empty, lights);
+        const runtime::RenderedFrame* forward = c.render("ldr " + label, scene);
+        scene.camera.path = scene::RenderPath::Deferred;
+        std::string why;
+        const runtime::RenderedFrame* deferred =
+            c.tryRender("ldr deferred " + label, scene, why);
+        if (!deferred) {
+            RelationOutcome& outcome = c.outcomeOf("forward_deferred");
+            outcome.verdict = Verdict::Fail;
+            outcome.detail += "ldr deferred " + label + ": the render failed: " + why + "\n";
+            continue;
+        }
+        const float n = static_cast<float>(lights.size());
+        const float absolute = ((kLdrDecodeLsb + 0.5f) * n + 0.5f) * kLsb;
+        c.relate("forward_deferred", "ldr " + label, deferred, {{forward, 1.0f}},
+                 {absolute, kGBufferRelative + kLdrDecodeLsb * n * kLsb, 0, 254.0f / 255.0f});
+    }
+}
+
 // `forward_deferred`: a shader with a Deferred pass draws each key light it takes alone, and
 // |allLit|, through the deferred path (G-buffer, then varc/DeferredLight per light) as the forward
 // path draws them (the forward renders are the other relations' own); n/a without a Deferred pass. A deferred render that fails (no deferred light
@@ -388,6 +422,7 @@ void checkForwardDeferred(ShaderCheck& c, const LightSupport& support, const sce
         }
         c.relate("forward_deferred", label, deferred, {{forward, 1.0f}}, paths);
     }
+    checkForwardDeferredLdr(c, empty, allLit.lights);
 }
 
 // The relations on HDR renders (and additivity_ldr on RGBA8), in relationNames() order, then
