@@ -362,67 +362,56 @@ void checkEveryVariant(ShaderCheck& c, const runtime::ShaderView& shader, Shader
     outcome.detail += "\n";
 }
 
-// `forward_deferred` in 8-bit targets: the directional light alone and |all| lights, forward
-// against the deferred LDR path (light buffer exp2(-c) in RGBA8 UNORM, multiplied into per
-// light, decoded by -log2). n lights round the buffer n times by <= 1/2 LSB each, which decodes to
-// <= n x 0.72 LSB x 2^c <= n x 0.72 LSB x (1 + c) for c <= 1; the forward target is rounded n
-// times (base, then each add) and the decode once, 1/2 LSB each; the G-buffer's roundings as for
-// HDR. Pixels at 254/255 or more are skipped (the targets clamp).
-void checkForwardDeferredLdr(ShaderCheck& c, scene::Scene empty,
-                             const std::vector<scene::Light>& all) {
-    empty.camera.hdr = false;
-    const std::vector<std::pair<std::string, std::vector<scene::Light>>> cases{
-        {"directional", {keyDirectional()}}, {"all lights", all}};
-    for (const auto& [label, lights] : cases) {
-        scene::Scene scene = withLights(empty, lights);
-        const runtime::RenderedFrame* forward = c.render("ldr " + label, scene);
-        scene.camera.path = scene::RenderPath::Deferred;
-        std::string why;
-        const runtime::RenderedFrame* deferred =
-            c.tryRender("ldr deferred " + label, scene, why);
-        if (!deferred) {
-            RelationOutcome& outcome = c.outcomeOf("forward_deferred");
-            outcome.verdict = Verdict::Fail;
-            outcome.detail += "ldr deferred " + label + ": the render failed: " + why + "\n";
-            continue;
-        }
-        const float n = static_cast<float>(lights.size());
-        const float absolute = ((kLdrDecodeLsb + 0.5f) * n + 0.5f) * kLsb;
-        c.relate("forward_deferred", "ldr " + label, deferred, {{forward, 1.0f}},
-                 {absolute, kGBufferRelative + kLdrDecodeLsb * n * kLsb, 0, 254.0f / 255.0f});
-    }
-}
-
-// `forward_deferred`: a shader with a Deferred pass draws each key light it takes alone, and
-// |allLit|, through the deferred path (G-buffer, then varc/DeferredLight per light) as the forward
-// path draws them (the forward renders are the other relations' own); n/a without a Deferred pass. A deferred render that fails (no deferred light
-// shader in the packs, a G-buffer variant missing) fails the relation with the renderer's error.
-void checkForwardDeferred(ShaderCheck& c, const LightSupport& support, const scene::Scene& empty,
-                          const scene::Scene& allLit) {
-    RelationOutcome& outcome = c.outcomeOf("forward_deferred");
-    if (!support.deferred) {
-        outcome.detail = "no Deferred pass";
+// One `forward_deferred` case: |scene| drawn on the forward path (under |label|, shared with the
+// other relations) and on the deferred path (G-buffer, then varc/DeferredLight per light),
+// compared within |tolerance|. A deferred render that fails (no deferred light shader in the
+// packs, a G-buffer variant missing) fails the relation with the renderer's error.
+void compareDeferred(ShaderCheck& c, const std::string& label, scene::Scene scene,
+                     const Tolerance& tolerance) {
+    const runtime::RenderedFrame* forward = c.render(label, scene);
+    scene.camera.path = scene::RenderPath::Deferred;
+    std::string why;
+    const runtime::RenderedFrame* deferred = c.tryRender(label + " deferred", scene, why);
+    if (!deferred) {
+        RelationOutcome& outcome = c.outcomeOf("forward_deferred");
+        outcome.verdict = Verdict::Fail;
+        outcome.detail += why + "\n";  // "<label> deferred: <the renderer's error>"
         return;
     }
-    std::vector<std::pair<std::string, scene::Scene>> cases{
-        {"directional", withLights(empty, {keyDirectional()})}};
-    if (support.point) cases.emplace_back("point", withLights(empty, {keyPoint()}));
-    if (support.spot) cases.emplace_back("spot", withLights(empty, {keySpot()}));
-    cases.emplace_back("all lights", allLit);
-    const Tolerance paths{kZero, kGBufferRelative, 0};
-    for (auto& [label, scene] : cases) {
-        const runtime::RenderedFrame* forward = c.render(label, scene);
-        scene.camera.path = scene::RenderPath::Deferred;
-        std::string why;
-        const runtime::RenderedFrame* deferred = c.tryRender("deferred " + label, scene, why);
-        if (!deferred) {
-            outcome.verdict = Verdict::Fail;
-            outcome.detail += "deferred " + label + ": the render failed: " + why + "\n";
-            continue;
-        }
-        c.relate("forward_deferred", label, deferred, {{forward, 1.0f}}, paths);
+    c.relate("forward_deferred", label, deferred, {{forward, 1.0f}}, tolerance);
+}
+
+// `forward_deferred` for a shader with a Deferred pass (n/a without one): each key light it takes
+// alone, and |allLit| when it holds more than one light, in HDR; the directional light alone and
+// |allLit|'s lights in LDR. Tolerances (docs/PROPERTIES.md): HDR, the G-buffer's 8-bit colours
+// and smoothness (kGBufferRelative). LDR adds the light buffer's encoding: q = exp2(-c) in 8-bit
+// UNORM, multiplied into by each of n lights, rounds q n times by <= 1/2 LSB, which decodes to
+// <= n x 0.72 LSB x 2^c <= n x 0.72 LSB x (1 + c) for c <= 1; the forward target is rounded n
+// times (base, then each add) and the decode once, 1/2 LSB each. Pixels at 254/255 or more are
+// skipped (the targets clamp).
+void checkForwardDeferred(ShaderCheck& c, const LightSupport& support, const scene::Scene& empty,
+                          const scene::Scene& allLit) {
+    if (!support.deferred) {
+        c.outcomeOf("forward_deferred").detail = "no Deferred pass";
+        return;
     }
-    checkForwardDeferredLdr(c, empty, allLit.lights);
+    const Tolerance hdr{kZero, kGBufferRelative, 0};
+    compareDeferred(c, "directional", withLights(empty, {keyDirectional()}), hdr);
+    if (support.point) compareDeferred(c, "point", withLights(empty, {keyPoint()}), hdr);
+    if (support.spot) compareDeferred(c, "spot", withLights(empty, {keySpot()}), hdr);
+    if (allLit.lights.size() > 1) compareDeferred(c, "all lights", allLit, hdr);
+
+    scene::Scene ldr = empty;
+    ldr.camera.hdr = false;
+    auto ldrTolerance = [](size_t lights) {
+        const float n = static_cast<float>(lights);
+        return Tolerance{((kLdrDecodeLsb + 0.5f) * n + 0.5f) * kLsb,
+                         kGBufferRelative + kLdrDecodeLsb * n * kLsb, 0, 254.0f / 255.0f};
+    };
+    compareDeferred(c, "ldr directional", withLights(ldr, {keyDirectional()}), ldrTolerance(1));
+    if (allLit.lights.size() > 1)
+        compareDeferred(c, "ldr all lights", withLights(ldr, allLit.lights),
+                        ldrTolerance(allLit.lights.size()));
 }
 
 // The relations on HDR renders (and additivity_ldr on RGBA8), in relationNames() order, then
