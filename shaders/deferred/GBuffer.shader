@@ -24,6 +24,9 @@ Shader "varc/DeferredGBuffer" {
         Tags { "RenderType" = "Opaque" }
 
         Pass {
+            // Shaders with both paths take this pass with UsePass "varc/DeferredGBuffer/DEFERRED"
+            // (tests/properties/shaders/ForwardDeferred.shader).
+            Name "DEFERRED"
             Tags { "LightMode" = "Deferred" }
 
             Stencil {

@@ -29,7 +29,7 @@ trimmed=()
 unlit=()
 status=0
 relations=(finite dark lit out_of_range black_cookie white_cookie additivity additivity_ldr
-           intensity translation rotation mirror scale light_axis every_variant)
+           intensity translation rotation mirror scale light_axis forward_deferred every_variant)
 
 # "a, b, c" ("none" when empty).
 commaList() {
@@ -47,7 +47,7 @@ causeOf() {
 }
 
 # One table row per shader from `varc validate --properties` output: the row's fields end with
-# the 15 verdicts, the model, renders, drawn, time and the light types; the name may hold spaces.
+# the 16 verdicts, the model, renders, drawn, time and the light types; the name may hold spaces.
 rowsOf() {
     awk -v n="${#relations[@]}" '
         NR == 1 { next }
@@ -185,7 +185,8 @@ pragma with an off state (\`multi_compile _ ...\`, \`shader_feature\`), so its p
 variants with every material keyword off: those the scenes, which set no keyword, draw, and the
 set \`every_variant\` compares with. Not checked: $(commaList "${skipped[@]}"). No lit pass in
 varc's pack, though the text names \`ForwardBase\`: $(commaList "${unlit[@]}"). A
-pass whose \`#pragma only_renderers\` leaves out Vulkan is not compiled, as in Unity.
+pass whose \`#pragma only_renderers\` leaves out Vulkan is not compiled, as in Unity. \`forward_deferred\`
+applies to a shader with a \`Deferred\` pass besides its forward passes only (n/a otherwise).
 
 **\`LightMode\` on a SubShader.** varc gives a SubShader's (or its Category's) \`LightMode\` tag
 to each of its passes that sets none; a pass's own tag wins. Unity's manual asks for

@@ -73,10 +73,13 @@ TEST_F(PropertyRelationsTest, EveryLibraryAndSeedShaderHoldsEveryRelation) {
                                                       << outcome.detail;
         EXPECT_GE(report.renders, 16u) << name;
     }
-    // varc/Forward takes every light type: every relation applies and passes, and the checks
-    // draw each of its 15 lit variants (every_variant).
+    // varc/Forward takes every light type: every relation applies and passes (but
+    // forward_deferred: no Deferred pass), and the checks draw each of its 15 lit variants
+    // (every_variant).
     for (const properties::RelationOutcome& outcome : reports.at("varc/Forward").relations)
-        EXPECT_EQ(outcome.verdict, Verdict::Pass) << outcome.relation;
+        EXPECT_EQ(outcome.verdict, outcome.relation == "forward_deferred" ? Verdict::NotApplicable
+                                                                          : Verdict::Pass)
+            << outcome.relation;
     EXPECT_EQ(reports.at("varc/Forward").litVariantsDrawn(), 15u);
     EXPECT_EQ(reports.at("varc/Forward").litVariants, 15u);
     // The GLSL shader's ForwardAdd pass has no light keywords: no spots, no cookies.
@@ -99,12 +102,29 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
         {"varc-mutants/IntensityIgnored", {"intensity"}},
         {"varc-mutants/WorldXLight", {"rotation", "mirror", "light_axis"}},
         {"varc-mutants/PointCookieNoFalloff", {"white_cookie"}},
+        {"varc-mutants/LambertForward", {"forward_deferred"}},
     };
-    ASSERT_EQ(reports.size(), expected.size() + 3)
-        << "the mutants, the control and the two classification fixtures";
+    ASSERT_EQ(reports.size(), expected.size() + 4)
+        << "the mutants, the control, the two classification fixtures and the shader with both "
+           "paths";
     const properties::ShaderReport& control = reports.at("varc-mutants/Control");
     EXPECT_TRUE(control.passed()) << "the unmodified copy must hold every relation";
-    for (const properties::RelationOutcome& outcome : control.relations)
+    for (const properties::RelationOutcome& outcome : control.relations) {
+        // A forward-only shader: forward_deferred does not apply, and says why.
+        if (outcome.relation == "forward_deferred") {
+            EXPECT_EQ(outcome.verdict, Verdict::NotApplicable);
+            EXPECT_EQ(outcome.detail, "no Deferred pass");
+            continue;
+        }
+        EXPECT_EQ(outcome.verdict, Verdict::Pass) << outcome.relation << ":\n" << outcome.detail;
+    }
+    // The shader with both paths holds every relation, forward_deferred included: its forward
+    // passes shade with the BRDF the deferred light pass applies to its G-buffer.
+    ASSERT_TRUE(reports.count("varc-tests/ForwardDeferred"));
+    const properties::ShaderReport& bothPaths = reports.at("varc-tests/ForwardDeferred");
+    EXPECT_TRUE(bothPaths.error.empty()) << bothPaths.error;
+    EXPECT_EQ(bothPaths.model, properties::LightingModel::Lit) << bothPaths.modelReason;
+    for (const properties::RelationOutcome& outcome : bothPaths.relations)
         EXPECT_EQ(outcome.verdict, Verdict::Pass) << outcome.relation << ":\n" << outcome.detail;
     for (const auto& [name, catchers] : expected) {
         ASSERT_TRUE(reports.count(name)) << name;
@@ -125,6 +145,17 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
               (std::set<std::string>{"black_cookie"}));
     EXPECT_EQ(failing(reports.at("varc-mutants/UnnormalisedNormal")),
               (std::set<std::string>{"scale"}));
+    // Each path alone is a correct light: only the comparison of the two sees the Lambert
+    // forward passes, in every case (each key light alone and all together, HDR and LDR), with
+    // the deferred light pass's variant named.
+    const properties::ShaderReport& lambert = reports.at("varc-mutants/LambertForward");
+    EXPECT_EQ(failing(lambert), (std::set<std::string>{"forward_deferred"}));
+    const std::string paths = detailOf(lambert, "forward_deferred");
+    for (const char* label :
+         {"directional:", "point:", "spot:", "all lights:", "ldr directional:", "ldr all lights:"})
+        EXPECT_NE(paths.find(label), std::string::npos) << paths;
+    EXPECT_NE(paths.find("'varc/DeferredLight' pass 0 {SPOT UNITY_HDR_ON}"), std::string::npos)
+        << paths;
     // The white cube cookie on a point light: only POINT_COOKIE is broken.
     EXPECT_EQ(failing(reports.at("varc-mutants/PointCookieNoFalloff")),
               (std::set<std::string>{"white_cookie"}));
@@ -159,7 +190,7 @@ TEST_F(PropertyRelationsTest, ModelsThatTheRelationsDoNotDescribeAreNotApplicabl
     EXPECT_EQ(sqrtColour.model, properties::LightingModel::NonLinear) << sqrtColour.modelReason;
     EXPECT_EQ(verdictOf(sqrtColour, "intensity"), Verdict::NotApplicable);
     for (const properties::RelationOutcome& outcome : sqrtColour.relations) {
-        if (outcome.relation == "intensity") continue;
+        if (outcome.relation == "intensity" || outcome.relation == "forward_deferred") continue;
         EXPECT_EQ(outcome.verdict, Verdict::Pass) << outcome.relation << ":\n" << outcome.detail;
     }
 }

@@ -35,6 +35,14 @@ constexpr float kLsb = 1.0f / 255.0f;
 // margin over half-float storage and is far below the 50% of an unnormalised normal at scale 2.
 constexpr float kMovedRelative = 1.0f / 256.0f;
 constexpr float kMovedAbsolute = 1.0f / 512.0f;
+// Forward against deferred: the G-buffer stores the colours as 8-bit sRGB and the smoothness in
+// 8 bits. One sRGB LSB is <= 0.93% of a diffuse colour of 0.96, 3.4% of a specular colour of
+// 0.04; half a smoothness LSB moves GGX's peak by ~3.2%: <= 0.93% x (1 - s) + 7% x s for a
+// specular share s <= 14% (F0 0.04, smoothness 0.5) is <= 1.8% (docs/PROPERTIES.md; measured 0.5%).
+constexpr float kGBufferRelative = 0.02f;
+// The LDR light buffer holds q = 2^-c in 8 bits: half an LSB of q is 0.5 / (q ln 2) = 0.72 x 2^c
+// LSB of the decoded c.
+constexpr float kLdrDecodeLsb = 0.72f;
 
 std::string fileSafe(std::string text) {
     for (char& c : text)
@@ -354,6 +362,58 @@ void checkEveryVariant(ShaderCheck& c, const runtime::ShaderView& shader, Shader
     outcome.detail += "\n";
 }
 
+// One `forward_deferred` case: |scene| drawn on the forward path (under |label|, shared with the
+// other relations) and on the deferred path (G-buffer, then varc/DeferredLight per light),
+// compared within |tolerance|. A deferred render that fails (no deferred light shader in the
+// packs, a G-buffer variant missing) fails the relation with the renderer's error.
+void compareDeferred(ShaderCheck& c, const std::string& label, scene::Scene scene,
+                     const Tolerance& tolerance) {
+    const runtime::RenderedFrame* forward = c.render(label, scene);
+    scene.camera.path = scene::RenderPath::Deferred;
+    std::string why;
+    const runtime::RenderedFrame* deferred = c.tryRender(label + " deferred", scene, why);
+    if (!deferred) {
+        RelationOutcome& outcome = c.outcomeOf("forward_deferred");
+        outcome.verdict = Verdict::Fail;
+        outcome.detail += why + "\n";  // "<label> deferred: <the renderer's error>"
+        return;
+    }
+    c.relate("forward_deferred", label, deferred, {{forward, 1.0f}}, tolerance);
+}
+
+// `forward_deferred` for a shader with a Deferred pass (n/a without one): each key light it takes
+// alone, and |allLit| when it holds more than one light, in HDR; the directional light alone and
+// |allLit|'s lights in LDR. Tolerances (docs/PROPERTIES.md): HDR, the G-buffer's 8-bit colours
+// and smoothness (kGBufferRelative). LDR adds the light buffer's encoding: q = exp2(-c) in 8-bit
+// UNORM, multiplied into by each of n lights, rounds q n times by <= 1/2 LSB, which decodes to
+// <= n x 0.72 LSB x 2^c <= n x 0.72 LSB x (1 + c) for c <= 1; the forward target is rounded n
+// times (base, then each add) and the decode once, 1/2 LSB each. Pixels at 254/255 or more are
+// skipped (the targets clamp).
+void checkForwardDeferred(ShaderCheck& c, const LightSupport& support, const scene::Scene& empty,
+                          const scene::Scene& allLit) {
+    if (!support.deferred) {
+        c.outcomeOf("forward_deferred").detail = "no Deferred pass";
+        return;
+    }
+    const Tolerance hdr{kZero, kGBufferRelative, 0};
+    compareDeferred(c, "directional", withLights(empty, {keyDirectional()}), hdr);
+    if (support.point) compareDeferred(c, "point", withLights(empty, {keyPoint()}), hdr);
+    if (support.spot) compareDeferred(c, "spot", withLights(empty, {keySpot()}), hdr);
+    if (allLit.lights.size() > 1) compareDeferred(c, "all lights", allLit, hdr);
+
+    scene::Scene ldr = empty;
+    ldr.camera.hdr = false;
+    auto ldrTolerance = [](size_t lights) {
+        const float n = static_cast<float>(lights);
+        return Tolerance{((kLdrDecodeLsb + 0.5f) * n + 0.5f) * kLsb,
+                         kGBufferRelative + kLdrDecodeLsb * n * kLsb, 0, 254.0f / 255.0f};
+    };
+    compareDeferred(c, "ldr directional", withLights(ldr, {keyDirectional()}), ldrTolerance(1));
+    if (allLit.lights.size() > 1)
+        compareDeferred(c, "ldr all lights", withLights(ldr, allLit.lights),
+                        ldrTolerance(allLit.lights.size()));
+}
+
 // The relations on HDR renders (and additivity_ldr on RGBA8), in relationNames() order, then
 // the coverage renders; returns why directional shadows were not drawn ("" when they were).
 std::string checkRelations(ShaderCheck& c, const std::string& shader, const LightSupport& support,
@@ -460,6 +520,7 @@ std::string checkRelations(ShaderCheck& c, const std::string& shader, const Ligh
              {{c.quarterTurned("axial lights, image turned", c.render("axial lights", above)),
                1.0f}},
              moved);
+    checkForwardDeferred(c, support, empty, allLit);
     return drawCoverage(c, support, cookies, lit);
 }
 
@@ -596,7 +657,7 @@ const std::vector<std::string>& relationNames() {
     static const std::vector<std::string> kNames{
         "finite",     "dark",           "lit",       "out_of_range", "black_cookie", "white_cookie",
         "additivity", "additivity_ldr", "intensity", "translation",  "rotation",     "mirror",
-        "scale",      "light_axis",     "every_variant"};
+        "scale",      "light_axis",     "forward_deferred", "every_variant"};
     return kNames;
 }
 

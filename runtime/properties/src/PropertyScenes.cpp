@@ -25,6 +25,7 @@ bool declares(const runtime::PassView& pass, std::string_view keyword) {
 LightSupport lightSupportOf(const runtime::ShaderView& shader) {
     LightSupport support;
     support.forwardBase = shader.pass("ForwardBase").has_value();
+    support.deferred = shader.pass("Deferred").has_value();
     std::optional<runtime::PassView> add = shader.pass("ForwardAdd");
     if (!support.forwardBase || !add) return support;
     support.forwardAdd = true;

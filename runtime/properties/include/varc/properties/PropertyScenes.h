@@ -19,6 +19,7 @@ namespace varc::properties {
 struct LightSupport {
     bool forwardBase = false;  // the shader has a ForwardBase pass: it is checked at all
     bool forwardAdd = false;   // ... and a ForwardAdd pass: extra pixel lights
+    bool deferred = false;     // ... and a Deferred (G-buffer) pass: forward_deferred applies
     bool point = false;
     bool spot = false;
     bool directionalCookie = false;
