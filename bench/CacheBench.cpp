@@ -198,31 +198,40 @@ std::string buildPart(int set, uint32_t index, uint32_t count, unsigned jobs) {
     return compiler::serializePack(*contents, write);
 }
 
-// The merge step of `varc merge`: both parts decoded, joined and written as one pack. A failure
-// is printed (it would be `varc merge`'s error).
-bool mergeParts(const std::string& first, const std::string& second) {
+// The merge step of `varc merge`: both parts decoded, joined and written as one pack: its bytes,
+// or "" when the merge fails (printed: it would be `varc merge`'s error).
+std::string mergeParts(const std::string& first, const std::string& second) {
     std::vector<compiler::PartialPackInput> parts;
     runtime::OpenOptions open;
     open.acceptPartial = true;
     for (const std::string* bytes : {&first, &second}) {
         Result<runtime::Pack> part = runtime::Pack::fromBytes(std::string_view(*bytes), open);
-        if (!part) return fail(part.error().detail);
+        if (!part) {
+            fail(part.error().detail);
+            return "";
+        }
         Result<pack::PackContents> contents = runtime::decodePack(*part);
-        if (!contents) return fail(contents.error().detail);
+        if (!contents) {
+            fail(contents.error().detail);
+            return "";
+        }
         parts.push_back({"part", std::move(*contents)});
     }
     Result<compiler::MergedPack> merged = compiler::mergePartialPacks(std::move(parts));
-    if (!merged) return fail(merged.error().detail);
+    if (!merged) {
+        fail(merged.error().detail);
+        return "";
+    }
     for (const std::string& error : merged->errors) fail(error);
-    if (!merged->errors.empty()) return false;
+    if (!merged->errors.empty()) return "";
     compiler::PackWriteOptions write;
     write.compressionLevel = merged->compressionLevel;
-    return !compiler::serializePack(merged->contents, write).empty();
+    return compiler::serializePack(merged->contents, write);
 }
 
 // Kind 4: two shards and the merge; the time is the slower shard plus the merge. The same
 // iteration also builds the whole pack in one go (no cache), the fair comparison: both write a
-// pack.
+// pack; the merged pack must be the whole one, byte for byte.
 void BM_ShardedBuild(benchmark::State& state) {
     const int set = static_cast<int>(state.range(0));
     const unsigned jobs = static_cast<unsigned>(state.range(1));
@@ -230,7 +239,8 @@ void BM_ShardedBuild(benchmark::State& state) {
     double whole = 0, shard1 = 0, shard2 = 0, merge = 0;
     for (auto _ : state) {
         auto start = std::chrono::steady_clock::now();
-        if (buildPart(set, 1, 1, jobs).empty()) return state.SkipWithError("the build failed");
+        std::string wholePack = buildPart(set, 1, 1, jobs);
+        if (wholePack.empty()) return state.SkipWithError("the build failed");
         whole = secondsSince(start);
         start = std::chrono::steady_clock::now();
         std::string first = buildPart(set, 1, 2, jobs);
@@ -240,8 +250,10 @@ void BM_ShardedBuild(benchmark::State& state) {
         shard2 = secondsSince(start);
         if (first.empty() || second.empty()) return state.SkipWithError("a shard failed");
         start = std::chrono::steady_clock::now();
-        if (!mergeParts(first, second)) return state.SkipWithError("the merge failed");
+        std::string merged = mergeParts(first, second);
+        if (merged.empty()) return state.SkipWithError("the merge failed");
         merge = secondsSince(start);
+        if (merged != wholePack) return state.SkipWithError("the merged pack is not the whole one");
         state.SetIterationTime(std::max(shard1, shard2) + merge);
     }
     state.counters["whole_ms"] = whole * 1000;
