@@ -16,6 +16,7 @@
 //     (varc/pack/PartialPack.h); `varc merge` takes their programs from the other parts.
 #include "varc/build/CompileDriver.h"
 
+#include <algorithm>
 #include <atomic>
 #include <map>
 #include <memory>
@@ -511,7 +512,11 @@ BuildOutput Builder::assemble() {
             if (mOptions.keepPrunedSources) pass.variantSources.push_back(sourcesOf(job, v));
         }
         fillStats(job, pass, finalIds);
-        pass.setStageEffects = computeSetStageEffects(*job.pass->space, pass.variants);
+        // Which sets change which stage is only known from every variant's programs.
+        bool everyVariant = std::find(job.sourceIds.begin(), job.sourceIds.end(), kNoProgram) ==
+                            job.sourceIds.end();
+        if (everyVariant)
+            pass.setStageEffects = computeSetStageEffects(*job.pass->space, pass.variants);
         output.passes.push_back(std::move(pass));
     }
     return output;
