@@ -106,7 +106,8 @@ private:
     void applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
                       const ItemOutcome& outcome);
     CompiledSource compileSource(const SourceProgram& source) const;
-    // The program of |pass| that stands for its items left to other shards in stage |stageSlot|.
+    // The placeholder program that stands for |job|'s items of stage |stageIndex| that other
+    // shards build: one per stage slot and entry point.
     uint32_t placeholderOf(const PassJob& job, size_t stageIndex, BuildOutput& output);
     // Reads the cache entries of sources [first, first + count) in one batch.
     void prefetchPrograms(size_t first, size_t count) const;
@@ -460,11 +461,12 @@ std::array<uint32_t, kStageCount> Builder::sourcesOf(const PassJob& job, size_t 
 uint32_t Builder::placeholderOf(const PassJob& job, size_t stageIndex, BuildOutput& output) {
     const auto& [stage, entry] = job.stages[stageIndex];
     const size_t slot = varc::stageIndex(stage);
-    auto [it, inserted] =
-        mPlaceholders.emplace(std::make_pair(slot, entry), static_cast<uint32_t>(output.programs.size()));
+    auto [it, inserted] = mPlaceholders.emplace(std::make_pair(slot, entry),
+                                                static_cast<uint32_t>(output.programs.size()));
     if (inserted) {
-        output.programs.push_back({stage, entry, pack::placeholderSpirv(static_cast<uint32_t>(slot)),
-                                   {}, sourceInfoOf(*job.pass)});
+        output.programs.push_back({stage, entry,
+                                   pack::placeholderSpirv(static_cast<uint32_t>(slot)), {},
+                                   sourceInfoOf(*job.pass)});
     }
     return it->second;
 }

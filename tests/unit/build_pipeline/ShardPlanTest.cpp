@@ -123,7 +123,7 @@ TEST(ShardPlan, SplitsAHugePassAndBalancesTheShards) {
                 load[k - 1] += unit.cost;
                 hasHuge = hasHuge || unit.job == huge;
             }
-            EXPECT_TRUE(hasHuge) << "shard " << k << "/" << count << " has no share of the huge pass";
+            EXPECT_TRUE(hasHuge) << "shard " << k << "/" << count << " has none of the huge pass";
         }
         uint64_t most = *std::max_element(load.begin(), load.end());
         uint64_t least = *std::min_element(load.begin(), load.end());
