@@ -9,7 +9,9 @@
 //   kind 3: a warm Redis as the only level (what Redis itself costs, without the write-back);
 //   kind 4: a 2-shard build merged, no cache: the time is the slower shard (compile, assemble,
 //           write its partial pack) plus the merge (decode both parts, join, write the pack),
-//           as two machines and one merge step would take; counters give each part.
+//           as two machines and one merge step would take; counters give each part, in wall
+//           and in process CPU time (cpu_speedup: less inflated by a busy machine); the merged
+//           pack must be the whole build's, byte for byte.
 // Target: the warm-Redis build compiles nothing and is at least 20x faster than cold. Starts its
 // own redis-server on a free loopback port. Run: ./build/bench/varc_bench_cache. Results go in
 // docs/PERFORMANCE.md.
@@ -22,6 +24,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -170,6 +173,13 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// CPU time of the whole process, every thread: what a build costs whatever else runs beside it.
+double processCpuSeconds() {
+    timespec now{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
+}
+
 bool fail(const std::string& message) {
     std::fprintf(stderr, "varc_bench_cache: %s\n", message.c_str());
     return false;
@@ -198,50 +208,71 @@ std::string buildPart(int set, uint32_t index, uint32_t count, unsigned jobs) {
     return compiler::serializePack(*contents, write);
 }
 
-// The merge step of `varc merge`: both parts decoded, joined and written as one pack. A failure
-// is printed (it would be `varc merge`'s error).
-bool mergeParts(const std::string& first, const std::string& second) {
+// The merge step of `varc merge`: both parts decoded, joined and written as one pack: its bytes,
+// or "" when the merge fails (printed: it would be `varc merge`'s error).
+std::string mergeParts(const std::string& first, const std::string& second) {
     std::vector<compiler::PartialPackInput> parts;
     runtime::OpenOptions open;
     open.acceptPartial = true;
     for (const std::string* bytes : {&first, &second}) {
         Result<runtime::Pack> part = runtime::Pack::fromBytes(std::string_view(*bytes), open);
-        if (!part) return fail(part.error().detail);
+        if (!part) {
+            fail(part.error().detail);
+            return "";
+        }
         Result<pack::PackContents> contents = runtime::decodePack(*part);
-        if (!contents) return fail(contents.error().detail);
+        if (!contents) {
+            fail(contents.error().detail);
+            return "";
+        }
         parts.push_back({"part", std::move(*contents)});
     }
     Result<compiler::MergedPack> merged = compiler::mergePartialPacks(std::move(parts));
-    if (!merged) return fail(merged.error().detail);
+    if (!merged) {
+        fail(merged.error().detail);
+        return "";
+    }
     for (const std::string& error : merged->errors) fail(error);
-    if (!merged->errors.empty()) return false;
+    if (!merged->errors.empty()) return "";
     compiler::PackWriteOptions write;
     write.compressionLevel = merged->compressionLevel;
-    return !compiler::serializePack(merged->contents, write).empty();
+    return compiler::serializePack(merged->contents, write);
 }
 
 // Kind 4: two shards and the merge; the time is the slower shard plus the merge. The same
 // iteration also builds the whole pack in one go (no cache), the fair comparison: both write a
-// pack.
+// pack; the merged pack must be the whole one, byte for byte.
 void BM_ShardedBuild(benchmark::State& state) {
     const int set = static_cast<int>(state.range(0));
     const unsigned jobs = static_cast<unsigned>(state.range(1));
     if (!inputs(set).ok) return state.SkipWithError("inputs failed to load");
     double whole = 0, shard1 = 0, shard2 = 0, merge = 0;
+    double wholeCpu = 0, shard1Cpu = 0, shard2Cpu = 0, mergeCpu = 0;
     for (auto _ : state) {
         auto start = std::chrono::steady_clock::now();
-        if (buildPart(set, 1, 1, jobs).empty()) return state.SkipWithError("the build failed");
+        double cpu = processCpuSeconds();
+        std::string wholePack = buildPart(set, 1, 1, jobs);
+        if (wholePack.empty()) return state.SkipWithError("the build failed");
         whole = secondsSince(start);
+        wholeCpu = processCpuSeconds() - cpu;
         start = std::chrono::steady_clock::now();
+        cpu = processCpuSeconds();
         std::string first = buildPart(set, 1, 2, jobs);
         shard1 = secondsSince(start);
+        shard1Cpu = processCpuSeconds() - cpu;
         start = std::chrono::steady_clock::now();
+        cpu = processCpuSeconds();
         std::string second = buildPart(set, 2, 2, jobs);
         shard2 = secondsSince(start);
+        shard2Cpu = processCpuSeconds() - cpu;
         if (first.empty() || second.empty()) return state.SkipWithError("a shard failed");
         start = std::chrono::steady_clock::now();
-        if (!mergeParts(first, second)) return state.SkipWithError("the merge failed");
+        cpu = processCpuSeconds();
+        std::string merged = mergeParts(first, second);
+        if (merged.empty()) return state.SkipWithError("the merge failed");
         merge = secondsSince(start);
+        mergeCpu = processCpuSeconds() - cpu;
+        if (merged != wholePack) return state.SkipWithError("the merged pack is not the whole one");
         state.SetIterationTime(std::max(shard1, shard2) + merge);
     }
     state.counters["whole_ms"] = whole * 1000;
@@ -249,6 +280,12 @@ void BM_ShardedBuild(benchmark::State& state) {
     state.counters["shard2_ms"] = shard2 * 1000;
     state.counters["merge_ms"] = merge * 1000;
     state.counters["speedup"] = whole / (std::max(shard1, shard2) + merge);
+    // The same from every thread's CPU time, which other processes on the machine inflate less.
+    state.counters["whole_cpu_ms"] = wholeCpu * 1000;
+    state.counters["shard1_cpu_ms"] = shard1Cpu * 1000;
+    state.counters["shard2_cpu_ms"] = shard2Cpu * 1000;
+    state.counters["merge_cpu_ms"] = mergeCpu * 1000;
+    state.counters["cpu_speedup"] = wholeCpu / (std::max(shard1Cpu, shard2Cpu) + mergeCpu);
 }
 BENCHMARK(BM_ShardedBuild)
     ->ArgNames({"set", "jobs"})

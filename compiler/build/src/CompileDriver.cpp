@@ -2,6 +2,8 @@
 // Compiles every variant of every loaded pass: each distinct stage program once, in parallel.
 //
 // Three phases, each deterministic whatever the thread count:
+//  0. with --shard K/N: cut the pass jobs into units of whole variants and keep this shard's
+//     units (ShardPlan.h), from the plan alone, so every later phase runs on this shard's share;
 //  1. per (pass, variant, stage): preprocess with the variant's defines, prune to the entry
 //     point, and intern the text -> source ids (identical programs found before glslang runs).
 //     Defines the pass text never names are dropped first (ObservedDefines.h), so variants and
@@ -10,8 +12,11 @@
 //  2. per distinct source: glslang -> SPIRV-Tools optimise -> validate, in parallel, or the
 //     program cache (driver/ProgramCompiler.h);
 //  3. intern the SPIR-V bytes -> program ids, in enumeration order, and derive the statistics.
+//     A shard's items of other shards name one placeholder program per stage and entry point
+//     (varc/pack/PartialPack.h); `varc merge` takes their programs from the other parts.
 #include "varc/build/CompileDriver.h"
 
+#include <algorithm>
 #include <atomic>
 #include <map>
 #include <memory>
@@ -75,6 +80,7 @@ public:
     }
 
     bool plan(const std::vector<LoadedShader>& shaders, DiagnosticSink& sink);
+    void chooseShardUnits();
     bool internSources();
     bool compileSources();
     BuildOutput assemble();
@@ -100,7 +106,9 @@ private:
     void applyOutcome(size_t jobIndex, size_t variant, size_t stageIndex,
                       const ItemOutcome& outcome);
     CompiledSource compileSource(const SourceProgram& source) const;
-    std::vector<uint32_t> shardsOfSources() const;
+    // The placeholder program that stands for |job|'s items of stage |stageIndex| that other
+    // shards build: one per stage slot and entry point.
+    uint32_t placeholderOf(const PassJob& job, size_t stageIndex, BuildOutput& output);
     // Reads the cache entries of sources [first, first + count) in one batch.
     void prefetchPrograms(size_t first, size_t count) const;
     // Remembers the first failure to write the cache (thread-safe); the build goes on.
@@ -122,6 +130,10 @@ private:
     BuildOptions mOptions;
     unsigned mThreads;
     std::vector<PassJob> mJobs;
+    std::vector<ShardUnit> mUnits;  // this shard's variants (all of them without --shard)
+    size_t mItems = 0;              // (variant, stage) items of every job
+    size_t mOwnItems = 0;           // of mItems, this shard's
+    std::map<std::pair<size_t, std::string>, uint32_t> mPlaceholders;  // (slot, entry) -> program
     std::vector<SourceProgram> mSources;
     std::unordered_map<std::string, uint32_t> mSourceIndex;           // key: stage|entry|text
     std::unordered_map<ItemKey, ItemOutcome, ItemKeyHash> mOutcomes;  // of the current job
@@ -314,13 +326,28 @@ bool Builder::internChunk(size_t jobIndex, size_t firstItem, size_t count) {
     return !(mGrouper.hasErrors() && !mOptions.keepGoing);
 }
 
+// Phase 0: this shard's units, decided from what every machine knows before preprocessing.
+void Builder::chooseShardUnits() {
+    std::vector<ShardJobSize> sizes;
+    for (const PassJob& job : mJobs) {
+        sizes.push_back({job.keys.size(), job.stages.size(), job.text.size()});
+        mItems += job.keys.size() * job.stages.size();
+    }
+    mUnits = unitsOfShard(sizes, mOptions.shard);
+    for (const ShardUnit& unit : mUnits) mOwnItems += unit.variants * mJobs[unit.job].stages.size();
+}
+
+// Phase 1 over this shard's units (in job then variant order): an item's outcome is shared by
+// the later items of the same job with the same ItemKey.
 bool Builder::internSources() {
-    for (size_t j = 0; j < mJobs.size(); ++j) {
-        mOutcomes.clear();
-        const PassJob& job = mJobs[j];
-        size_t items = job.keys.size() * job.stages.size();
-        for (size_t chunk = 0; chunk < items; chunk += kChunkSize) {
-            if (!internChunk(j, chunk, std::min(kChunkSize, items - chunk))) return false;
+    size_t currentJob = SIZE_MAX;
+    for (const ShardUnit& unit : mUnits) {
+        if (unit.job != currentJob) mOutcomes.clear();
+        currentJob = unit.job;
+        const size_t stages = mJobs[unit.job].stages.size();
+        const size_t first = unit.firstVariant * stages, end = first + unit.variants * stages;
+        for (size_t chunk = first; chunk < end; chunk += kChunkSize) {
+            if (!internChunk(unit.job, chunk, std::min(kChunkSize, end - chunk))) return false;
         }
     }
     return !mGrouper.hasErrors();
@@ -357,18 +384,8 @@ CompiledSource Builder::compileSource(const SourceProgram& source) const {
     }
 }
 
-// The shard of each distinct source, by its text's length as the cost estimate (compile time
-// grows with the pruned text).
-std::vector<uint32_t> Builder::shardsOfSources() const {
-    std::vector<uint64_t> costs;
-    costs.reserve(mSources.size());
-    for (const SourceProgram& source : mSources) costs.push_back(source.text.size());
-    return assignShards(costs, mOptions.shard.count);
-}
-
 bool Builder::compileSources() {
     mCompiled.assign(mSources.size(), {});
-    std::vector<uint32_t> shardOf = shardsOfSources();
     std::atomic<bool> failed{false};
     std::atomic<size_t> done{0};
     // In chunks, each chunk's cache entries fetched in one batch first (one round trip per
@@ -381,12 +398,6 @@ bool Builder::compileSources() {
             [&](size_t n) {
                 const size_t i = first + n;
                 if (failed.load() && !mOptions.keepGoing) return;
-                if (shardOf[i] + 1 != mOptions.shard.index) {
-                    mCompiled[i].ok = true;
-                    mCompiled[i].otherShard = true;
-                    mCompiled[i].spirv = pack::placeholderSpirv(static_cast<uint32_t>(i));
-                    return;
-                }
                 double start = threadCpuSeconds();
                 mCompiled[i] = compileSource(mSources[i]);
                 mCompiled[i].seconds = threadCpuSeconds() - start;
@@ -428,6 +439,7 @@ void Builder::fillStats(const PassJob& job, CompiledPass& pass,
         std::set<uint32_t> sources, modules;
         for (size_t v = 0; v < job.keys.size(); ++v) {
             uint32_t source = job.sourceIds[v * job.stages.size() + stageIndex];
+            if (source == kNoProgram) continue;  // another shard's
             sources.insert(source);
             modules.insert(finalIds[source]);
         }
@@ -446,18 +458,32 @@ std::array<uint32_t, kStageCount> Builder::sourcesOf(const PassJob& job, size_t 
     return ids;
 }
 
+uint32_t Builder::placeholderOf(const PassJob& job, size_t stageIndex, BuildOutput& output) {
+    const auto& [stage, entry] = job.stages[stageIndex];
+    const size_t slot = varc::stageIndex(stage);
+    auto [it, inserted] = mPlaceholders.emplace(std::make_pair(slot, entry),
+                                                static_cast<uint32_t>(output.programs.size()));
+    if (inserted) {
+        output.programs.push_back({stage, entry,
+                                   pack::placeholderSpirv(static_cast<uint32_t>(slot)), {},
+                                   sourceInfoOf(*job.pass)});
+    }
+    return it->second;
+}
+
 // Interns SPIR-V bytes in enumeration order, so program ids never depend on thread timing.
 BuildOutput Builder::assemble() {
     BuildOutput output;
     output.compiledSources = mSources.size();
     for (const CompiledSource& compiled : mCompiled) output.cachedSources += compiled.fromCache;
     for (const CompiledSource& compiled : mCompiled) output.compileSeconds += compiled.seconds;
-    for (const CompiledSource& compiled : mCompiled) output.otherShardSources += compiled.otherShard;
+    output.items = mItems;
+    output.otherShardItems = mItems - mOwnItems;
     std::map<std::vector<uint32_t>, uint32_t> byBytes;
     std::vector<uint32_t> finalIds(mSources.size(), kNoProgram);
     for (const PassJob& job : mJobs) {
         for (uint32_t source : job.sourceIds) {
-            if (finalIds[source] != kNoProgram) continue;
+            if (source == kNoProgram || finalIds[source] != kNoProgram) continue;
             const SourceProgram& program = mSources[source];
             auto [it, inserted] = byBytes.emplace(mCompiled[source].spirv,
                                                   static_cast<uint32_t>(output.programs.size()));
@@ -480,14 +506,19 @@ BuildOutput Builder::assemble() {
             pack::PackVariant variant{job.keys[v], {}};
             variant.programs.fill(kNoProgram);
             for (size_t s = 0; s < job.stages.size(); ++s) {
+                uint32_t source = job.sourceIds[v * job.stages.size() + s];
                 variant.programs[stageIndex(job.stages[s].first)] =
-                    finalIds[job.sourceIds[v * job.stages.size() + s]];
+                    source == kNoProgram ? placeholderOf(job, s, output) : finalIds[source];
             }
             pass.variants.push_back(variant);
             if (mOptions.keepPrunedSources) pass.variantSources.push_back(sourcesOf(job, v));
         }
         fillStats(job, pass, finalIds);
-        pass.setStageEffects = computeSetStageEffects(*job.pass->space, pass.variants);
+        // Which sets change which stage is only known from every variant's programs.
+        bool everyVariant = std::find(job.sourceIds.begin(), job.sourceIds.end(), kNoProgram) ==
+                            job.sourceIds.end();
+        if (everyVariant)
+            pass.setStageEffects = computeSetStageEffects(*job.pass->space, pass.variants);
         output.passes.push_back(std::move(pass));
     }
     return output;
@@ -503,6 +534,7 @@ std::optional<BuildOutput> buildPrograms(const std::vector<LoadedShader>& shader
     // Without --keep-going the first failing phase ends the build; with it, every phase runs so
     // that all errors are reported at once.
     bool ok = builder.plan(shaders, sink);
+    builder.chooseShardUnits();
     if (ok || options.keepGoing) ok = builder.internSources() && ok;
     if (ok || options.keepGoing) ok = builder.compileSources() && ok;
     builder.flushCacheWriteBacks();

@@ -149,7 +149,10 @@ Result<MergedPack> mergePartialPacks(std::vector<PartialPackInput> parts) {
     out.toolchain = parts[0].contents.toolchain;
     out.inputsHash = parts[0].contents.inputsHash;
     out.shaders = parts[0].contents.shaders;
-    std::map<std::pair<size_t, uint32_t>, uint32_t> taken;  // (part, program) -> merged program
+    // SPIR-V bytes -> merged program: the whole build interns its programs by their bytes, so a
+    // program two parts both compiled (their shares shared a source) is one program, the first
+    // used (the writer then renumbers in first-use order).
+    std::map<std::vector<uint32_t>, uint32_t> taken;
     for (size_t s = 0; s < out.shaders.size(); ++s) {
         for (size_t p = 0; p < out.shaders[s].passes.size(); ++p) {
             pack::PackPass& pass = out.shaders[s].passes[p];
@@ -169,8 +172,11 @@ Result<MergedPack> mergePartialPacks(std::vector<PartialPackInput> parts) {
                                              stageName(static_cast<Stage>(slot)) + " program of " +
                                              describeVariant(out.shaders[s], pass, pass.variants[v]));
                     }
-                    auto [it, inserted] = taken.emplace(*source, static_cast<uint32_t>(out.programs.size()));
-                    if (inserted) out.programs.push_back(parts[source->first].contents.programs[source->second]);
+                    const pack::PackProgram& found =
+                        parts[source->first].contents.programs[source->second];
+                    auto [it, inserted] =
+                        taken.emplace(found.spirv, static_cast<uint32_t>(out.programs.size()));
+                    if (inserted) out.programs.push_back(found);
                     program = it->second;
                 }
             }

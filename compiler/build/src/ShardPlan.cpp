@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Which distinct programs each shard of `varc build --shard K/N` compiles.
+// Which share of a build each shard of `varc build --shard K/N` preprocesses and compiles.
 #include "varc/build/ShardPlan.h"
 
 #include <algorithm>
@@ -50,6 +50,36 @@ std::vector<uint32_t> assignShards(const std::vector<uint64_t>& costs, uint32_t 
         loads.push({load + costs[item], shard});
     }
     return shardOf;
+}
+
+std::vector<ShardUnit> shardUnitsOf(const std::vector<ShardJobSize>& jobs, size_t unitItems) {
+    std::vector<ShardUnit> units;
+    for (size_t j = 0; j < jobs.size(); ++j) {
+        const ShardJobSize& job = jobs[j];
+        if (job.variants == 0 || job.stages == 0) continue;
+        const size_t perUnit = std::max<size_t>(1, unitItems / job.stages);
+        for (size_t first = 0; first < job.variants; first += perUnit) {
+            size_t count = std::min(perUnit, job.variants - first);
+            uint64_t items = static_cast<uint64_t>(count) * job.stages;
+            units.push_back({j, first, count, items * std::max<uint64_t>(1, job.textBytes)});
+        }
+    }
+    return units;
+}
+
+std::vector<ShardUnit> unitsOfShard(const std::vector<ShardJobSize>& jobs, ShardSpec shard,
+                                    size_t unitItems) {
+    std::vector<ShardUnit> units = shardUnitsOf(jobs, unitItems);
+    if (shard.whole()) return units;
+    std::vector<uint64_t> costs;
+    costs.reserve(units.size());
+    for (const ShardUnit& unit : units) costs.push_back(unit.cost);
+    std::vector<uint32_t> shardOf = assignShards(costs, shard.count);
+    std::vector<ShardUnit> mine;
+    for (size_t u = 0; u < units.size(); ++u) {
+        if (shardOf[u] + 1 == shard.index) mine.push_back(units[u]);
+    }
+    return mine;
 }
 
 }  // namespace varc::compiler

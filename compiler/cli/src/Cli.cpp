@@ -295,17 +295,19 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
         nlohmann::ordered_json report = buildReportJson(shaders, *build, sizes, seconds);
         if (!buildOptions.shard.whole()) {
             report["shard"] = {{"shard", buildOptions.shard.text()},
-                               {"compiled", build->compiledSources - build->otherShardSources},
-                               {"left_to_other_shards", build->otherShardSources}};
+                               {"compiled", build->compiledSources},
+                               {"items", build->items - build->otherShardItems},
+                               {"left_to_other_shards", build->otherShardItems}};
         }
         out << report.dump() << "\n";
     } else {
         printBuildReport(shaders, *build, sizes, seconds, out);
         if (!buildOptions.shard.whole()) {
-            out << "Shard " << buildOptions.shard.text() << ": compiled "
-                << build->compiledSources - build->otherShardSources << " of "
-                << build->compiledSources << " distinct programs; the partial pack holds "
-                << "placeholders for the others (join the parts with `varc merge`)\n";
+            out << "Shard " << buildOptions.shard.text() << ": built "
+                << build->items - build->otherShardItems << " of " << build->items
+                << " variant stages (" << build->compiledSources
+                << " distinct programs); the partial pack holds placeholders for the others "
+                << "(join the parts with `varc merge`)\n";
         }
         out << "wrote " << options.outputPath << "\n";
     }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// mergePartialPacks: programs taken from the part that compiled them, parts checked for being
-// one sharded build, and stage interfaces checked across parts.
+// mergePartialPacks: programs taken from the part that compiled them (merged by SPIR-V bytes
+// when several did), parts checked for being one sharded build, stage interfaces checked across.
 #include "varc/build/PackMerge.h"
 
 #include <gtest/gtest.h>
@@ -69,6 +69,58 @@ TEST(PackMerge, TakesEachProgramFromThePartThatCompiledIt) {
               (std::vector<uint32_t>{0x07230203, 2}));
     EXPECT_EQ(contents.programs[variants[1].programs[stageIndex(Stage::Fragment)]].spirv,
               (std::vector<uint32_t>{0x07230203, 3}));
+}
+
+// A shard of the same build that built whole variants: |mine| says which of {} and {FOO}; the
+// other variant's stages name placeholders. Every real program comes from line |line|.
+PartialPackInput variantPart(const std::string& path, const std::string& shard,
+                             std::array<bool, 2> mine, uint32_t line) {
+    PartialPackInput input = part(path, shard, {true, true, true});
+    pack::PackContents& contents = input.contents;
+    contents.programs.clear();
+    for (pack::PackVariant& variant : contents.shaders[0].passes[0].variants) {
+        const bool built = mine[variant.key.test(0) ? 1 : 0];
+        for (Stage stage : {Stage::Vertex, Stage::Fragment}) {
+            uint32_t tag = stage == Stage::Vertex ? 1 : (variant.key.test(0) ? 3 : 2);
+            pack::PackProgram program_ = program(
+                stage, built ? std::vector<uint32_t>{0x07230203, tag}
+                             : pack::placeholderSpirv(static_cast<uint32_t>(stageIndex(stage))));
+            program_.source.line = line;
+            variant.programs[stageIndex(stage)] = static_cast<uint32_t>(contents.programs.size());
+            contents.programs.push_back(program_);
+        }
+    }
+    return input;
+}
+
+TEST(PackMerge, MergesAProgramSeveralPartsCompiledByItsBytes) {
+    // Both parts compiled the vertex program {0x07230203, 1}: the merged pack holds it once, as
+    // the whole build does, with the source of its first use (part a's, variant {}).
+    Result<MergedPack> merged = mergePartialPacks(
+        {variantPart("b", "2/2", {false, true}, 30), variantPart("a", "1/2", {true, false}, 12)});
+    ASSERT_TRUE(merged.ok()) << merged.error().detail;
+    EXPECT_TRUE(merged->errors.empty());
+    const pack::PackContents& contents = merged->contents;
+    ASSERT_EQ(contents.programs.size(), 3u);
+    const auto& variants = contents.shaders[0].passes[0].variants;
+    const size_t vertex = stageIndex(Stage::Vertex), fragment = stageIndex(Stage::Fragment);
+    EXPECT_EQ(variants[0].programs[vertex], variants[1].programs[vertex]);
+    EXPECT_NE(variants[0].programs[fragment], variants[1].programs[fragment]);
+    EXPECT_EQ(contents.programs[variants[0].programs[vertex]].source.line, 12u);
+    EXPECT_EQ(contents.programs[variants[1].programs[fragment]].source.line, 30u);
+    EXPECT_EQ(contents.programs[variants[1].programs[fragment]].spirv,
+              (std::vector<uint32_t>{0x07230203, 3}));
+    for (const pack::PackProgram& p : contents.programs) {
+        EXPECT_FALSE(pack::isPlaceholderSpirv(p.spirv));
+    }
+}
+
+TEST(PackMerge, RefusesAVariantNoPartBuilt) {
+    Result<MergedPack> merged = mergePartialPacks(
+        {variantPart("a", "1/2", {true, false}, 12), variantPart("b", "2/2", {true, false}, 12)});
+    ASSERT_FALSE(merged.ok());
+    EXPECT_EQ(merged.error().detail,
+              "no part holds the vertex program of shader \"S\" pass 0, keywords: FOO");
 }
 
 TEST(PackMerge, RefusesPartsThatAreNotOneBuild) {

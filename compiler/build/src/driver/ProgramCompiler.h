@@ -28,7 +28,6 @@ struct StageProgram {
 struct CompiledSource {
     bool ok = false;
     bool fromCache = false;
-    bool otherShard = false;  // left to another shard: |spirv| is a placeholder
     double seconds = 0;  // CPU time of the compile on its worker thread
     std::vector<uint32_t> spirv;
     pack::ProgramReflection reflection;

@@ -38,7 +38,8 @@ struct BuildOptions {
     // A ProgramCache folder: programs found there are not compiled again, programs compiled are
     // stored there. "" = no cache.
     std::string cacheDirectory;
-    // Compile only this shard's share of the distinct programs (ShardPlan.h); the others become
+    // Preprocess, prune and compile only this shard's share of the variants (ShardPlan.h: units
+    // of whole variants, chosen before preprocessing); the other variants' stages name
     // placeholders (varc/pack/PartialPack.h) for `varc merge` to fill from the other parts.
     ShardSpec shard;
     // How the pack records source paths (relative to the project root, prefix maps).
@@ -71,7 +72,8 @@ struct CompiledPass {
     std::vector<pack::PackVariant> variants;
     PassBuildStats stats;
     // Per declared keyword set (PassKeywords::sets order): the stages whose program changes
-    // with that set's choice. A set with mask 0 does not affect the pass at all.
+    // with that set's choice. A set with mask 0 does not affect the pass at all. Empty when a
+    // shard (BuildOptions::shard) built only some of the pass's variants.
     std::vector<StageMask> setStageEffects;
     // With BuildOptions::keepPrunedSources, per variant (same order) and stage slot: its index
     // into BuildOutput::prunedSources, or kNoProgram for a stage the pass does not have.
@@ -91,7 +93,8 @@ struct BuildOutput {
     size_t preprocessedPrograms = 0;        // glslang preprocessing runs (before pruning)
     size_t cachedSources = 0;               // of compiledSources, taken from the program cache
     size_t cachedStageSources = 0;          // pruned (variant, stage) sources taken from it
-    size_t otherShardSources = 0;           // of compiledSources, left to other shards
+    size_t items = 0;                       // (variant, stage) items of every pass built
+    size_t otherShardItems = 0;             // of items, left to other shards (--shard)
     std::vector<cache::CacheLevelStats> cacheLevels;  // per cache level, in order (none: empty)
     // Sum over compiled sources of their in-process compile CPU time (glslang, optimiser,
     // validator, reflection), excluding preprocessing and dedup: divided by the thread count, the
