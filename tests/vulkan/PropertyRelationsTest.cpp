@@ -52,6 +52,13 @@ Verdict verdictOf(const properties::ShaderReport& report, const std::string& rel
     return Verdict::NotApplicable;
 }
 
+const properties::RelationOutcome* outcomeOf(const properties::ShaderReport& report,
+                                             const std::string& relation) {
+    for (const properties::RelationOutcome& outcome : report.relations)
+        if (outcome.relation == relation) return &outcome;
+    return nullptr;
+}
+
 std::string detailOf(const properties::ShaderReport& report, const std::string& relation) {
     for (const properties::RelationOutcome& outcome : report.relations)
         if (outcome.relation == relation) return outcome.detail;
@@ -167,6 +174,31 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
     EXPECT_NE(detail.find("directional:"), std::string::npos) << detail;
     EXPECT_NE(detail.find("{DIRECTIONAL_COOKIE}"), std::string::npos) << detail;
     EXPECT_NE(detail.find("expected 0 got"), std::string::npos) << detail;
+    // The same failure in fields, for the HTML report: each failing case with its finding, the
+    // variants drawn and the three PNGs written (actual, expected, diff).
+    const properties::RelationOutcome* cookie =
+        outcomeOf(reports.at("varc-mutants/CookieIgnored"), "black_cookie");
+    ASSERT_NE(cookie, nullptr);
+    ASSERT_FALSE(cookie->cases.empty());
+    const properties::FailedCase& first = cookie->cases.front();
+    EXPECT_EQ(first.label, "directional");
+    EXPECT_NE(first.finding.find("expected 0 got"), std::string::npos) << first.finding;
+    EXPECT_EQ(first.variants.size(), 2u);
+    EXPECT_NE(first.variants.back().find("{DIRECTIONAL_COOKIE}"), std::string::npos);
+    ASSERT_EQ(first.images.size(), 3u);
+    const char* kinds[] = {".actual.png", ".expected.png", ".diff.png"};
+    for (size_t i = 0; i < 3; ++i) {
+        EXPECT_NE(first.images[i].find(std::string("black_cookie.directional") + kinds[i]),
+                  std::string::npos)
+            << first.images[i];
+        EXPECT_TRUE(std::filesystem::is_regular_file(first.images[i])) << first.images[i];
+    }
+    // A relation that is n/a by the shader's model lists no failing cases.
+    const properties::RelationOutcome* sqrtIntensity =
+        outcomeOf(reports.at("varc-mutants/SqrtColour"), "intensity");
+    ASSERT_NE(sqrtIntensity, nullptr);
+    EXPECT_EQ(sqrtIntensity->verdict, Verdict::NotApplicable);
+    EXPECT_TRUE(sqrtIntensity->cases.empty());
 }
 
 // Relations that do not apply are n/a with the reason, never failures: a shader drawn the same

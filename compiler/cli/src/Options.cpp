@@ -307,7 +307,8 @@ void addValidate(CLI::App& app, Options& options) {
     cmd->add_flag("--list-uncovered", options.list,
                   "Also list each variant no matching scene drew");
     cmd->add_option("--report", options.reportPath,
-                    "Also write a self-contained HTML page of the images and variants")
+                    "Also write a self-contained HTML page of the images, variants and property "
+                    "checks")
         ->type_name("FILE");
     cmd->add_option("--pipeline-cache", options.pipelineCachePath,
                     "VkPipelineCache file to load and save")

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ostream>
+#include <utility>
 
 #include "varc/properties/PropertyRunner.h"
 #include "varc/reader/Pack.h"
@@ -55,7 +56,8 @@ void printFailures(const properties::ShaderReport& report, std::ostream& err) {
 
 int runValidateProperties(const std::vector<runtime::Pack>& packs, runtime::VulkanContext& context,
                           runtime::Renderer& renderer, const Options& options, std::ostream& out,
-                          std::ostream& err, const std::set<std::string>* only) {
+                          std::ostream& err, const std::set<std::string>* only,
+                          std::vector<properties::ShaderReport>* reports) {
     std::vector<const runtime::Pack*> pointers;
     for (const runtime::Pack& pack : packs) pointers.push_back(&pack);
     std::vector<runtime::ShaderView> shaders;
@@ -75,6 +77,7 @@ int runValidateProperties(const std::vector<runtime::Pack>& packs, runtime::Vulk
         printRow(report, seconds, out);
         printFailures(report, err);
         if (!report.passed()) ++failed;
+        if (reports) reports->push_back(std::move(report));
     }
     out << shaders.size() - failed << "/" << shaders.size()
         << " lit shaders hold every relation; images of failures in " << propertyOptions.outDir

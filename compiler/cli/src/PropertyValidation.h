@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "varc/cli/Options.h"
+#include "varc/properties/PropertyRunner.h"
 #include "varc/reader/Pack.h"
 #include "varc/render/Renderer.h"
 #include "varc/vulkan/VulkanContext.h"
@@ -21,9 +22,10 @@ namespace varc::cli {
 // and images (under --out, default validate-out); exit 1 when a relation fails, a scene does not
 // render, no shader is lit or the validation layer reported anything. With |only|, just the lit
 // shaders named there (plain `varc validate`: materials without a reference model), and none
-// lit is no error.
+// lit is no error. With |reports|, each shader's report is appended there (for --report).
 int runValidateProperties(const std::vector<runtime::Pack>& packs, runtime::VulkanContext& context,
                           runtime::Renderer& renderer, const Options& options, std::ostream& out,
-                          std::ostream& err, const std::set<std::string>* only = nullptr);
+                          std::ostream& err, const std::set<std::string>* only = nullptr,
+                          std::vector<properties::ShaderReport>* reports = nullptr);
 
 }  // namespace varc::cli

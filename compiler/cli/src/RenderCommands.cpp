@@ -9,6 +9,8 @@
 #include <optional>
 #include <ostream>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "PropertyValidation.h"
 #include "ValidationCoverage.h"
@@ -346,18 +348,38 @@ std::vector<std::string> findScenes(const std::string& scenesDir, std::ostream& 
     return scenes;
 }
 
+// Writes |report| to --report; false after printing why it could not be written.
+bool writeReport(const ValidationReport& report, const Options& options,
+                 const std::set<std::string>& compared, std::ostream& out, std::ostream& err) {
+    if (Status written = report.write(options.reportPath, compared); !written) {
+        err << "varc: error: report: " << written.error().detail << "\n";
+        return false;
+    }
+    out << "report: " << options.reportPath << "\n";
+    return true;
+}
+
+// `varc validate --properties [--report PAGE]`: the property checks of every lit shader.
+int runValidatePropertiesOnly(const Options& options, std::ostream& out, std::ostream& err) {
+    int exitCode = kExitOk;
+    std::unique_ptr<RenderSession> session = openRenderSession(options, err, exitCode);
+    if (!session) return exitCode;
+    std::vector<properties::ShaderReport> reports;
+    exitCode = runValidateProperties(session->packs, *session->context, *session->renderer, options,
+                                     out, err, nullptr, &reports);
+    savePipelineCache(session->cache, err);
+    if (!options.reportPath.empty()) {
+        ValidationReport report(session->packs, options.packPaths);
+        report.addProperties(std::move(reports));
+        if (!writeReport(report, options, {}, out, err)) return kExitFailure;
+    }
+    return exitCode;
+}
+
 }  // namespace
 
 int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
-    if (options.properties) {
-        int exitCode = kExitOk;
-        std::unique_ptr<RenderSession> session = openRenderSession(options, err, exitCode);
-        if (!session) return exitCode;
-        exitCode = runValidateProperties(session->packs, *session->context, *session->renderer,
-                                         options, out, err);
-        savePipelineCache(session->cache, err);
-        return exitCode;
-    }
+    if (options.properties) return runValidatePropertiesOnly(options, out, err);
     std::string scenesDir = options.scenesDir.empty() ? "tests/scenes/forward" : options.scenesDir;
     std::string outDir = options.outputPath.empty() ? "validate-out" : options.outputPath;
     std::vector<std::string> scenes = findScenes(scenesDir, err);
@@ -396,19 +418,15 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     if (!totals.unreferencedShaders.empty()) {
         out << "materials without a reference model: their shaders' properties "
                "(docs/PROPERTIES.md)\n";
-        int propertiesExit = runValidateProperties(session->packs, *session->context,
-                                                   *session->renderer, options, out, err,
-                                                   &totals.unreferencedShaders);
+        std::vector<properties::ShaderReport> reports;
+        int propertiesExit =
+            runValidateProperties(session->packs, *session->context, *session->renderer, options,
+                                  out, err, &totals.unreferencedShaders, &reports);
         if (propertiesExit != kExitOk) ++totals.failures;
+        if (report) report->addProperties(std::move(reports));
     }
     savePipelineCache(session->cache, err);
-    if (report) {
-        if (Status written = report->write(options.reportPath, totals.compared); !written) {
-            err << "varc: error: report: " << written.error().detail << "\n";
-            return kExitFailure;
-        }
-        out << "report: " << options.reportPath << "\n";
-    }
+    if (report && !writeReport(*report, options, totals.compared, out, err)) return kExitFailure;
     // With VARC_VULKAN_VALIDATION=1 the layer's warnings and errors fail the run too.
     if (session->context->validationMessageCount() > 0) {
         err << "varc: error: Vulkan validation reported "

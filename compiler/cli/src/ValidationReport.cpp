@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "PropertyReportSection.h"
 #include "ValidationCoverage.h"
 #include "varc/core/AtomicFile.h"
 #include "varc/core/HtmlText.h"
@@ -29,9 +30,11 @@ td.num { text-align: right; font-variant-numeric: tabular-nums; }
 .other { color: #8a5a00; font-weight: bold; }
 .scene { background: #fff; border: 1px solid #ddd; padding: 8px 12px; margin: 12px 0; }
 .images { display: flex; flex-wrap: wrap; gap: 10px; }
-figure { margin: 0; } figcaption { font-size: 12px; color: #555; }
+figure { margin: 0; max-width: 260px; } figcaption { font-size: 12px; color: #555; }
+figcaption code { word-break: break-all; }
 figure img { width: 256px; height: auto; image-rendering: pixelated; border: 1px solid #999; }
 code, .message { font-family: monospace; font-size: 12px; }
+table.properties th, table.properties td { font-size: 12px; padding: 1px 4px; white-space: nowrap; }
 .legend span { display: inline-block; width: 10px; height: 10px; border: 1px solid #999; }
 )";
 
@@ -148,12 +151,14 @@ void writeSummary(std::ostream& out, const std::vector<ReportScene>& scenes,
         passed += scene.status == "pass";
         referenced += scene.status != "no reference";
     }
-    out << "<h1>varc validate</h1>\n<p>" << passed << "/" << referenced
-        << " scenes match the CPU reference";
-    if (referenced < scenes.size())
-        out << " (" << scenes.size() - referenced << " more rendered with no reference model)";
-    out << ".</p>\n";
-    writeSceneTable(out, scenes);
+    out << "<h1>varc validate</h1>\n";
+    if (!scenes.empty()) {
+        out << "<p>" << passed << "/" << referenced << " scenes match the CPU reference";
+        if (referenced < scenes.size())
+            out << " (" << scenes.size() - referenced << " more rendered with no reference model)";
+        out << ".</p>\n";
+        writeSceneTable(out, scenes);
+    }
     out << "<h2>Variants compared per pack</h2>\n";
     writeCoverageTable(out, coverage);
 }
@@ -241,6 +246,17 @@ void writePack(std::ostream& out, size_t pack, const PackCoverage& coverage,
     out << "</ul></details>\n";
 }
 
+// The key to the difference and mask images of the scenes.
+void writeLegend(std::ostream& out) {
+    out << "<p class=\"legend\">Difference: grey = reference luminance / 4, red = too bright, "
+           "blue = too dark (32 levels per LSB), failing pixels saturated with full green. Mask: "
+           "<span style=\"background:#202020\"></span> background "
+           "<span style=\"background:#808080\"></span> interior "
+           "<span style=\"background:#f0c828\"></span> edge "
+           "<span style=\"background:#28bef0\"></span> shadow interval "
+           "<span style=\"background:#ff0000\"></span> mismatch.</p>\n";
+}
+
 }  // namespace
 
 std::string ValidationReport::html(const std::set<std::string>& compared) const {
@@ -252,14 +268,9 @@ std::string ValidationReport::html(const std::set<std::string>& compared) const 
            "<title>varc validate report</title>\n<style>"
         << kStyle << "</style>\n<script>" << kCheckScript << "</script>\n</head><body>\n";
     writeSummary(out, mScenes, coverage);
-    out << "<p class=\"legend\">Difference: grey = reference luminance / 4, red = too bright, "
-           "blue = too dark (32 levels per LSB), failing pixels saturated with full green. Mask: "
-           "<span style=\"background:#202020\"></span> background "
-           "<span style=\"background:#808080\"></span> interior "
-           "<span style=\"background:#f0c828\"></span> edge "
-           "<span style=\"background:#28bef0\"></span> shadow interval "
-           "<span style=\"background:#ff0000\"></span> mismatch.</p>\n";
+    if (!mScenes.empty()) writeLegend(out);
     for (size_t s = 0; s < mScenes.size(); ++s) writeScene(out, mScenes[s], s, variants);
+    writePropertySection(out, mProperties);
     for (size_t p = 0; p < coverage.size(); ++p)
         writePack(out, p, coverage[p], variants, mScenes, compared);
     out << "</body></html>\n";

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The HTML page of `varc validate --report`: per scene the GPU frame, reference, difference and
-// pixel-class mask with its errors and variants; per pack the variants drawn and their programs.
+// pixel-class mask with its errors and variants; the property checks with their failing cases;
+// per pack the variants drawn and their programs.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "varc/core/Result.h"
+#include "varc/properties/PropertyRunner.h"
 #include "varc/reader/Pack.h"
 
 namespace varc::cli {
@@ -44,6 +46,12 @@ public:
 
     void addScene(ReportScene scene) { mScenes.push_back(std::move(scene)); }
 
+    // The property checks of the run (runValidateProperties), one report per shader: the page
+    // gets a "Property checks" section (PropertyReportSection.h) after the scenes.
+    void addProperties(std::vector<properties::ShaderReport> reports) {
+        for (properties::ShaderReport& report : reports) mProperties.push_back(std::move(report));
+    }
+
     // The page. |compared| holds VariantView::describe() of every variant drawn in a scene that
     // matched (as printValidationCoverage takes it). Each scene's variants link to an anchor in
     // their pack's section, which lists the variants drawn with their keywords and the program
@@ -60,6 +68,7 @@ private:
     const std::vector<runtime::Pack>& mPacks;
     std::vector<std::string> mPackPaths;
     std::vector<ReportScene> mScenes;
+    std::vector<properties::ShaderReport> mProperties;
 };
 
 }  // namespace varc::cli

@@ -65,7 +65,7 @@ public:
     ShaderCheck(runtime::Renderer& renderer, const PropertyOptions& options, ShaderReport& report)
         : mRenderer(renderer), mOptions(options), mReport(report) {
         for (const std::string& name : relationNames())
-            mReport.relations.push_back({name, Verdict::NotApplicable, {}});
+            mReport.relations.push_back({name, Verdict::NotApplicable, {}, {}});
     }
 
     // The frame of |scene| under |label| (drawn once); nullptr after recording a render error.
@@ -100,10 +100,7 @@ public:
             if (outcome.verdict == Verdict::NotApplicable) outcome.verdict = Verdict::Pass;
             return;
         }
-        outcome.verdict = Verdict::Fail;
-        outcome.detail += label + ": " + check.summary() + "; variants:";
-        outcome.detail += variantList(*actual);
-        outcome.detail += writeImages(relation, label, actual->image, &check) + "\n";
+        recordFailure(outcome, label, check.summary(), *actual, &check);
     }
 
     // Checks that |lit| is brighter than |unlit| by more than 1/64 on at least 2% of its pixels:
@@ -118,13 +115,10 @@ public:
             if (outcome.verdict == Verdict::NotApplicable) outcome.verdict = Verdict::Pass;
             return;
         }
-        outcome.verdict = Verdict::Fail;
-        outcome.detail += label + ": only " + std::to_string(brighter) + " of " +
-                          std::to_string(pixels) +
-                          " pixels brighter than with no lights (2% "
-                          "needed); variants:";
-        outcome.detail += variantList(*lit);
-        outcome.detail += writeImages("lit", label, lit->image, nullptr) + "\n";
+        recordFailure(outcome, label,
+                      "only " + std::to_string(brighter) + " of " + std::to_string(pixels) +
+                          " pixels brighter than with no lights (2% needed)",
+                      *lit, nullptr);
     }
 
     // Like render(), for a coverage render that may fail without failing the check (directional
@@ -181,18 +175,33 @@ private:
             if (outcome.verdict == Verdict::NotApplicable) outcome.verdict = Verdict::Pass;
             return;
         }
-        outcome.verdict = Verdict::Fail;
-        outcome.detail += label + ": " + std::to_string(found.count) +
-                          " pixels hold NaN or Inf, first (" + std::to_string(found.firstX) + "," +
-                          std::to_string(found.firstY) + "); variants:";
-        outcome.detail += variantList(frame);
-        outcome.detail += writeImages("finite", label, frame.image, nullptr) + "\n";
+        recordFailure(outcome, label,
+                      std::to_string(found.count) + " pixels hold NaN or Inf, first (" +
+                          std::to_string(found.firstX) + "," + std::to_string(found.firstY) + ")",
+                      frame, nullptr);
     }
 
-    // Writes <outDir>/<shader>/<relation>.<label>.{actual,expected,diff}.png; " -> <files>"
-    // or " (images not written: why)".
+    // Fails |outcome| on case |label|: its detail line (the finding, the variants |frame| drew,
+    // the images written) and its FailedCase.
+    void recordFailure(RelationOutcome& outcome, const std::string& label,
+                       const std::string& finding, const runtime::RenderedFrame& frame,
+                       const RelationCheck* check) {
+        outcome.verdict = Verdict::Fail;
+        FailedCase failed{label, finding, {}, {}};
+        std::set<std::string> seen;
+        for (const std::string& variant : frame.variants)
+            if (seen.insert(variant).second) failed.variants.push_back(variant);
+        outcome.detail += label + ": " + finding + "; variants:" + variantList(frame) +
+                          writeImages(outcome.relation, label, frame.image, check, failed.images) +
+                          "\n";
+        outcome.cases.push_back(std::move(failed));
+    }
+
+    // Writes <outDir>/<shader>/<relation>.<label>.{actual,expected,diff}.png, their paths to
+    // |written| once all are written; " -> <files>" or " (images not written: why)".
     std::string writeImages(const std::string& relation, const std::string& label,
-                            const Image& actual, const RelationCheck* check) {
+                            const Image& actual, const RelationCheck* check,
+                            std::vector<std::string>& written) {
         std::filesystem::path dir =
             std::filesystem::path(mOptions.outDir) / fileSafe(mReport.shader);
         std::error_code error;
@@ -208,9 +217,10 @@ private:
             images.emplace_back(base + ".diff.png", check->diff);
         }
         for (const auto& [path, image] : images) {
-            if (Status written = runtime::writePng(path, image); !written)
-                return " (images not written: " + written.error().detail + ")";
+            if (Status status = runtime::writePng(path, image); !status)
+                return " (images not written: " + status.error().detail + ")";
         }
+        for (const auto& image : images) written.push_back(image.first);
         return " -> " + base + ".*.png";
     }
 
@@ -540,6 +550,7 @@ void markNotApplicable(ShaderCheck& c, const std::vector<std::string>& relations
         RelationOutcome& outcome = c.outcomeOf(relation);
         outcome.verdict = Verdict::NotApplicable;
         outcome.detail = reason;
+        outcome.cases.clear();  // images already written stay on disk, not in the report
     }
 }
 

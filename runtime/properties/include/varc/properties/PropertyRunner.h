@@ -24,6 +24,16 @@ struct PropertyOptions {
 enum class Verdict { Pass, Fail, NotApplicable };
 const char* verdictName(Verdict verdict);  // "pass", "FAIL", "n/a"
 
+// One failing case of a relation, for the HTML report: what detail says about it, in fields.
+struct FailedCase {
+    std::string label;                  // the case ("point-far", ...)
+    std::string finding;                // the worst pixels, or what the case found
+    std::vector<std::string> variants;  // the distinct variants its render drew, in draw order
+    // The PNGs written (<outDir>/<shader>/<relation>.<label>.*.png): actual, then expected and
+    // diff when the relation compares with an expected image; empty when they were not written.
+    std::vector<std::string> images;
+};
+
 struct RelationOutcome {
     std::string relation;  // one of relationNames()
     Verdict verdict = Verdict::NotApplicable;
@@ -31,6 +41,7 @@ struct RelationOutcome {
     // images written; for n/a by classification the model's reason ("" when the shader does not
     // take the light types the relation needs).
     std::string detail;
+    std::vector<FailedCase> cases;  // the failing cases that drew (and wrote images), in order
 };
 
 // What the renders show about a shader's lighting (docs/PROPERTIES.md, "Classification").
