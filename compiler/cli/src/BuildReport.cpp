@@ -111,7 +111,7 @@ void printBuildReport(const std::vector<compiler::LoadedShader>& shaders,
         out << "; cache: " << build.cachedStageSources << " sources, " << build.cachedSources
             << " programs";
     }
-    out << ") into " << build.programs.size() << " SPIR-V modules in " << std::fixed
+    out << ") into " << sizes.modules << " SPIR-V modules in " << std::fixed
         << std::setprecision(2) << seconds << " s; raw SPIR-V " << kibibytes(sizes.rawSpirvBytes)
         << ", unique " << kibibytes(sizes.uniqueSpirvBytes) << ", pack "
         << kibibytes(sizes.packBytes) << "\n";
@@ -148,7 +148,7 @@ Json buildReportJson(const std::vector<compiler::LoadedShader>& shaders,
     for (const cache::CacheLevelStats& level : build.cacheLevels)
         cacheJson.push_back(cacheLevelJson(level));
     return {{"passes", passes},
-            {"programs", build.programs.size()},
+            {"programs", sizes.modules},
             {"compiled_sources", build.compiledSources},
             {"preprocessed", build.preprocessedPrograms},
             {"cached_sources", build.cachedSources},

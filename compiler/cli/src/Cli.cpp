@@ -181,15 +181,22 @@ int runCheck(const Options& options, Session& session, std::ostream& out) {
 }
 
 // Raw bytes count every variant's stages as if stored separately; unique counts each module once.
+// A shard's placeholders are skipped: they stand for modules another shard builds.
 PackSizes measureSpirv(const compiler::BuildOutput& build) {
     PackSizes sizes;
-    for (const pack::PackProgram& program : build.programs) {
-        sizes.uniqueSpirvBytes += program.spirv.size() * sizeof(uint32_t);
+    auto isModule = [&](uint32_t program) {
+        return program != pack::kNoProgram &&
+               !pack::isPlaceholderSpirv(build.programs[program].spirv);
+    };
+    for (uint32_t program = 0; program < build.programs.size(); ++program) {
+        if (!isModule(program)) continue;
+        ++sizes.modules;
+        sizes.uniqueSpirvBytes += build.programs[program].spirv.size() * sizeof(uint32_t);
     }
     for (const compiler::CompiledPass& pass : build.passes) {
         for (const pack::PackVariant& variant : pass.variants) {
             for (uint32_t program : variant.programs) {
-                if (program == pack::kNoProgram) continue;
+                if (!isModule(program)) continue;
                 sizes.rawSpirvBytes += build.programs[program].spirv.size() * sizeof(uint32_t);
             }
         }

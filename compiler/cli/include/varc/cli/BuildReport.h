@@ -14,7 +14,10 @@
 
 namespace varc::cli {
 
+// What a build's SPIR-V amounts to. A shard's placeholders (programs another shard builds,
+// varc/pack/PartialPack.h) are not modules and count nowhere.
 struct PackSizes {
+    uint64_t modules = 0;         // distinct SPIR-V modules
     uint64_t rawSpirvBytes = 0;   // every variant's stages, as if stored separately
     uint64_t uniqueSpirvBytes = 0;
     uint64_t packBytes = 0;
