@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "varc/core/Check.h"
 
@@ -218,39 +219,40 @@ Growth contributionGrowth(const Image& once, const Image& twice, float absolute,
     return growth;
 }
 
-Image flippedLeftRight(const Image& image) {
-    Image flipped = image;
-    const size_t width = image.width(), channels = 4;
-    auto flipRows = [&](auto source, auto target) {
+namespace {
+
+// |image| with each pixel (x, y) moved to |target|(x, y), a permutation of the pixel grid.
+template <typename TargetOf>
+Image remapped(const Image& image, TargetOf target) {
+    Image result = image;
+    const size_t channels = 4;
+    auto remap = [&](auto source, auto destination) {
         for (size_t y = 0; y < image.height(); ++y)
-            for (size_t x = 0; x < width; ++x)
+            for (size_t x = 0; x < image.width(); ++x) {
+                const auto [tx, ty] = target(x, y);
                 for (size_t c = 0; c < channels; ++c)
-                    target[(y * width + (width - 1 - x)) * channels + c] =
-                        source[(y * width + x) * channels + c];
+                    destination[(ty * image.width() + tx) * channels + c] =
+                        source[(y * image.width() + x) * channels + c];
+            }
     };
     if (image.isFloat())
-        flipRows(image.floats(), flipped.floats());
+        remap(image.floats(), result.floats());
     else
-        flipRows(image.bytes(), flipped.bytes());
-    return flipped;
+        remap(image.bytes(), result.bytes());
+    return result;
+}
+
+}  // namespace
+
+Image flippedLeftRight(const Image& image) {
+    const size_t width = image.width();
+    return remapped(image, [&](size_t x, size_t y) { return std::pair(width - 1 - x, y); });
 }
 
 Image quarterTurned(const Image& image) {
     VARC_CHECK(image.width() == image.height());
-    Image turned = image;
-    const size_t size = image.width(), channels = 4;
-    auto turn = [&](auto source, auto target) {
-        for (size_t y = 0; y < size; ++y)
-            for (size_t x = 0; x < size; ++x)
-                for (size_t c = 0; c < channels; ++c)
-                    target[(x * size + (size - 1 - y)) * channels + c] =
-                        source[(y * size + x) * channels + c];
-    };
-    if (image.isFloat())
-        turn(image.floats(), turned.floats());
-    else
-        turn(image.bytes(), turned.bytes());
-    return turned;
+    const size_t size = image.width();
+    return remapped(image, [&](size_t x, size_t y) { return std::pair(size - 1 - y, x); });
 }
 
 NonFinite findNonFinite(const Image& image) {
