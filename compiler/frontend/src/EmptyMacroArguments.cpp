@@ -122,12 +122,15 @@ std::string expandEmptyMacroArguments(std::string_view text) {
             continue;
         }
         size_t end = identifierEnd(text, i);
-        auto macro = macros.find(text.substr(i, end - i));
-        size_t callEnd = macro == macros.end() ? std::string_view::npos : emptyCallEnd(text, end);
+        // An empty call is rare and cheap to see: look the name up only then.
+        size_t callEnd = emptyCallEnd(text, end);
         const Definition* definition = nullptr;
         if (callEnd != std::string_view::npos) {
-            for (const Definition& candidate : macro->second) {
-                if (candidate.offset < i) definition = &candidate;
+            auto macro = macros.find(text.substr(i, end - i));
+            if (macro != macros.end()) {
+                for (const Definition& candidate : macro->second) {
+                    if (candidate.offset < i) definition = &candidate;
+                }
             }
         }
         if (!definition || !definition->usable) {

@@ -166,6 +166,35 @@ TEST_F(CompileDriverTest, OutputIsIdenticalForAnyThreadCount) {
     }
 }
 
+// A one-parameter macro called with an empty argument stops glslang; the pass's text is
+// expanded once for all its variants, before any is preprocessed (TextRewriteMemo), and the
+// programs are the same whichever thread preprocesses first.
+TEST_F(CompileDriverTest, EmptyMacroArgumentsExpandOnceWithTheSameProgramsOnAnyThreadCount) {
+    std::string shader = replaced(kTwoKeywordShader, "                return _Tint;",
+                                  "                return TINT_OF();");
+    shader = replaced(shader, "float4 _Tint;", "float4 _Tint;\n#define TINT_OF(x) _Tint x");
+    BuildOptions one;
+    one.jobs = 1;
+    auto first = build(shader, one);
+    ASSERT_TRUE(first) << firstMessage();
+    BuildOptions three;
+    three.jobs = 3;
+    auto second = build(shader, three);
+    ASSERT_TRUE(second) << firstMessage();
+    // As without the macro: 2 vertex and 2 fragment programs, the TINTED ones reading _Tint.
+    EXPECT_EQ(first->compiledSources, 4u);
+    ASSERT_EQ(first->programs.size(), second->programs.size());
+    for (size_t i = 0; i < first->programs.size(); ++i) {
+        EXPECT_EQ(first->programs[i].spirv, second->programs[i].spirv) << i;
+    }
+    auto plain = build(kTwoKeywordShader, one);
+    ASSERT_TRUE(plain);
+    ASSERT_EQ(plain->programs.size(), first->programs.size());
+    for (size_t i = 0; i < plain->programs.size(); ++i) {
+        EXPECT_EQ(plain->programs[i].spirv, first->programs[i].spirv) << i;
+    }
+}
+
 TEST_F(CompileDriverTest, ReflectsSemanticsAndUniforms) {
     auto output = build(kTwoKeywordShader);
     ASSERT_TRUE(output);

@@ -91,20 +91,25 @@ StageResult preprocessStage(const PassJob& job, Stage stage, const std::string& 
                             const std::string& preamble, const includes::SourceMap& sourceMap) {
     bool hlsl = languageOf(job) != shaderlab::ProgramLanguage::Glsl;
     std::string text = job.text;
+    // A one-parameter macro called with an empty argument (or with `##`, as for Unity's older
+    // preprocessor): C99 and Unity take it, glslang stops in every variant that reaches the
+    // call. Expanded once for the pass, before any variant's preprocessing, so no variant pays
+    // for a failing one (the result depends on the text alone, whatever the thread order).
+    if (hlsl) text = job.rewrites->apply("empty macro arguments", text, expandEmptyMacroArguments);
     PreprocessOutput pre = preprocessProgram({text, preamble, languageOf(job), stage, entry});
     if (!pre.ok && hlsl && pre.log.find("hexadecimal literal too big") != std::string::npos) {
         // The DirectX compilers keep the low 32 bits of such a literal; so does varc.
-        text = truncateWideHexLiterals(text);
+        text = job.rewrites->apply("wide hex literals", text, truncateWideHexLiterals);
         pre = preprocessProgram({text, preamble, languageOf(job), stage, entry});
     }
-    // A one-parameter macro called with an empty argument (or with `##`, as for Unity's older
-    // preprocessor): C99 and Unity take it, glslang stops.
+    // Empty macro arguments again, in the text with its hex literals truncated.
     if (!pre.ok && hlsl &&
         (pre.log.find("Too few args in Macro") != std::string::npos ||
          pre.log.find("unexpected '#'") != std::string::npos)) {
-        std::string expanded = expandEmptyMacroArguments(text);
+        const std::string& expanded =
+            job.rewrites->apply("empty macro arguments", text, expandEmptyMacroArguments);
         if (expanded != text) {
-            text = std::move(expanded);
+            text = expanded;
             pre = preprocessProgram({text, preamble, languageOf(job), stage, entry});
         }
     }

@@ -7,11 +7,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "driver/TextRewriteMemo.h"
 #include "varc/build/ObservedDefines.h"
 #include "varc/build/ProgramCache.h"
 #include "varc/build/UserDefines.h"
@@ -38,6 +40,8 @@ struct PassJob {
     std::optional<ObservedNames> observed;  // the macro names |text| can see; none: keep all
     std::optional<UserDefines> userDefines;  // the macros |text| defines itself
     ProgramCacheKey textHash;               // of |text|, when a program cache is used
+    // |text|'s variant-independent rewrites, shared by the job's variants (and its copies).
+    std::shared_ptr<TextRewriteMemo> rewrites = std::make_shared<TextRewriteMemo>();
     // sourceIds[variant * stages.size() + stageIndex]
     std::vector<uint32_t> sourceIds;
 };
