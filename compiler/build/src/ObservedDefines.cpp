@@ -158,22 +158,50 @@ void ObservedNames::addPastes(std::string_view directive) {
             if (next >= text.size()) next = std::string_view::npos;
         }
         bool firstFree = isParameter(first), lastFree = isParameter(last);
-        if (firstFree && lastFree) {
-            mObservesAll = true;
-            return;
-        }
+        if (firstFree && lastFree) mPastesTokens = true;
         if (!firstFree) mPastedPrefixes.emplace_back(first);
         if (!lastFree) mPastedSuffixes.emplace_back(last);
         paste = next == std::string_view::npos ? next : text.find("##", next);
     }
 }
 
-bool ObservedNames::mayObserve(std::string_view name) const {
-    if (mObservesAll || mNames.count(std::string(name)) != 0) return true;
+bool ObservedNames::isPastedEnd(std::string_view name) const {
     return std::any_of(mPastedPrefixes.begin(), mPastedPrefixes.end(),
                        [&](const std::string& prefix) { return startsWith(name, prefix); }) ||
            std::any_of(mPastedSuffixes.begin(), mPastedSuffixes.end(),
                        [&](const std::string& suffix) { return endsWith(name, suffix); });
+}
+
+// Pasting joins whole tokens, and a joined token can be joined again: a name a free chain can
+// form splits into at least two pieces, each a token of the text, a number (a pp-number starts
+// with a digit; the preamble's values are numbers) or a name a literal-ended chain forms.
+bool ObservedNames::isFormable(std::string_view name) const {
+    {
+        std::lock_guard<std::mutex> lock(mFormed->mutex);
+        if (auto it = mFormed->answers.find(name); it != mFormed->answers.end()) return it->second;
+    }
+    auto isPiece = [&](std::string_view piece) {
+        return (piece[0] >= '0' && piece[0] <= '9') || mNames.find(piece) != mNames.end() ||
+               isPastedEnd(piece);
+    };
+    // splits[i]: name[0, i) splits into pieces.
+    std::vector<bool> splits(name.size() + 1, false);
+    splits[0] = true;
+    for (size_t end = 1; end <= name.size(); ++end) {
+        for (size_t begin = 0; begin < end && !splits[end]; ++begin) {
+            if (!splits[begin] || (begin == 0 && end == name.size())) continue;
+            splits[end] = isPiece(name.substr(begin, end - begin));
+        }
+    }
+    const bool formable = splits[name.size()];
+    std::lock_guard<std::mutex> lock(mFormed->mutex);
+    mFormed->answers.emplace(std::string(name), formable);
+    return formable;
+}
+
+bool ObservedNames::mayObserve(std::string_view name) const {
+    if (mObservesAll || mNames.find(name) != mNames.end() || isPastedEnd(name)) return true;
+    return mPastesTokens && isFormable(name);
 }
 
 std::string dropUnobservedDefines(std::string_view preamble, const ObservedNames& names) {

@@ -40,15 +40,24 @@ TEST(ObservedNames, PastingWithALiteralEndConstrainsTheFormedName) {
     EXPECT_FALSE(names.mayObserve("SHADER_STAGE_VERTEX"));
 }
 
-TEST(ObservedNames, PastingTwoParametersCanFormAnyName) {
+TEST(ObservedNames, PastingTwoParametersFormsConcatenationsOfTheTextsTokens) {
     ObservedNames names("#define CAT(a, b) a ## b\n#if CAT(PO, INT)\n#endif\n");
-    EXPECT_TRUE(names.mayObserve("POINT"));
-    EXPECT_TRUE(names.mayObserve("ANYTHING"));
+    EXPECT_TRUE(names.mayObserve("POINT"));      // PO ## INT
+    EXPECT_TRUE(names.mayObserve("POINTPO"));    // CAT(CAT(PO, INT), PO) through another macro
+    EXPECT_TRUE(names.mayObserve("INT2"));       // a number argument: INT ## 2
+    EXPECT_FALSE(names.mayObserve("ANYTHING"));  // no split into the text's tokens
+    EXPECT_FALSE(names.mayObserve("SHADER_STAGE_VERTEX"));
+    // A name a literal-ended chain forms is a piece too: P(OINT) forms POINT_X, then X ## Y.
+    ObservedNames mixed("#define P(x) x##_X\n#define CAT(a, b) a##b\nSP\n");
+    EXPECT_TRUE(mixed.mayObserve("SPOT_X"));
+    EXPECT_TRUE(mixed.mayObserve("SPSPOT_X"));  // SP ## SPOT_X
+    EXPECT_FALSE(mixed.mayObserve("SPOT"));
 }
 
 TEST(ObservedNames, AChainIsJudgedByItsEnds) {
-    ObservedNames names("#define JOIN(a, b) a##_##b\n");  // forms <a>_<b>: any name
+    ObservedNames names("#define JOIN(a, b) a##_##b\nJOIN(SHADOWS, SCREEN)\n");  // <a>_<b>
     EXPECT_TRUE(names.mayObserve("SHADOWS_SCREEN"));
+    EXPECT_FALSE(names.mayObserve("SHADOWS_SOFT"));
     ObservedNames prefixed("#define P(x) UNITY_##x##_ON\n");  // forms UNITY_<x>_ON
     EXPECT_TRUE(prefixed.mayObserve("UNITY_HDR_ON"));
     EXPECT_FALSE(prefixed.mayObserve("VERTEXLIGHT_ON_X"));
