@@ -5,7 +5,7 @@ Shader "varc-tests/SurfaceStandard" {
     Properties {
         _Color ("Colour", Color) = (1, 1, 1, 1)
         _MainTex ("Albedo (RGB)", 2D) = "white" {}
-        _Glossiness ("Smoothness", Range(0, 1)) = 0.5
+        _Smoothness ("Smoothness", Range(0, 1)) = 0.5
         _Metallic ("Metallic", Range(0, 1)) = 0
     }
     SubShader {
@@ -15,7 +15,7 @@ Shader "varc-tests/SurfaceStandard" {
         #pragma target 3.0
         sampler2D _MainTex;
         fixed4 _Color;
-        half _Glossiness;
+        half _Smoothness;
         half _Metallic;
 
         struct Input {
@@ -26,7 +26,7 @@ Shader "varc-tests/SurfaceStandard" {
             fixed4 c = tex2D(_MainTex, IN.uv_MainTex) * _Color;
             o.Albedo = c.rgb;
             o.Metallic = _Metallic;
-            o.Smoothness = _Glossiness;
+            o.Smoothness = _Smoothness;
             o.Alpha = c.a;
         }
         ENDCG
