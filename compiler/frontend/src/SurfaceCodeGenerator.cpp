@@ -266,7 +266,9 @@ void writeVertexProgram(const PassPlan& plan, Writer& out) {
         out.line("    o.texcoord" + std::to_string(i) + " = " +
                  vertexField(plan, kTexcoords[i], "float4(0, 0, 0, 0)") + ";");
     }
-    if (plan.color) out.line("    o.vertexColor = " + vertexField(plan, "color", "float4(1, 1, 1, 1)") + ";");
+    if (plan.color) {
+        out.line("    o.vertexColor = " + vertexField(plan, "color", "float4(1, 1, 1, 1)") + ";");
+    }
     if (plan.screenPos) out.line("    o.screenPos = ComputeScreenPos(o.pos);");
     if (plan.base()) {
         out.line("#if defined(VARC_SURF_LIGHTMAP_UV)");
@@ -458,9 +460,12 @@ void writeFragmentProgram(const PassPlan& plan, Writer& out) {
     if (plan.tangentSpace) {
         out.line("    float3 worldTangent = i.worldTangent.xyz;");
         out.line("    float3 worldBinormal = cross(worldNormal, worldTangent) * i.worldTangent.w;");
-        out.line("    float3 tangentSpace0 = float3(worldTangent.x, worldBinormal.x, worldNormal.x);");
-        out.line("    float3 tangentSpace1 = float3(worldTangent.y, worldBinormal.y, worldNormal.y);");
-        out.line("    float3 tangentSpace2 = float3(worldTangent.z, worldBinormal.z, worldNormal.z);");
+        for (char axis : {'x', 'y', 'z'}) {  // the rows of the tangent-to-world matrix
+            std::string row = std::string("tangentSpace") + char('0' + (axis - 'x'));
+            std::string c(1, axis);
+            out.line("    float3 " + row + " = float3(worldTangent." + c + ", worldBinormal." + c +
+                     ", worldNormal." + c + ");");
+        }
     }
     writeInputMembers(plan, out);
     writeSurfaceCall(plan, out);

@@ -25,7 +25,8 @@ constexpr std::string_view kLighting =
     "struct appdata_base { float4 vertex : POSITION; float3 normal : NORMAL; };\n";
 
 TEST(SurfaceAnalysis, StructMembersSkipPreprocessorLinesSemanticsAndArrays) {
-    std::string text = "struct Inputs { int no; };\nstruct Input {\n  float2 uv_MainTex : TEXCOORD0;"
+    std::string text = "struct Inputs { int no; };\n"
+                       "struct Input {\n  float2 uv_MainTex : TEXCOORD0;"
                        "\n#ifdef A\n  float a[2], b;\n#endif\n  INTERNAL_DATA\n};";
     EXPECT_EQ(structMembers(text, "Input"), (Members{"uv_MainTex", "a", "b"}));
     EXPECT_EQ(structMembers(text, "Output"), std::nullopt);

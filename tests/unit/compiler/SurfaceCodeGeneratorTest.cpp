@@ -145,8 +145,9 @@ TEST(SurfaceCodeGenerator, BaseInterpolatorsAreSwitchedByWhatTheFragmentReads) {
     EXPECT_FALSE(has(old.after, "#define VARC_SURF_LIGHTMAP_UV 1"));
     shaderlab::SurfaceProgram noAmbient = lambert();
     noAmbient.options.noAmbient = true;
-    EXPECT_FALSE(has(generateSurfaceCode(noAmbient, lambertFacts(), SurfacePassKind::ForwardBase).after,
-                     "#define VARC_SURF_AMBIENT"));
+    shaderlab::GeneratedCode none =
+        generateSurfaceCode(noAmbient, lambertFacts(), SurfacePassKind::ForwardBase);
+    EXPECT_FALSE(has(none.after, "#define VARC_SURF_AMBIENT"));
 }
 
 TEST(SurfaceCodeGenerator, PlainAlphaIsPremultipliedForStandardAndFadeOtherwise) {

@@ -147,7 +147,8 @@ TEST(ShaderLabParser, RefusesAnUnknownSurfaceOptionAtTheOption) {
 
 // A surface program belongs directly in a SubShader; in a Category it is refused.
 TEST(ShaderLabParser, RefusesASurfaceProgramOutsideASubShader) {
-    auto outcome = parse("Shader \"A\" { Category { CGPROGRAM\n#pragma surface s Lambert\nENDCG } }");
+    auto outcome =
+        parse("Shader \"A\" { Category { CGPROGRAM\n#pragma surface s Lambert\nENDCG } }");
     EXPECT_FALSE(outcome.shader);
     EXPECT_EQ(outcome.firstMessage(),
               "a surface program ('#pragma surface') must be written directly inside a SubShader");

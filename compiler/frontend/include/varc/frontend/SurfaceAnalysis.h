@@ -40,7 +40,8 @@ struct SurfaceFacts {
 
 // The parameter list of the first definition of function |name| in |text| (a `name(...)`
 // followed by `{`), split at top-level commas and trimmed; nullopt when none is defined.
-// Example: "void surf (Input IN, inout SurfaceOutput o) {" -> {"Input IN", "inout SurfaceOutput o"}.
+// Example: "void surf (Input IN, inout SurfaceOutput o) {" ->
+// {"Input IN", "inout SurfaceOutput o"}.
 std::optional<std::vector<std::string>> functionParameters(std::string_view text,
                                                            std::string_view name);
 
