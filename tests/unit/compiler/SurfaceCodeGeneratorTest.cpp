@@ -85,6 +85,8 @@ TEST(SurfaceCodeGenerator, TangentSpaceNormalsLegacyLightingFinalColorAndAlphaTe
         generateSurfaceCode(program, facts, SurfacePassKind::ForwardBase);
     EXPECT_TRUE(has(code.before, "#define INTERNAL_DATA float3 internalSurfaceTtoW0;"));
     EXPECT_TRUE(has(code.after, "o.Normal = float3(0, 0, 1);"));
+    EXPECT_TRUE(has(code.after,
+                    "float3 tangentSpace1 = float3(worldTangent.y, worldBinormal.y, worldNormal.y);"));
     EXPECT_TRUE(has(code.after, "surfIN.viewDir = tangentSpace0 * worldViewDir.x"));
     EXPECT_TRUE(has(code.after, "surfIN.internalSurfaceTtoW0 = tangentSpace0;"));
     EXPECT_TRUE(has(code.after, "clip(o.Alpha - _Cutoff);"));
