@@ -14,7 +14,8 @@ namespace varc::shaderlab {
 // again replaces the earlier value). Example: `{ "LightMode" = "ForwardBase" }`.
 bool parseTags(TokenCursor& cursor, Tags& tags);
 
-// Parses the integer after the `LOD` keyword into |lod|: `LOD 200`. Rejects negatives.
+// Parses the integer after the `LOD` keyword into |lod|: `LOD 200`, `LOD -10` (Unity accepts
+// negative levels).
 bool parseLod(TokenCursor& cursor, int& lod);
 
 // Calls |parseItem| (which consumes one item, or reports and returns false) until the '}'
@@ -37,7 +38,8 @@ bool reportUnexpectedCommand(TokenCursor& cursor, std::string_view scope);
 
 // At a command position whose next token is a program keyword: captures a *INCLUDE block into
 // the innermost scope of |scopes|. A program block (CGPROGRAM, ...) is reported as
-// "CGPROGRAM block must be inside a Pass"; Pass bodies handle those themselves.
+// "CGPROGRAM block must be inside a Pass" (one with `#pragma surface`: "must be written
+// directly inside a SubShader"); Pass and SubShader bodies handle those themselves.
 bool parseIncludeBlock(TokenCursor& cursor, IncludeScopes& scopes);
 
 }  // namespace varc::shaderlab

@@ -6,6 +6,7 @@
 
 #include "BlockSyntax.h"
 #include "ProgramKeyword.h"
+#include "SurfacePragma.h"
 
 namespace varc::shaderlab {
 
@@ -38,7 +39,10 @@ bool SubShaderParser::parseItem(SubShader& subShader, RenderState& state, size_t
         mCursor.next();
         return parseLod(mCursor, subShader.lod);
     }
-    if (findProgramKeyword(token)) return parseIncludeBlock(mCursor, mScopes);
+    if (const ProgramKeyword* program = findProgramKeyword(token)) {
+        if (program->isInclude) return parseIncludeBlock(mCursor, mScopes);
+        return parseSurface(mCursor.next(), subShader, index);
+    }
     CommandResult result = mStateParser.tryParse(state);
     if (result != CommandResult::NotACommand) return result == CommandResult::Parsed;
     return reportUnexpectedCommand(mCursor, "SubShader");
@@ -89,6 +93,27 @@ bool SubShaderParser::parseProgram(const Token& keyword, Pass& pass) {
         mCursor.captureProgram(keyword, *findProgramKeyword(keyword));
     if (!block) return false;
     pass.program = std::move(*block);
+    return true;
+}
+
+// A program directly in a SubShader: a surface program when it has `#pragma surface`, kept as
+// a placeholder pass (Pass::surface) the compiler generates the passes of.
+bool SubShaderParser::parseSurface(const Token& keyword, SubShader& subShader, size_t index) {
+    const ProgramKeyword& kind = *findProgramKeyword(keyword);
+    std::optional<ProgramBlock> block = mCursor.captureProgram(keyword, kind);
+    if (!block) return false;
+    std::optional<SourceLocation> pragma = findSurfacePragma(*block);
+    if (!pragma) {
+        return mCursor.fail(keyword.location,
+                            std::string(kind.name) + " block must be inside a Pass");
+    }
+    std::optional<SurfaceProgram> surface = parseSurfaceProgram(*block, *pragma, mCursor.sink());
+    if (!surface) return false;
+    Pass pass;
+    pass.location = keyword.location;
+    pass.surface = std::move(*surface);
+    mScopes.addPass(index, subShader.passes.size());
+    subShader.passes.push_back(std::move(pass));
     return true;
 }
 

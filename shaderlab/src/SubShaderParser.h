@@ -29,6 +29,7 @@ private:
     bool parsePass(const Token& keyword, SubShader& subShader, size_t index);
     bool parsePassItem(Pass& pass);
     bool parseProgram(const Token& keyword, Pass& pass);
+    bool parseSurface(const Token& keyword, SubShader& subShader, size_t index);
     bool parseUsePass(const Token& keyword, SubShader& subShader);
     bool parseGrabPass();
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # The compatibility corpus's property validation (issue #16), the test compat.properties: every
-# corpus shader with a ForwardBase pass that docs/COMPATIBILITY.md's build table lists as built
+# corpus shader with a ForwardBase pass (its own, or generated from `#pragma surface`) that
+# docs/COMPATIBILITY.md's build table lists as built
 # and that has at most MAX_VARIANTS variants is built into its own pack (the repository as
 # project root) and run through `varc validate --properties`. The verdicts become the section
 # "## Property validation" of docs/COMPATIBILITY.md (a column per relation); the test fails when
@@ -90,7 +91,8 @@ fi
 
 while IFS= read -r -d '' file; do
     rel=${file#"$compat"/}
-    grep -qi "ForwardBase" "$file" || continue
+    # A surface shader (`#pragma surface`) gets its ForwardBase pass from varc's generator.
+    grep -qi "ForwardBase" "$file" || grep -q "pragma[[:space:]]*surface" "$file" || continue
     row=$(grep -F "| \`$rel\` |" "$doc" | head -1)
     case "$row" in *"| built"*) ;; *) continue ;; esac
     variants=$(echo "$row" | awk -F'|' '{gsub(/ /, "", $4); print $4}')
@@ -98,13 +100,21 @@ while IFS= read -r -d '' file; do
     pack="$work/packs/$name.svpack"
     log="$work/logs/$name"
     source=$file
+    # The include root: the repository folder, also the project root; a surface shader's
+    # repository folder is inside surface/, and its project root (the folder holding the Assets/
+    # its includes name, which may be deeper) is found by varc, as compat.corpus lets it.
+    includes=(-I "$(dirname "$file")" --project-root "$compat/${rel%%/*}")
+    case "$rel" in surface/*)
+        inner=${rel#surface/}
+        includes=(-I "$compat/surface/${inner%%/*}" -I "$(dirname "$file")") ;;
+    esac
     if [ "$variants" -gt "$max" ]; then
         # Too many variants to build in the test's time: a trimmed copy holds the variants the
         # checks draw (every material keyword off; see trimmedCopy), its includes read in place.
         source="$work/trimmed/$rel"
         mkdir -p "$(dirname "$source")"
         trimmedCopy "$file" >"$source"
-        kept=$("$varc" variants --json -I "$(dirname "$file")" "$source" 2>/dev/null |
+        kept=$("$varc" variants --json "${includes[@]}" "$source" 2>/dev/null |
                grep -o '"variants":[0-9]*' | tail -n 1 | cut -d: -f2)
         if [ -z "$kept" ] || [ "$kept" -gt "$max" ]; then
             skipped+=("\`$rel\` ($variants; ${kept:-?} trimmed)")
@@ -112,7 +122,7 @@ while IFS= read -r -d '' file; do
         fi
         trimmed+=("\`$rel\` ($variants → $kept)")
     fi
-    timeout 600 "$varc" build --project-root "$compat/${rel%%/*}" -I "$(dirname "$file")" \
+    timeout 600 "$varc" build "${includes[@]}" \
         -o "$pack" "$source" >"$log.build" 2>&1
     bstatus=$?
     if [ "$bstatus" -ne 0 ]; then
@@ -158,7 +168,7 @@ while IFS= read -r -d '' file; do
         echo "FAIL: $rel: no lit shader checked (see $log.out, $log.err)"
         status=1
     fi
-done < <(find "$compat" -name '*.shader' -not -path "$compat/surface/*" -print0 | LC_ALL=C sort -z)
+done < <(find "$compat" -name '*.shader' -print0 | LC_ALL=C sort -z)
 
 checked=$(grep -c . "$rows")
 clean=$(grep -v 'FAIL\|does not' "$rows" | grep -c .)

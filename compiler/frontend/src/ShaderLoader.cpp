@@ -6,6 +6,7 @@
 
 #include "varc/core/SaturatingMath.h"
 #include "varc/frontend/PassReferences.h"
+#include "varc/frontend/SurfacePasses.h"
 #include "varc/shaderlab/ShaderLabParser.h"
 #include "varc/variants/PragmaParser.h"
 
@@ -48,14 +49,28 @@ FileId implicitCgIncludesFile(const includes::IncludeOptions& options,
     return sourceMap.addFile(path, std::string(kImplicitCgIncludes));
 }
 
+// One root per line of generated |code|, each at |location|: every generated line maps to the
+// `#pragma surface` in diagnostics.
+void addGeneratedRoots(std::string_view code, SourceLocation location,
+                       std::vector<includes::SourceText>& roots) {
+    size_t start = 0;
+    while (start < code.size()) {
+        size_t end = std::min(code.find('\n', start), code.size());
+        roots.push_back({std::string(code.substr(start, end - start)) + "\n", location});
+        start = end + 1;
+    }
+}
+
 std::vector<includes::SourceText> passRoots(const shaderlab::Pass& pass, FileId implicitCg,
                                             const includes::SourceMap& sourceMap) {
     std::vector<includes::SourceText> roots;
     if (implicitCg != kNoFile) roots.push_back({sourceMap.contents(implicitCg), {implicitCg, 1, 1}});
+    if (pass.generated) addGeneratedRoots(pass.generated->before, pass.generated->location, roots);
     for (const shaderlab::ProgramBlock& block : pass.includeBlocks) {
         roots.push_back({block.text, block.origin});
     }
     roots.push_back({pass.program->text, pass.program->origin});
+    if (pass.generated) addGeneratedRoots(pass.generated->after, pass.generated->location, roots);
     return roots;
 }
 
@@ -139,6 +154,28 @@ bool loadPass(LoadedPass& loaded, includes::IncludeResolver& resolver,
     return loaded.space.has_value();
 }
 
+// The text a surface program is analysed in: its program after the include files the generated
+// passes include, with every #include spliced. Expansion errors are reported here once.
+std::optional<std::string> surfaceAnalysisText(const shaderlab::Pass& placeholder,
+                                               includes::IncludeResolver& resolver,
+                                               const includes::IncludeOptions& options,
+                                               includes::SourceMap& sourceMap,
+                                               DiagnosticSink& sink) {
+    shaderlab::Pass pass;
+    pass.program = placeholder.surface->block;
+    pass.includeBlocks = placeholder.includeBlocks;
+    pass.generated = shaderlab::GeneratedCode{
+        "#include \"HLSLSupport.cginc\"\n#include \"UnityShaderVariables.cginc\"\n"
+        "#include \"UnityCG.cginc\"\n#include \"Lighting.cginc\"\n"
+        "#include \"UnityPBSLighting.cginc\"\n",
+        "", placeholder.surface->pragma};
+    DiagnosticList diagnostics;
+    auto expanded = expandPass(pass, resolver, options, sourceMap, diagnostics);
+    if (expanded) return std::move(expanded->text);
+    for (const Diagnostic& diagnostic : diagnostics.diagnostics()) sink.report(diagnostic);
+    return std::nullopt;
+}
+
 }  // namespace
 
 uint64_t LoadedShader::variantCount() const {
@@ -187,9 +224,13 @@ std::optional<LoadedShader> loadShader(const std::string& path,
     auto ast = shaderlab::parseShaderLab(sourceMap.contents(shader.file), shader.file, sink);
     if (!ast) return std::nullopt;
     shader.ast = std::move(*ast);
+    includes::IncludeResolver resolver(fileSystem, sourceMap, includeOptions);
+    auto surfaceText = [&](const shaderlab::Pass& placeholder) {
+        return surfaceAnalysisText(placeholder, resolver, includeOptions, sourceMap, sink);
+    };
+    if (!generateSurfacePasses(shader.ast, surfaceText, sink)) return std::nullopt;
     if (catalog) resolvePassReferences(shader.ast, *catalog, sink);
 
-    includes::IncludeResolver resolver(fileSystem, sourceMap, includeOptions);
     bool ok = true;
     size_t index = 0;
     for (const shaderlab::SubShader& subShader : shader.ast.subShaders) {

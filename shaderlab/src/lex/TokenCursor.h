@@ -52,6 +52,9 @@ public:
     // Captures a `[...]` attribute's text after |opening| (a just-consumed '['), trimmed.
     std::optional<std::string> captureAttribute(const Token& opening);
 
+    // Where errors go, for helpers that report without a token (surface pragma options).
+    DiagnosticSink& sink() { return mSink; }
+
     // Source text from |first|'s start to |last|'s end, as written.
     std::string sourceBetween(const Token& first, const Token& last) const;
 

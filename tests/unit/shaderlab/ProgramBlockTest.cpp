@@ -102,22 +102,57 @@ TEST(ShaderLabParser, RejectsProgramBlockOutsideAPass) {
     EXPECT_EQ(outcome.firstLocation(), (SourceLocation{testing::kTestFile, 1, 26}));
 }
 
-// A program directly in a SubShader with `#pragma surface` is a surface shader: refused at the
-// pragma with what to do instead.
-TEST(ShaderLabParser, RefusesASurfaceShaderAtItsPragma) {
+// A program directly in a SubShader with `#pragma surface` is a surface program: kept as a
+// placeholder pass with its text, origin, pragma location and options, in file order.
+TEST(ShaderLabParser, KeepsASurfaceProgramAsAPlaceholderPass) {
+    auto outcome = parse(trimMargin(R"(
+        |Shader "A" { CGINCLUDE shared ENDCG SubShader {
+        |    Pass { CGPROGRAM p ENDCG }
+        |    CGPROGRAM
+        |      #  pragma surface surf Lambert vertex:vert addshadow // a comment
+        |    ENDCG
+        |} }
+    )"));
+    ASSERT_TRUE(outcome.shader) << outcome.firstMessage();
+    const std::vector<Pass>& passes = outcome.shader->subShaders.at(0).passes;
+    ASSERT_EQ(passes.size(), 2u);
+    EXPECT_FALSE(passes[0].surface);
+    const Pass& placeholder = passes[1];
+    ASSERT_TRUE(placeholder.surface);
+    EXPECT_FALSE(placeholder.program);
+    EXPECT_EQ(placeholder.surface->function, "surf");
+    EXPECT_EQ(placeholder.surface->lightingModel, "Lambert");
+    EXPECT_EQ(placeholder.surface->options.vertexFunction, "vert");
+    EXPECT_TRUE(placeholder.surface->options.addShadow);
+    EXPECT_EQ(placeholder.surface->pragma, (SourceLocation{testing::kTestFile, 4, 7}));
+    EXPECT_EQ(placeholder.surface->block.origin, (SourceLocation{testing::kTestFile, 3, 14}));
+    ASSERT_EQ(placeholder.includeBlocks.size(), 1u);
+    EXPECT_EQ(placeholder.includeBlocks[0].text, " shared ");
+    EXPECT_EQ(outcome.diagnostics.errorCount(), 0u);
+}
+
+// An unknown option is an error at the option itself.
+TEST(ShaderLabParser, RefusesAnUnknownSurfaceOptionAtTheOption) {
     auto outcome = parse(trimMargin(R"(
         |Shader "A" { SubShader {
         |    CGPROGRAM
-        |      #  pragma surface surf Lambert
+        |    #pragma surface surf Lambert noforwardadd shiny
         |    ENDCG
         |} }
     )"));
     EXPECT_FALSE(outcome.shader);
-    EXPECT_EQ(outcome.firstMessage().rfind("surface shaders ('#pragma surface') are not supported", 0),
-              0u)
-        << outcome.firstMessage();
-    EXPECT_EQ(outcome.firstLocation(), (SourceLocation{testing::kTestFile, 3, 7}));
-    EXPECT_EQ(outcome.diagnostics.errorCount(), 1u);
+    EXPECT_EQ(outcome.firstMessage(), "unknown surface shader option 'shiny'");
+    EXPECT_EQ(outcome.firstLocation(), (SourceLocation{testing::kTestFile, 3, 47}));
+}
+
+// A surface program belongs directly in a SubShader; in a Category it is refused.
+TEST(ShaderLabParser, RefusesASurfaceProgramOutsideASubShader) {
+    auto outcome =
+        parse("Shader \"A\" { Category { CGPROGRAM\n#pragma surface s Lambert\nENDCG } }");
+    EXPECT_FALSE(outcome.shader);
+    EXPECT_EQ(outcome.firstMessage(),
+              "a surface program ('#pragma surface') must be written directly inside a SubShader");
+    EXPECT_EQ(outcome.firstLocation(), (SourceLocation{testing::kTestFile, 2, 1}));
 }
 
 TEST(ShaderLabParser, CollectsIncludeBlocksInScopeInFileOrder) {

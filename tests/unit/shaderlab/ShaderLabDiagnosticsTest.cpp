@@ -84,7 +84,7 @@ TEST(ShaderLabDiagnostics, ReportsMalformedTagsAndLod) {
     expectSingleError("Shader \"A\" { SubShader { Tags { \"Queue\" \"x\" } } }",
                       "expected '=' after tag name \"Queue\", found \"x\"", 1, 41);
     expectSingleError("Shader \"A\" { SubShader { LOD 1.5 } }",
-                      "invalid LOD '1.5'; expected a non-negative integer", 1, 30);
+                      "invalid LOD '1.5'; expected an integer", 1, 30);
 }
 
 TEST(ShaderLabDiagnostics, ReportsOnlyTheFirstError) {

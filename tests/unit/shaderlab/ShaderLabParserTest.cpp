@@ -156,6 +156,13 @@ TEST(ShaderLabParser, CategoryStateTagsAndLodReachEnclosedSubShadersAndPasses) {
     EXPECT_EQ(outside.passes.at(0).state, RenderState{});
 }
 
+// Unity accepts a negative LOD (it takes the first SubShader at or below maximumLOD).
+TEST(ShaderLabParser, AcceptsANegativeLod) {
+    auto outcome = parse("Shader \"A\" { SubShader { LOD -10 Pass { } } }");
+    ASSERT_TRUE(outcome.shader) << outcome.firstMessage();
+    EXPECT_EQ(outcome.shader->subShaders.at(0).lod, -10);
+}
+
 TEST(ShaderLabParser, SubShaderStateAppliesToEveryPassUnlessThePassOverrides) {
     auto outcome = parse(R"(Shader "A" { SubShader {
         ZTest Greater Cull Front

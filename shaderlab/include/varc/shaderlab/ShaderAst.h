@@ -48,6 +48,49 @@ struct PassOrigin {
     SourceLocation reference;    // the `UsePass` or `Fallback` that brought it in
 };
 
+// The options of `#pragma surface FUNC MODEL [options]` (docs/SURFACE_SHADERS.md). Options
+// varc accepts without acting on them (meta pass, interpolation hints) are not kept.
+struct SurfaceOptions {
+    enum class Alpha { Off, Blend, Fade, Premultiply };
+    enum class Decal { None, Add, Blend };
+    std::string vertexFunction;      // `vertex:FN`
+    std::string finalColorFunction;  // `finalcolor:FN`
+    std::string alphaTestProperty;   // `alphatest:PROP`
+    Alpha alpha = Alpha::Off;        // `alpha`, `alpha:blend|fade|premul`
+    Decal decal = Decal::None;       // `decal:add|blend`
+    bool keepAlpha = false;
+    bool addShadow = false;
+    bool fullForwardShadows = false;
+    bool noForwardAdd = false;
+    bool noAmbient = false;
+    bool noVertexLights = false;
+    bool noFog = false;
+    bool noShadow = false;
+    bool excludeForward = false;     // `exclude_path:forward`
+    // The options that remove keywords of the forward shortcuts (`nolightmap`, `nodirlightmap`,
+    // `nodynlightmap`, `noshadowmask`, `novertexlights`, `noshadow`), in the order written.
+    std::vector<std::string> shortcutOptions;
+};
+
+// A CG/HLSL program written directly in a SubShader with `#pragma surface`: the compiler turns
+// it into ForwardBase, ForwardAdd (and, with `addshadow`, ShadowCaster) passes.
+struct SurfaceProgram {
+    ProgramBlock block;
+    std::string function;       // FUNC: `void FUNC(Input IN, inout SurfaceOutputX o)`
+    std::string lightingModel;  // MODEL: `Lighting<MODEL>` is the lighting function
+    SurfaceOptions options;
+    SourceLocation pragma;      // of the `#` of `#pragma surface`
+};
+
+// Code varc wrote around a pass's program (the passes of a surface program): |before| is
+// spliced before the *INCLUDE blocks and the program, |after| after the program. Every line of
+// both maps to |location| (the `#pragma surface`) in diagnostics.
+struct GeneratedCode {
+    std::string before;
+    std::string after;
+    SourceLocation location;
+};
+
 struct Pass {
     std::string name;        // from `Name "..."`, "" if none
     Tags tags;               // own tags; then the SubShader's LightMode when the pass sets none
@@ -60,6 +103,10 @@ struct Pass {
     std::string usePass;     // `UsePass "Shader/PASSNAME"`: a reference instead of a pass body
     SourceLocation location; // of the `Pass`/`UsePass` keyword
     PassOrigin origin;       // Own as parsed; set when the compiler resolves a reference
+    // Set for the placeholder of a surface program as parsed (no |program|); the compiler
+    // replaces the placeholder by the passes it generates, which carry |generated|.
+    std::optional<SurfaceProgram> surface;
+    std::optional<GeneratedCode> generated;
 
     std::string lightMode() const { return findTag(tags, "LightMode"); }
 };
