@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <string>
 
-#include "varc/build/CompileDriver.h"
-#include "varc/build/PackAssembler.h"
 #include "varc/core/Diagnostic.h"
+#include "varc/driver/CompileDriver.h"
+#include "varc/driver/PackAssembler.h"
 
 namespace varc::bench {
 
@@ -45,7 +45,7 @@ void addLibraryAndFixtures(BenchInputs& inputs) {
     DiagnosticList diagnostics;
     for (const char* root : {VARC_SOURCE_DIR "/../shared/fixtures", VARC_SOURCE_DIR "/shaders"}) {
         for (const std::string& file : shaderFilesUnder(root)) {
-            auto shader = compiler::loadShader(file, inputs.fileSystem, inputs.sourceMap, options,
+            auto shader = frontend::loadShader(file, inputs.fileSystem, inputs.sourceMap, options,
                                                diagnostics);
             if (!shader) continue;
             inputs.variants += shader->variantCount();
@@ -62,18 +62,18 @@ void addBuildableCorpus(BenchInputs& inputs, uint64_t maxVariantsPerPass, unsign
         options.builtinDir = VARC_SOURCE_DIR "/shaders/builtin";
         options.includeDirs = {repositoryOf(file)};
         DiagnosticList diagnostics;
-        auto shader = compiler::loadShader(file, inputs.fileSystem, inputs.sourceMap, options,
-                                           diagnostics);
+        auto shader =
+            frontend::loadShader(file, inputs.fileSystem, inputs.sourceMap, options, diagnostics);
         if (!shader) continue;
-        std::vector<compiler::LoadedShader> one;
+        std::vector<frontend::LoadedShader> one;
         one.push_back(std::move(*shader));
-        compiler::BuildOptions build;
+        driver::BuildOptions build;
         build.jobs = jobs;
         build.maxVariantsPerPass = maxVariantsPerPass;
         // As `varc build` accepts a shader: it compiles and its stages fit together.
-        std::optional<compiler::BuildOutput> output =
-            compiler::buildPrograms(one, inputs.sourceMap, build, diagnostics);
-        if (!output || !compiler::checkStageInterfaces(one, *output, diagnostics)) continue;
+        std::optional<driver::BuildOutput> output =
+            driver::buildPrograms(one, inputs.sourceMap, build, diagnostics);
+        if (!output || !driver::checkStageInterfaces(one, *output, diagnostics)) continue;
         inputs.variants += one.front().variantCount();
         inputs.shaders.push_back(std::move(one.front()));
         ++inputs.corpusFiles;

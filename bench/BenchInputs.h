@@ -15,7 +15,7 @@ namespace varc::bench {
 struct BenchInputs {
     includes::DiskFileSystem fileSystem;
     includes::SourceMap sourceMap;
-    std::vector<compiler::LoadedShader> shaders;
+    std::vector<frontend::LoadedShader> shaders;
     uint64_t variants = 0;  // of every shader loaded
     size_t corpusFiles = 0;  // corpus files among the shaders
     bool ok = true;          // false when a fixture or library shader failed to load

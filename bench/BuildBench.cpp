@@ -17,13 +17,13 @@
 #include <thread>
 #include <vector>
 
-#include "varc/build/CompileDriver.h"
-#include "varc/build/GlslLegacyPreamble.h"
-#include "varc/build/PassDefines.h"
+#include "BenchInputs.h"
 #include "varc/core/Diagnostic.h"
+#include "varc/driver/CompileDriver.h"
+#include "varc/driver/GlslLegacyPreamble.h"
+#include "varc/driver/PassDefines.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
-#include "BenchInputs.h"
 
 namespace varc {
 namespace {
@@ -41,16 +41,16 @@ bench::BenchInputs& inputs() {
 void BM_VarcBuild(benchmark::State& state) {
     bench::BenchInputs& in = inputs();
     if (!in.ok) return state.SkipWithError("inputs failed to load");
-    compiler::BuildOptions options;
+    driver::BuildOptions options;
     options.jobs = static_cast<unsigned>(state.range(0));
     // Second argument: 1 = -O (SPIRV-Tools performance passes, the default), 0 = -O0 (no
     // optimiser: what glslangValidator -V produces, the like-for-like comparison).
-    options.optimization = state.range(1) ? compiler::OptimizationLevel::Performance
-                                          : compiler::OptimizationLevel::None;
-    std::optional<compiler::BuildOutput> output;
+    options.optimization =
+        state.range(1) ? driver::OptimizationLevel::Performance : driver::OptimizationLevel::None;
+    std::optional<driver::BuildOutput> output;
     for (auto _ : state) {
         DiagnosticList diagnostics;
-        output = compiler::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
+        output = driver::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
         if (!output) return state.SkipWithError("build failed");
     }
     state.counters["variants"] = static_cast<double>(in.variants);
@@ -72,15 +72,15 @@ BENCHMARK(BM_VarcBuild)
 
 // One glslangValidator process per (pass, variant, stage), on the same spliced source and
 // predefined macros varc uses: the start-up-bound baseline the issue measures (~110 ms each).
-bool compileWithValidator(const compiler::LoadedPass& pass,
+bool compileWithValidator(const frontend::LoadedPass& pass,
                           const std::vector<std::string>& keywords, Stage stage,
                           const std::string& entry, const std::string& dir) {
     bool glsl = pass.pass->program->language == shaderlab::ProgramLanguage::Glsl;
-    compiler::DefineContext context{pass.pass->lightMode(), pass.keywords.target,
-                                    pass.pass->program->language, stage, keywords};
-    std::string source = compiler::makePreamble(context);
+    driver::DefineContext context{pass.pass->lightMode(), pass.keywords.target,
+                                  pass.pass->program->language, stage, keywords};
+    std::string source = driver::makePreamble(context);
     if (glsl)
-        source = "#version 140\n" + source + compiler::legacyGlslPreamble(pass.source.text, stage);
+        source = "#version 140\n" + source + driver::legacyGlslPreamble(pass.source.text, stage);
     source += pass.source.text;
     std::string path = dir + (glsl ? "/program.glsl" : "/program.hlsl");
     std::ofstream(path) << source;
@@ -100,18 +100,18 @@ bool compileWithValidator(const compiler::LoadedPass& pass,
 void BM_VarcBuildWarmCache(benchmark::State& state) {
     bench::BenchInputs& in = inputs();
     if (!in.ok) return state.SkipWithError("inputs failed to load");
-    compiler::BuildOptions options;
+    driver::BuildOptions options;
     options.jobs = static_cast<unsigned>(state.range(0));
     options.cacheDirectory = std::filesystem::temp_directory_path() /
                              ("varc-bench-cache-" + std::to_string(::getpid()));
     std::filesystem::remove_all(options.cacheDirectory);
     DiagnosticList fill;
-    if (!compiler::buildPrograms(in.shaders, in.sourceMap, options, fill))
+    if (!driver::buildPrograms(in.shaders, in.sourceMap, options, fill))
         return state.SkipWithError("build failed");
-    std::optional<compiler::BuildOutput> output;
+    std::optional<driver::BuildOutput> output;
     for (auto _ : state) {
         DiagnosticList diagnostics;
-        output = compiler::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
+        output = driver::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
         if (!output) return state.SkipWithError("build failed");
     }
     std::filesystem::remove_all(options.cacheDirectory);
@@ -135,8 +135,8 @@ void BM_GlslangValidatorPerVariant(benchmark::State& state) {
     std::filesystem::create_directories(dir);
     size_t processes = 0, failures = 0;
     for (auto _ : state) {
-        for (const compiler::LoadedShader& shader : in.shaders) {
-            for (const compiler::LoadedPass& pass : shader.passes) {
+        for (const frontend::LoadedShader& shader : in.shaders) {
+            for (const frontend::LoadedPass& pass : shader.passes) {
                 bool glsl = pass.pass->program->language == shaderlab::ProgramLanguage::Glsl;
                 pass.space->forEach([&](const variants::VariantKey& key) {
                     std::vector<std::string> keywords = pass.space->table().namesOf(key);

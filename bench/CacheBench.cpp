@@ -31,11 +31,11 @@
 #include <vector>
 
 #include "BenchInputs.h"
-#include "varc/build/CompileDriver.h"
-#include "varc/build/PackAssembler.h"
-#include "varc/build/PackMerge.h"
 #include "varc/cache/CacheChain.h"
 #include "varc/core/Diagnostic.h"
+#include "varc/driver/CompileDriver.h"
+#include "varc/driver/PackAssembler.h"
+#include "varc/driver/PackMerge.h"
 #include "varc/includes/SourcePathMap.h"
 #include "varc/pack/PartialPack.h"
 #include "varc/packwriter/PackWriter.h"
@@ -116,16 +116,16 @@ void emptyCaches(const std::string& local) {
     (void)chain("")->levels()[0]->clear();
 }
 
-std::optional<compiler::BuildOutput> build(int set, const std::string& local, unsigned jobs) {
+std::optional<driver::BuildOutput> build(int set, const std::string& local, unsigned jobs) {
     bench::BenchInputs& in = inputs(set);
-    compiler::BuildOptions options;
+    driver::BuildOptions options;
     options.jobs = jobs;
     options.cache = chain(local);
     DiagnosticList diagnostics;
-    return compiler::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
+    return driver::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
 }
 
-void report(benchmark::State& state, const compiler::BuildOutput& output) {
+void report(benchmark::State& state, const driver::BuildOutput& output) {
     state.counters["compiled"] = static_cast<double>(output.compiledSources - output.cachedSources);
     state.counters["modules"] = static_cast<double>(output.programs.size());
 }
@@ -140,7 +140,7 @@ void BM_CacheBuild(benchmark::State& state) {
     const std::string local = localDir("cache-local"), fresh = localDir("cache-fresh");
     emptyCaches(local);
     if (kind != 0 && !build(set, local, jobs)) return state.SkipWithError("filling build failed");
-    std::optional<compiler::BuildOutput> output;
+    std::optional<driver::BuildOutput> output;
     for (auto _ : state) {
         state.PauseTiming();
         if (kind == 0) emptyCaches(local);
@@ -189,54 +189,54 @@ bool fail(const std::string& message) {
 // --shard`; a partial pack unless |count| is 1): the pack's bytes, or "" when the build fails.
 std::string buildPart(int set, uint32_t index, uint32_t count, unsigned jobs) {
     bench::BenchInputs& in = inputs(set);
-    compiler::BuildOptions options;
+    driver::BuildOptions options;
     options.jobs = jobs;
     options.shard = {index, count};
     DiagnosticList diagnostics;
-    std::optional<compiler::BuildOutput> output =
-        compiler::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
+    std::optional<driver::BuildOutput> output =
+        driver::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
     if (!output) return "";
-    std::optional<pack::PackContents> contents = compiler::assemblePack(
+    std::optional<pack::PackContents> contents = driver::assemblePack(
         in.shaders, *output, in.sourceMap, includes::SourcePathMap(), "bench", diagnostics);
     if (!contents) return "";
-    const compiler::PackWriteOptions write;
+    const packwriter::PackWriteOptions write;
     if (!options.shard.whole()) {
         contents->toolchain.push_back({std::string(pack::kShardTool),
                                        options.shard.text() + " level=" +
                                            std::to_string(write.compressionLevel)});
     }
-    return compiler::serializePack(*contents, write);
+    return packwriter::serializePack(*contents, write);
 }
 
 // The merge step of `varc merge`: both parts decoded, joined and written as one pack: its bytes,
 // or "" when the merge fails (printed: it would be `varc merge`'s error).
 std::string mergeParts(const std::string& first, const std::string& second) {
-    std::vector<compiler::PartialPackInput> parts;
-    runtime::OpenOptions open;
+    std::vector<driver::PartialPackInput> parts;
+    reader::OpenOptions open;
     open.acceptPartial = true;
     for (const std::string* bytes : {&first, &second}) {
-        Result<runtime::Pack> part = runtime::Pack::fromBytes(std::string_view(*bytes), open);
+        Result<reader::Pack> part = reader::Pack::fromBytes(std::string_view(*bytes), open);
         if (!part) {
             fail(part.error().detail);
             return "";
         }
-        Result<pack::PackContents> contents = runtime::decodePack(*part);
+        Result<pack::PackContents> contents = reader::decodePack(*part);
         if (!contents) {
             fail(contents.error().detail);
             return "";
         }
         parts.push_back({"part", std::move(*contents)});
     }
-    Result<compiler::MergedPack> merged = compiler::mergePartialPacks(std::move(parts));
+    Result<driver::MergedPack> merged = driver::mergePartialPacks(std::move(parts));
     if (!merged) {
         fail(merged.error().detail);
         return "";
     }
     for (const std::string& error : merged->errors) fail(error);
     if (!merged->errors.empty()) return "";
-    compiler::PackWriteOptions write;
+    packwriter::PackWriteOptions write;
     write.compressionLevel = merged->compressionLevel;
-    return compiler::serializePack(merged->contents, write);
+    return packwriter::serializePack(merged->contents, write);
 }
 
 // Kind 4: two shards and the merge; the time is the slower shard plus the merge. The same

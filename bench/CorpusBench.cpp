@@ -20,14 +20,14 @@
 #include <tuple>
 #include <vector>
 
-#include "varc/build/CompileDriver.h"
-#include "varc/build/GlslLegacyPreamble.h"
-#include "varc/build/ObservedDefines.h"
-#include "varc/build/PassDefines.h"
+#include "BenchInputs.h"
 #include "varc/core/Diagnostic.h"
+#include "varc/driver/CompileDriver.h"
+#include "varc/driver/GlslLegacyPreamble.h"
+#include "varc/driver/ObservedDefines.h"
+#include "varc/driver/PassDefines.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
-#include "BenchInputs.h"
 
 namespace varc {
 namespace {
@@ -47,12 +47,12 @@ bench::BenchInputs& corpus() {
 void BM_VarcCorpusBuild(benchmark::State& state) {
     bench::BenchInputs& in = corpus();
     if (in.shaders.empty()) return state.SkipWithError("no corpus (../shared/compat) shader built");
-    compiler::BuildOptions options;
+    driver::BuildOptions options;
     options.jobs = static_cast<unsigned>(state.range(0));
-    std::optional<compiler::BuildOutput> output;
+    std::optional<driver::BuildOutput> output;
     for (auto _ : state) {
         DiagnosticList diagnostics;
-        output = compiler::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
+        output = driver::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
         if (!output) return state.SkipWithError("build failed");
     }
     state.counters["files"] = static_cast<double>(in.corpusFiles);
@@ -90,9 +90,9 @@ struct ValidatorProgram {
     }
 };
 
-void collectPrograms(const compiler::LoadedPass& pass, std::set<ValidatorProgram>& programs) {
+void collectPrograms(const frontend::LoadedPass& pass, std::set<ValidatorProgram>& programs) {
     bool glsl = pass.pass->program->language == shaderlab::ProgramLanguage::Glsl;
-    compiler::ObservedNames observed(pass.source.text);
+    driver::ObservedNames observed(pass.source.text);
     std::vector<std::pair<Stage, std::string>> stages = {
         {Stage::Vertex, pass.keywords.vertexEntry}, {Stage::Fragment, pass.keywords.fragmentEntry}};
     if (!pass.keywords.geometryEntry.empty()) stages.push_back({Stage::Geometry, pass.keywords.geometryEntry});
@@ -101,13 +101,13 @@ void collectPrograms(const compiler::LoadedPass& pass, std::set<ValidatorProgram
     pass.space->forEach([&](const variants::VariantKey& key) {
         std::vector<std::string> keywords = pass.space->table().namesOf(key);
         for (const auto& [stage, entry] : stages) {
-            compiler::DefineContext context{pass.pass->lightMode(), pass.keywords.target,
-                                            pass.pass->program->language, stage, keywords};
+            driver::DefineContext context{pass.pass->lightMode(), pass.keywords.target,
+                                          pass.pass->program->language, stage, keywords};
             std::string source =
-                compiler::dropUnobservedDefines(compiler::makePreamble(context), observed);
+                driver::dropUnobservedDefines(driver::makePreamble(context), observed);
             if (glsl) {
-                source = "#version 140\n" + source +
-                         compiler::legacyGlslPreamble(pass.source.text, stage);
+                source =
+                    "#version 140\n" + source + driver::legacyGlslPreamble(pass.source.text, stage);
             }
             programs.insert({stage, glsl, glsl ? "main" : entry, source + pass.source.text});
         }
@@ -119,8 +119,8 @@ void BM_GlslangValidatorPerDistinctProgram(benchmark::State& state) {
     bench::BenchInputs& in = corpus();
     if (in.shaders.empty()) return state.SkipWithError("no corpus (../shared/compat) shader built");
     std::set<ValidatorProgram> programs;
-    for (const compiler::LoadedShader& shader : in.shaders) {
-        for (const compiler::LoadedPass& pass : shader.passes) collectPrograms(pass, programs);
+    for (const frontend::LoadedShader& shader : in.shaders) {
+        for (const frontend::LoadedPass& pass : shader.passes) collectPrograms(pass, programs);
     }
     std::string dir = std::filesystem::temp_directory_path() /
                       ("varc-bench-corpus-" + std::to_string(::getpid()));

@@ -50,7 +50,7 @@ struct Synthetic {
     std::string bytes;
     std::string path;
     uint64_t rawVariantBytes = 0;  // sum over variants of their stages' SPIR-V
-    compiler::PackWriteStats stats;
+    packwriter::PackWriteStats stats;
     double serializeSeconds = 0;
     std::vector<variants::VariantKey> hits;    // random existing keys
     std::vector<variants::VariantKey> misses;  // keys with K00 & K01 & K02
@@ -98,11 +98,11 @@ const Synthetic& synthetic() {
         }
         s.contents.shaders.push_back({"Bench/Synthetic", {syntheticPass(s)}, {}});
         auto start = std::chrono::steady_clock::now();
-        s.bytes = compiler::serializePack(s.contents, {}, &s.stats);
+        s.bytes = packwriter::serializePack(s.contents, {}, &s.stats);
         s.serializeSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         s.path = (std::filesystem::temp_directory_path() / "varc_pack_bench.vpk").string();
-        if (!compiler::writePack(s.path, s.contents).ok()) std::abort();
+        if (!packwriter::writePack(s.path, s.contents).ok()) std::abort();
         std::mt19937_64 rng(42);
         const auto& variants = s.contents.shaders[0].passes[0].variants;
         for (int i = 0; i < 4096; ++i) {
@@ -116,10 +116,10 @@ const Synthetic& synthetic() {
     return instance;
 }
 
-runtime::Pack openSynthetic(bool indexKeys = true) {
-    runtime::OpenOptions options;
+reader::Pack openSynthetic(bool indexKeys = true) {
+    reader::OpenOptions options;
     options.indexKeys = indexKeys;
-    Result<runtime::Pack> pack = runtime::Pack::open(synthetic().path, options);
+    Result<reader::Pack> pack = reader::Pack::open(synthetic().path, options);
     if (!pack.ok()) std::abort();
     return std::move(*pack);
 }
@@ -142,11 +142,11 @@ BENCHMARK(BM_PackBytes)->Iterations(1);
 
 void lookupLoop(benchmark::State& state, const std::vector<variants::VariantKey>& keys,
                 SelectionPolicy policy, bool indexKeys = true) {
-    runtime::Pack pack = openSynthetic(indexKeys);
-    runtime::PassView pass = *pack.shader(0).pass(0);
+    reader::Pack pack = openSynthetic(indexKeys);
+    reader::PassView pass = *pack.shader(0).pass(0);
     size_t i = 0;
     for (auto _ : state) {
-        Result<runtime::VariantView> found = pass.lookup(keys[i++ & 4095], policy);
+        Result<reader::VariantView> found = pass.lookup(keys[i++ & 4095], policy);
         benchmark::DoNotOptimize(found.ok());
     }
 }
@@ -174,8 +174,8 @@ void BM_PackLookupClosestMiss(benchmark::State& state) {
 BENCHMARK(BM_PackLookupClosestMiss)->Unit(benchmark::kMicrosecond);
 
 void BM_PackLookupByNames(benchmark::State& state) {
-    runtime::Pack pack = openSynthetic();
-    runtime::PassView pass = *pack.shader(0).pass(0);
+    reader::Pack pack = openSynthetic();
+    reader::PassView pass = *pack.shader(0).pass(0);
     std::vector<std::string_view> names = {"K03", "K07", "K11", "K16"};
     for (auto _ : state) {
         benchmark::DoNotOptimize(pass.lookup(names, SelectionPolicy::Exact).ok());
@@ -185,9 +185,9 @@ BENCHMARK(BM_PackLookupByNames);
 
 void BM_PackOpen(benchmark::State& state) {
     synthetic();
-    runtime::OpenOptions options{.verifyChecksums = state.range(0) != 0};
+    reader::OpenOptions options{.verifyChecksums = state.range(0) != 0};
     for (auto _ : state) {
-        Result<runtime::Pack> pack = runtime::Pack::open(synthetic().path, options);
+        Result<reader::Pack> pack = reader::Pack::open(synthetic().path, options);
         benchmark::DoNotOptimize(pack.ok());
     }
     state.SetLabel(options.verifyChecksums ? "checksums" : "no checksums");
@@ -197,7 +197,7 @@ BENCHMARK(BM_PackOpen)->Arg(1)->Arg(0)->Unit(benchmark::kMicrosecond);
 // First access decompresses; the benchmark reopens the pack every 600 iterations so that it
 // measures decompression of each distinct blob.
 void BM_PackSpirvFirstAccess(benchmark::State& state) {
-    std::optional<runtime::Pack> pack;
+    std::optional<reader::Pack> pack;
     size_t i = 0;
     for (auto _ : state) {
         if (i % 600 == 0) {

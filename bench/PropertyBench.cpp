@@ -16,7 +16,7 @@
 #include "varc/render/SceneRenderer.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 constexpr const char* kPack = VARC_BINARY_DIR "/tests/vulkan/packs/library.svpack";
@@ -37,8 +37,8 @@ void chooseMesaCache(bool cold) {
 struct RunCounts {
     size_t shaders = 0, renders = 0, failed = 0;
 };
-std::optional<RunCounts> validateLibrary(const Pack& pack, std::string& error) {
-    auto context = VulkanContext::create();
+std::optional<RunCounts> validateLibrary(const reader::Pack& pack, std::string& error) {
+    auto context = vulkan::VulkanContext::create();
     if (!context) {
         error = "no Vulkan device";
         return std::nullopt;
@@ -52,7 +52,7 @@ std::optional<RunCounts> validateLibrary(const Pack& pack, std::string& error) {
     options.outDir = kOut;
     properties::PropertyRunner runner(*renderer, options);
     RunCounts counts;
-    for (const ShaderView& shader : properties::lightingShaders({&pack})) {
+    for (const reader::ShaderView& shader : properties::lightingShaders({&pack})) {
         properties::ShaderReport report = runner.check(shader);
         ++counts.shaders;
         counts.renders += report.renders;
@@ -64,7 +64,7 @@ std::optional<RunCounts> validateLibrary(const Pack& pack, std::string& error) {
 void BM_PropertyValidationOfTheLibrary(benchmark::State& state) {
     const bool cold = state.range(0) == 0;
     state.SetLabel(cold ? "cold Mesa cache" : "warm Mesa cache");
-    auto pack = Pack::open(kPack);
+    auto pack = reader::Pack::open(kPack);
     if (!pack) return state.SkipWithError("test pack missing: run ctest -R vulkan.build_packs");
     chooseMesaCache(cold);
     std::string error;
@@ -87,4 +87,4 @@ BENCHMARK(BM_PropertyValidationOfTheLibrary)
     ->UseRealTime();
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -24,21 +24,21 @@
 #include "varc/vulkan/RenderTarget.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 constexpr const char* kPack = VARC_BINARY_DIR "/tests/vulkan/packs/library.svpack";
 constexpr const char* kMesaCache = VARC_BINARY_DIR "/bench-mesa-cache";
 
 // A fresh context per run: Mesa reads MESA_SHADER_CACHE_DISABLE when the device is created.
-std::optional<VulkanContext> makeContext(bool cold) {
+std::optional<vulkan::VulkanContext> makeContext(bool cold) {
     if (cold) {
         setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
     } else {
         unsetenv("MESA_SHADER_CACHE_DISABLE");
         setenv("MESA_SHADER_CACHE_DIR", kMesaCache, 1);
     }
-    auto context = VulkanContext::create();
+    auto context = vulkan::VulkanContext::create();
     if (!context) return std::nullopt;
     return std::move(*context);
 }
@@ -47,13 +47,13 @@ std::optional<VulkanContext> makeContext(bool cold) {
 // a single empty-vertex draw through it, which makes lavapipe compile the shaders.
 void BM_PipelinePlusFirstDraw(benchmark::State& state) {
     bool cold = state.range(0) == 0;
-    auto pack = Pack::open(kPack);
+    auto pack = reader::Pack::open(kPack);
     if (!pack) return state.SkipWithError("test pack missing: run ctest -R vulkan.build_packs");
-    std::optional<VulkanContext> context = makeContext(cold);
+    std::optional<vulkan::VulkanContext> context = makeContext(cold);
     if (!context) return state.SkipWithError("no Vulkan device");
-    RenderTargetDesc desc;
+    vulkan::RenderTargetDesc desc;
     desc.width = desc.height = 64;
-    auto target = RenderTarget::create(*context, desc);
+    auto target = vulkan::RenderTarget::create(*context, desc);
     auto resources = DrawResources::create(*context, 1u << 20, 64);
     if (!target || !resources) return state.SkipWithError("target or resources failed");
     ShaderValues none;
@@ -63,15 +63,15 @@ void BM_PipelinePlusFirstDraw(benchmark::State& state) {
     size_t variants = 0;
     for (auto _ : state) {
         for (size_t p = 0; p < shader->passCount(); ++p) {
-            PassView pass = *shader->pass(p);
+            reader::PassView pass = *shader->pass(p);
             for (size_t v = 0; v < pass.variantCount(); ++v) {
                 auto pipeline = VariantPipeline::create(
                     *context, pass.variant(v), resolveRenderState(pass.renderState(), none),
-                    {target->renderPass(LoadOp::Clear), true, 1});
+                    {target->renderPass(vulkan::LoadOp::Clear), true, 1});
                 if (!pipeline) return state.SkipWithError(pipeline.error().detail.c_str());
                 Status ok = Ok{};
                 Status drawn = context->submitAndWait([&](VkCommandBuffer commands) {
-                    target->begin(commands, LoadOp::Clear);
+                    target->begin(commands, vulkan::LoadOp::Clear);
                     VkViewport viewport = target->viewport();
                     VkRect2D area = target->area();
                     vkCmdSetViewport(commands, 0, 1, &viewport);
@@ -116,9 +116,9 @@ void BM_ForwardSceneFrame(benchmark::State& state) {
     auto index = static_cast<size_t>(state.range(0));
     if (index >= scenes.size()) return state.SkipWithError("no such scene");
     state.SetLabel(std::filesystem::path(scenes[index]).stem().string());
-    auto pack = Pack::open(kPack);
+    auto pack = reader::Pack::open(kPack);
     if (!pack) return state.SkipWithError("test pack missing: run ctest -R vulkan.build_packs");
-    std::optional<VulkanContext> context = makeContext(false);
+    std::optional<vulkan::VulkanContext> context = makeContext(false);
     if (!context) return state.SkipWithError("no Vulkan device");
     auto renderer = ForwardRenderer::create(*context, {&*pack});
     auto scene = scene::loadScene(scenes[index]);
@@ -151,9 +151,9 @@ void BM_ShadowedFrame(benchmark::State& state) {
     }
     const char* names[] = {"none", "hard", "soft"};
     state.SetLabel(std::string(point ? "point" : "spot") + " shadows " + names[state.range(1)]);
-    auto pack = Pack::open(kPack);
+    auto pack = reader::Pack::open(kPack);
     if (!pack) return state.SkipWithError("test pack missing: run ctest -R vulkan.build_packs");
-    std::optional<VulkanContext> context = makeContext(false);
+    std::optional<vulkan::VulkanContext> context = makeContext(false);
     if (!context) return state.SkipWithError("no Vulkan device");
     auto renderer = ForwardRenderer::create(*context, {&*pack});
     if (!renderer) return state.SkipWithError(renderer.error().detail.c_str());
@@ -172,4 +172,4 @@ BENCHMARK(BM_ShadowedFrame)
     ->UseRealTime();
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

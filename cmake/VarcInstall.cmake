@@ -45,7 +45,7 @@ configure_file("${PROJECT_SOURCE_DIR}/cmake/varc.pc.in" "${PROJECT_BINARY_DIR}/v
 install(FILES "${PROJECT_BINARY_DIR}/varc.pc" DESTINATION ${_pcdir})
 
 # Data: the built-in includes and fallback shaders the compiler needs (found from the installed
-# binary, see compiler/cli), the shaders the runtime draws itself, the man page, the bash
+# binary, see cli), the shaders the runtime draws itself, the man page, the bash
 # completion and the documentation.
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/shaders/builtin" "${PROJECT_SOURCE_DIR}/shaders/internal"
         DESTINATION ${CMAKE_INSTALL_DATADIR}/varc)

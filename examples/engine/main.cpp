@@ -55,15 +55,15 @@ varc::variants::LightDescription describeLight(const varc::scene::Light& light, 
 
 // The variant the ForwardBase pass of the first object's shader draws the scene's first light
 // with: the lookup an engine does per object and light, without any Vulkan.
-Result<varc::runtime::VariantView> lookUpMainVariant(const varc::runtime::Pack& pack,
-                                                     const varc::scene::Scene& scene) {
+Result<varc::reader::VariantView> lookUpMainVariant(const varc::reader::Pack& pack,
+                                                    const varc::scene::Scene& scene) {
     using varc::ErrorCode;
     if (scene.objects.empty() || scene.lights.empty())
         return varc::makeError(ErrorCode::InvalidInput, "the scene needs an object and a light");
     const std::string& shaderName = scene.objects.front().material.shader;
-    std::optional<varc::runtime::ShaderView> shader = pack.findShader(shaderName);
+    std::optional<varc::reader::ShaderView> shader = pack.findShader(shaderName);
     if (!shader) return varc::makeError(ErrorCode::NotFound, "no shader '" + shaderName + "'");
-    std::optional<varc::runtime::PassView> pass = shader->pass("ForwardBase");
+    std::optional<varc::reader::PassView> pass = shader->pass("ForwardBase");
     if (!pass) return varc::makeError(ErrorCode::NotFound, shaderName + " has no ForwardBase pass");
     return pass->lookup(describeLight(scene.lights.front(), scene.camera.hdr),
                         varc::variants::SelectionPolicy::Closest);
@@ -71,17 +71,17 @@ Result<varc::runtime::VariantView> lookUpMainVariant(const varc::runtime::Pack& 
 
 // A graphics pipeline for |variant| and an offscreen target of the scene's size: SPIR-V from the
 // pack, descriptor layouts from its reflection, the pass's render state.
-Status createPipeline(varc::runtime::VulkanContext& context,
-                      const varc::runtime::VariantView& variant, const varc::scene::Scene& scene) {
-    varc::runtime::RenderTargetDesc desc;
+Status createPipeline(varc::vulkan::VulkanContext& context,
+                      const varc::reader::VariantView& variant, const varc::scene::Scene& scene) {
+    varc::vulkan::RenderTargetDesc desc;
     desc.width = scene.camera.width;
     desc.height = scene.camera.height;
-    auto target = varc::runtime::RenderTarget::create(context, desc);
+    auto target = varc::vulkan::RenderTarget::create(context, desc);
     if (!target) return target.error();
-    varc::runtime::ShaderValues material;  // no properties: the state's defaults
-    auto state = varc::runtime::resolveRenderState(variant.renderState(), material);
+    varc::render::ShaderValues material;  // no properties: the state's defaults
+    auto state = varc::render::resolveRenderState(variant.renderState(), material);
     auto pipeline =
-        varc::runtime::VariantPipeline::create(context, variant, state, {target->renderPass()});
+        varc::render::VariantPipeline::create(context, variant, state, {target->renderPass()});
     if (!pipeline) return pipeline.error();
     std::cout << "pipeline: " << pipeline->description() << "\n";
     return varc::Ok{};
@@ -89,18 +89,18 @@ Status createPipeline(varc::runtime::VulkanContext& context,
 
 // Draws the whole scene (every object, every light, as Unity's forward, deferred or single-pass
 // path does; the renderer looks each variant up as above) and writes the frame to |pngPath|.
-Status drawFrame(varc::runtime::VulkanContext& context, const varc::runtime::Pack& pack,
+Status drawFrame(varc::vulkan::VulkanContext& context, const varc::reader::Pack& pack,
                  const varc::scene::Scene& scene, const std::string& pngPath) {
-    auto renderer = varc::runtime::SceneRenderer::create(context, {&pack});
+    auto renderer = varc::render::SceneRenderer::create(context, {&pack});
     if (!renderer) return renderer.error();
     auto frame = renderer->render(scene);
     if (!frame) return frame.error();
     std::cout << "frame: " << frame->draws << " draws\n";
     // HDR frames are floats: tone-mapped as `varc render` does.
-    varc::runtime::Image image = frame->image.isFloat()
-                                     ? frame->image.toRgba8(varc::runtime::Tonemap::Reinhard)
-                                     : frame->image;
-    return varc::runtime::writePng(pngPath, image);
+    varc::image::Image image = frame->image.isFloat()
+                                   ? frame->image.toRgba8(varc::image::Tonemap::Reinhard)
+                                   : frame->image;
+    return varc::image::writePng(pngPath, image);
 }
 
 }  // namespace
@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
         std::cerr << "usage: varc_engine PACK SCENE.json OUT.png\n";
         return 2;
     }
-    auto pack = varc::runtime::Pack::open(argv[1]);
+    auto pack = varc::reader::Pack::open(argv[1]);
     if (!pack) return fail(pack.error().detail);
     auto scene = varc::scene::loadScene(argv[2]);
     if (!scene) return fail(scene.error().detail);
@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
     if (!variant) return fail(variant.error().detail);
     std::cout << "variant: " << variant->describe() << "\n";
 
-    auto context = varc::runtime::VulkanContext::create();  // lavapipe unless told otherwise
+    auto context = varc::vulkan::VulkanContext::create();  // lavapipe unless told otherwise
     if (!context) return fail(context.error().detail);
     std::cout << "device: " << context->deviceName() << "\n";
     if (Status created = createPipeline(*context, *variant, *scene); !created)

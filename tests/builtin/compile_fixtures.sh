@@ -6,7 +6,7 @@
 #   CG/HLSL: HLSL front end, DX9-compatible samplers, auto-mapped bindings and locations,
 #            Vulkan 1.0 / SPIR-V 1.0, Unity's predefined macros and the variant's keywords.
 #   GLSL:    #version 140 with glslang's relaxed Vulkan rules (-R) and the legacy built-in
-#            mapping of compiler/build/src/GlslLegacyPreamble.cpp (gl_Vertex -> varc_Vertex, ...).
+#            mapping of compiler/driver/src/GlslLegacyPreamble.cpp (gl_Vertex -> varc_Vertex, ...).
 # Usage: compile_fixtures.sh [FIXTURES_DIR [BUILTIN_DIR]]
 # Exit: 0 all compiled and validated; 1 a compile/validation failure (compiler output printed);
 #       77 glslangValidator or spirv-val is not installed (CTest reports the test as skipped).

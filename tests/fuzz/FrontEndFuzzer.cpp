@@ -3,8 +3,8 @@
 // FuzzInput.h) is loaded, and when it has few variants every variant of every pass is
 // preprocessed, pruned and compiled (HLSL or GLSL, every stage it declares) and optimised.
 #include "FuzzInput.h"
-#include "varc/build/CompileDriver.h"
 #include "varc/core/Diagnostic.h"
+#include "varc/driver/CompileDriver.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
 #include "varc/includes/SourceMap.h"
@@ -42,12 +42,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     varc::DiagnosticList sink;
     varc::includes::IncludeOptions includes;
     includes.builtinDir = VARC_BUILTIN_DIR;
-    auto shader = varc::compiler::loadShader("fuzz.shader", fileSystem, map, includes, sink);
+    auto shader = varc::frontend::loadShader("fuzz.shader", fileSystem, map, includes, sink);
     if (!shader || shader->variantCount() > 8) return 0;
-    std::vector<varc::compiler::LoadedShader> shaders;
+    std::vector<varc::frontend::LoadedShader> shaders;
     shaders.push_back(std::move(*shader));
-    varc::compiler::BuildOptions build;
+    varc::driver::BuildOptions build;
     build.jobs = 1;
-    (void)varc::compiler::buildPrograms(shaders, map, build, sink);
+    (void)varc::driver::buildPrograms(shaders, map, build, sink);
     return 0;
 }

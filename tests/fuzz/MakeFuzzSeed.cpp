@@ -13,14 +13,14 @@ int main(int argc, char** argv) {
     }
     varc::pack::PackContents contents = varc::packtest::makeSampleContents();
     const std::string dir = argv[1];
-    using varc::compiler::PackDictionary;
-    bool ok = varc::compiler::writePack(dir + "/sample-dict.vpk", contents,
-                                        {.dictionary = PackDictionary::Always})
+    using varc::packwriter::PackDictionary;
+    bool ok = varc::packwriter::writePack(dir + "/sample-dict.vpk", contents,
+                                          {.dictionary = PackDictionary::Always})
                   .ok() &&
-              varc::compiler::writePack(dir + "/sample-plain.vpk", contents,
-                                        {.dictionary = PackDictionary::Never})
+              varc::packwriter::writePack(dir + "/sample-plain.vpk", contents,
+                                          {.dictionary = PackDictionary::Never})
                   .ok() &&
-              varc::compiler::writePack(dir + "/empty.vpk", varc::pack::PackContents{}).ok();
+              varc::packwriter::writePack(dir + "/empty.vpk", varc::pack::PackContents{}).ok();
     if (!ok) std::fprintf(stderr, "cannot write seeds to %s\n", dir.c_str());
     return ok ? 0 : 1;
 }

@@ -12,16 +12,16 @@
 
 namespace {
 
-using varc::runtime::Pack;
+using varc::reader::Pack;
 
 // Uses every accessor of an accepted pack, so that a structural hole shows up as a crash.
 void exercise(const Pack& pack) {
     for (size_t s = 0; s < pack.shaderCount(); ++s) {
-        varc::runtime::ShaderView shader = pack.shader(s);
+        varc::reader::ShaderView shader = pack.shader(s);
         (void)pack.findShader(shader.name());
         (void)shader.pass("ForwardBase");
         for (size_t p = 0; p < shader.passCount(); ++p) {
-            varc::runtime::PassView pass = *shader.pass(p);
+            varc::reader::PassView pass = *shader.pass(p);
             (void)pass.renderState();
             (void)pass.describe();
             for (auto policy :
@@ -32,14 +32,14 @@ void exercise(const Pack& pack) {
                 (void)pass.lookup(varc::variants::LightDescription{}, policy);
             }
             for (size_t v = 0; v < pass.variantCount(); ++v) {
-                varc::runtime::VariantView variant = pass.variant(v);
+                varc::reader::VariantView variant = pass.variant(v);
                 (void)variant.describe();
                 (void)variant.spirv(varc::Stage::Vertex);
             }
         }
     }
     for (size_t i = 0; i < pack.programCount(); ++i) (void)pack.program(i).describe();
-    (void)varc::runtime::decodePack(pack);
+    (void)varc::reader::decodePack(pack);
 }
 
 }  // namespace

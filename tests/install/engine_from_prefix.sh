@@ -66,7 +66,7 @@ cat > "$tmp/count.cpp" <<'CPP'
 #include <iostream>
 #include "varc/reader/Pack.h"
 int main(int, char** argv) {
-    auto pack = varc::runtime::Pack::open(argv[1]);
+    auto pack = varc::reader::Pack::open(argv[1]);
     if (!pack) return 1;
     std::cout << pack->shaderCount() << "\n";
 }

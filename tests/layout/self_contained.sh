@@ -7,8 +7,9 @@
 set -u
 cd "$1" || exit 1
 pattern='unity-keywords\.md|unity-keywords §|unity-shadows\.md|peers\.md|style\.md|shared/reference'
-hits=$(grep -rInE "$pattern" --exclude-dir='.git' --exclude-dir='build*' --exclude-dir='out' \
-           --exclude='self_contained.sh' . || true)
+# Every tracked file (git ls-files), so no folder is skipped; build trees are untracked.
+hits=$(git ls-files -z | grep -zv '^tests/layout/self_contained.sh$' |
+           xargs -0 grep -InE "$pattern" -- 2>/dev/null || true)
 if [ -n "$hits" ]; then
     echo "citations of documents outside the repository (write the fact in docs/ and cite that):"
     echo "$hits"

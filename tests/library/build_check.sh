@@ -3,7 +3,7 @@
 # Builds shaders into a pack with `varc build` exactly as a user would: no -I flags and no
 # VARC_BUILTIN_INCLUDE_DIR, so includes of Unity's built-in files (UnityCG.cginc, AutoLight.cginc,
 # ...) must come from varc's own built-in directory. `varc build` compiles every variant and
-# validates every SPIR-V module with SPIRV-Tools (compiler/build/src/CompileDriver.cpp,
+# validates every SPIR-V module with SPIRV-Tools (compiler/driver/src/CompileDriver.cpp,
 # Builder::compileSource -> validateSpirv); an invalid module fails the build.
 # Then checks the result against `varc variants`, twice:
 #   * the build summary: the per-pass counts of `varc build --json` add up to the total of

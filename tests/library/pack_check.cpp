@@ -23,7 +23,7 @@ using varc::Stage;
 
 // Validates |view|'s program for |stage| unless already seen; returns false on a missing or
 // invalid program, after printing why.
-bool checkStage(const varc::runtime::VariantView& view, Stage stage, spvtools::SpirvTools& tools,
+bool checkStage(const varc::reader::VariantView& view, Stage stage, spvtools::SpirvTools& tools,
                 std::set<size_t>& validated, std::string& log) {
     auto program = view.program(stage);
     if (!program) {
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: %s PACK\n", argv[0]);
         return 2;
     }
-    auto pack = varc::runtime::Pack::open(argv[1]);
+    auto pack = varc::reader::Pack::open(argv[1]);
     if (!pack) {
         std::printf("FAIL: %s\n", pack.error().detail.c_str());
         return 2;
@@ -67,12 +67,12 @@ int main(int argc, char** argv) {
     size_t variants = 0;
     bool ok = true;
     for (size_t s = 0; s < pack->shaderCount(); ++s) {
-        varc::runtime::ShaderView shader = pack->shader(s);
+        varc::reader::ShaderView shader = pack->shader(s);
         for (size_t p = 0; p < shader.passCount(); ++p) {
             auto pass = shader.pass(p);
             if (!pass) continue;
             for (size_t v = 0; v < pass->variantCount(); ++v) {
-                varc::runtime::VariantView view = pass->variant(v);
+                varc::reader::VariantView view = pass->variant(v);
                 ok = checkStage(view, Stage::Vertex, tools, validated, log) && ok;
                 ok = checkStage(view, Stage::Fragment, tools, validated, log) && ok;
             }

@@ -25,7 +25,7 @@
 #include "varc/vulkan/Buffer.h"
 #include "varc/vulkan/RenderTarget.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 constexpr uint32_t kSize = 48;
@@ -62,13 +62,13 @@ protected:
     void SetUp() override {
         VulkanTest::SetUp();
         if (HasFatalFailure()) return;
-        auto pack = Pack::open(VARC_TEST_PACK_DIR "/helpers.svpack");
+        auto pack = reader::Pack::open(VARC_TEST_PACK_DIR "/helpers.svpack");
         ASSERT_TRUE(pack) << pack.error().detail;
         mPack.emplace(std::move(*pack));
-        RenderTargetDesc desc;
+        vulkan::RenderTargetDesc desc;
         desc.width = desc.height = kSize;
-        desc.color = ColorFormat::Rgba32Float;
-        auto target = RenderTarget::create(context(), desc);
+        desc.color = vulkan::ColorFormat::Rgba32Float;
+        auto target = vulkan::RenderTarget::create(context(), desc);
         ASSERT_TRUE(target) << target.error().detail;
         mTarget.emplace(std::move(*target));
         auto textures = BuiltinTextures::create(context());
@@ -78,8 +78,8 @@ protected:
         ASSERT_TRUE(resources) << resources.error().detail;
         mResources.emplace(std::move(*resources));
         std::vector<MeshVertex> quad = fullQuad();
-        auto vertices = Buffer::createWithData(context(), std::as_bytes(std::span(quad)),
-                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+        auto vertices = vulkan::Buffer::createWithData(context(), std::as_bytes(std::span(quad)),
+                                                       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
         ASSERT_TRUE(vertices) << vertices.error().detail;
         mQuad.emplace(std::move(*vertices));
     }
@@ -92,15 +92,15 @@ protected:
     }
 
     // Draws the variant with |keywords| and returns the float image.
-    Image run(const std::vector<std::string>& keywords, const ShaderValues& values,
-              const scene::Light* light) {
-        PassView pass = *mPack->findShader("Test/BuiltinHelpers")->pass(0);
+    image::Image run(const std::vector<std::string>& keywords, const ShaderValues& values,
+                     const scene::Light* light) {
+        reader::PassView pass = *mPack->findShader("Test/BuiltinHelpers")->pass(0);
         auto variant = pass.lookup(keywords, variants::SelectionPolicy::Exact);
         EXPECT_TRUE(variant) << variant.error().detail;
         if (!variant) return {};
-        auto pipeline = VariantPipeline::create(context(), *variant,
-                                                resolveRenderState(pass.renderState(), values),
-                                                {mTarget->renderPass(LoadOp::Clear), true, 1});
+        auto pipeline = VariantPipeline::create(
+            context(), *variant, resolveRenderState(pass.renderState(), values),
+            {mTarget->renderPass(vulkan::LoadOp::Clear), true, 1});
         EXPECT_TRUE(pipeline) << pipeline.error().detail;
         if (!pipeline) return {};
         const BuiltinTextures& builtin = *mTextures;
@@ -114,7 +114,7 @@ protected:
         const ShaderValues* layers[] = {&values};
         Status bound = Ok{};
         Status submitted = context().submitAndWait([&](VkCommandBuffer commands) {
-            mTarget->begin(commands, LoadOp::Clear);
+            mTarget->begin(commands, vulkan::LoadOp::Clear);
             VkViewport viewport = mTarget->viewport();
             VkRect2D area = mTarget->area();
             vkCmdSetViewport(commands, 0, 1, &viewport);
@@ -132,13 +132,14 @@ protected:
         EXPECT_TRUE(mResources->reset());
         auto image = mTarget->readback(context());
         EXPECT_TRUE(image) << image.error().detail;
-        return image ? std::move(*image) : Image{};
+        return image ? std::move(*image) : image::Image{};
     }
 
     // Compares every pixel's rgb (or only r when |channels| is 1) with |expected|(uv) within
     // |absolute| + |relative|·|expected|; reports the worst pixel.
-    void expectMatches(const Image& image, const std::function<glm::vec3(glm::vec2)>& expected,
-                       float absolute, float relative, int channels = 3) {
+    void expectMatches(const image::Image& image,
+                       const std::function<glm::vec3(glm::vec2)>& expected, float absolute,
+                       float relative, int channels = 3) {
         ASSERT_EQ(image.width(), kSize);
         float worst = 0;
         std::string where;
@@ -174,11 +175,11 @@ protected:
         return values;
     }
 
-    std::optional<Pack> mPack;
-    std::optional<RenderTarget> mTarget;
+    std::optional<reader::Pack> mPack;
+    std::optional<vulkan::RenderTarget> mTarget;
     std::optional<BuiltinTextures> mTextures;
     std::optional<DrawResources> mResources;
-    std::optional<Buffer> mQuad;
+    std::optional<vulkan::Buffer> mQuad;
 };
 
 scene::Light makeLight(scene::LightType type, const std::string& cookie) {
@@ -249,7 +250,7 @@ TEST_F(BuiltinHelpersTest, LightAttenuationMatchesPerLightType) {
         values.merge(boxValues());
         auto passLight = reference::passLightFor(light);
         ASSERT_TRUE(passLight) << passLight.error().detail;
-        Image image = run({"HELPER_ATTENUATION", c.keyword}, values, &light);
+        image::Image image = run({"HELPER_ATTENUATION", c.keyword}, values, &light);
         expectMatches(
             image,
             [&](glm::vec2 uv) {
@@ -283,7 +284,7 @@ TEST_F(BuiltinHelpersTest, Shade4PointLightsMatches) {
     std::vector<glm::vec4> lightColors(8, glm::vec4(0.0f));
     for (size_t i = 0; i < 4; ++i) lightColors[i] = glm::vec4(lights.colors[i], 1.0f);
     values.setArray("unity_LightColor", lightColors);
-    Image image = run({"HELPER_SHADE4", "POINT"}, values, nullptr);
+    image::Image image = run({"HELPER_SHADE4", "POINT"}, values, nullptr);
     expectMatches(
         image,
         [&](glm::vec2 uv) {
@@ -307,7 +308,7 @@ TEST_F(BuiltinHelpersTest, ShadeSH9Matches) {
     const char* names[] = {"unity_SHAr", "unity_SHAg", "unity_SHAb", "unity_SHBr",
                            "unity_SHBg", "unity_SHBb", "unity_SHC"};
     for (size_t i = 0; i < sh.size(); ++i) values.set(names[i], sh[i]);
-    Image image = run({"HELPER_SH9", "POINT"}, values, nullptr);
+    image::Image image = run({"HELPER_SH9", "POINT"}, values, nullptr);
     expectMatches(
         image, [&](glm::vec2 uv) { return scene::shadeSH9(sh, sphereNormal(uv)); }, 1e-4f, 1e-4f);
 }
@@ -327,7 +328,7 @@ TEST_F(BuiltinHelpersTest, PhysicallyBasedBrdfMatches) {
             values.set("_ViewDir", viewDirection, 0.0f);
             values.set("_LightColor0", lightColor, 1.0f);
             values.set("_WorldSpaceLightPos0", lightDirection, 0.0f);
-            Image image = run({"HELPER_BRDF", "POINT"}, values, nullptr);
+            image::Image image = run({"HELPER_BRDF", "POINT"}, values, nullptr);
             reference::SurfaceColors surface =
                 reference::diffuseAndSpecularFromMetallic(albedo, metallic);
             expectMatches(
@@ -343,4 +344,4 @@ TEST_F(BuiltinHelpersTest, PhysicallyBasedBrdfMatches) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -17,7 +17,7 @@
 #include "varc/render/ForwardRenderer.h"
 #include "varc/scene/Scene.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 scene::Object sphere(glm::vec3 position) {
@@ -103,8 +103,8 @@ TEST_F(DeferredRenderTest, LightsAddUpInTheHdrLightBuffer) {
     a.lights = {point};
     b.lights = {spot};
     both.lights = {point, spot};
-    Image imageNone = render(none).image, imageA = render(a).image, imageB = render(b).image;
-    Image imageBoth = render(both).image;
+    image::Image imageNone = render(none).image, imageA = render(a).image, imageB = render(b).image;
+    image::Image imageBoth = render(both).image;
     ASSERT_GT(testing::rgbSum(imageA), testing::rgbSum(imageNone) + 10.0f);
     ASSERT_GT(testing::rgbSum(imageB), testing::rgbSum(imageNone) + 10.0f);
     float worst = 0;
@@ -122,11 +122,12 @@ TEST_F(DeferredRenderTest, LdrAgreesWithHdrUpToTheEncoding) {
     hdr.lights.push_back(light(scene::LightType::Directional, {}, 0.6f));
     scene::Scene ldr = hdr;
     ldr.camera.hdr = false;
-    Image imageHdr = render(hdr).image, imageLdr = render(ldr).image;
+    image::Image imageHdr = render(hdr).image, imageLdr = render(ldr).image;
     ASSERT_TRUE(imageHdr.isFloat());
     ASSERT_FALSE(imageLdr.isFloat());
     ASSERT_GT(testing::rgbSum(imageLdr), 20.0f);
-    EXPECT_LE(testing::maxRgbDifference(imageHdr.toRgba8(Tonemap::Clamp), imageLdr), 4.0f / 255.0f);
+    EXPECT_LE(testing::maxRgbDifference(imageHdr.toRgba8(image::Tonemap::Clamp), imageLdr),
+              4.0f / 255.0f);
 }
 
 TEST_F(DeferredRenderTest, AnObjectWithoutADeferredPassIsAClearError) {
@@ -272,4 +273,4 @@ TEST_F(DeferredRenderTest, ForwardAndDeferredShadowedRendersAgree) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -17,7 +17,7 @@
 #include "varc/render/ForwardRenderer.h"
 #include "varc/scene/Scene.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 constexpr const char* kSeedShader = "Custom/My First Lighting Shader";
@@ -54,7 +54,7 @@ scene::Scene oneSphere() {
 }
 
 // The largest R, G, B or A difference between two float images of one size.
-float maxRgbaDifference(const Image& a, const Image& b) {
+float maxRgbaDifference(const image::Image& a, const image::Image& b) {
     float worst = 0;
     for (size_t i = 0; i < a.floats().size(); ++i)
         worst = std::max(worst, std::abs(a.floats()[i] - b.floats()[i]));
@@ -276,9 +276,9 @@ TEST_F(ForwardRenderTest, ShadowMistakesInTheReferenceFail) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 // A forward renderer over the helper pack (tests/vulkan/helpers): Test/LightmapProbe outputs the
@@ -288,7 +288,7 @@ protected:
     void SetUp() override {
         VulkanTest::SetUp();
         if (HasFatalFailure()) return;
-        auto pack = Pack::open(VARC_TEST_PACK_DIR "/helpers.svpack");
+        auto pack = reader::Pack::open(VARC_TEST_PACK_DIR "/helpers.svpack");
         ASSERT_TRUE(pack) << pack.error().detail;
         mPack.emplace(std::move(*pack));
         auto renderer = ForwardRenderer::create(context(), {&*mPack});
@@ -322,7 +322,7 @@ protected:
         return scene;
     }
 
-    std::optional<Pack> mPack;
+    std::optional<reader::Pack> mPack;
     std::optional<ForwardRenderer> mRenderer;
 };
 
@@ -361,12 +361,12 @@ TEST_F(LightmapBindingTest, DirectionalRealtimeAndShadowmaskAreBound) {
 // A PNG lightmap, read at uv1 * unity_LightmapST.xy + zw: with a zero scale the offset alone
 // picks the texel (2 x 1: red, then blue), so a wrong ST or uv shows as the other colour.
 TEST_F(LightmapBindingTest, PngLightmapIsReadAtTheScaledAndOffsetUv) {
-    Image png(2, 1, PixelFormat::Rgba8);
+    image::Image png(2, 1, image::PixelFormat::Rgba8);
     png.setPixel8(0, 0, {255, 0, 0, 255});
     png.setPixel8(1, 0, {0, 0, 255, 255});
     const std::string path = ::testing::TempDir() + "varc-lightmap-test.png";
     ASSERT_TRUE(writePng(path, png));
-    Image mask(1, 1, PixelFormat::Rgba8);
+    image::Image mask(1, 1, image::PixelFormat::Rgba8);
     mask.setPixel8(0, 0, {64, 255, 255, 255});
     const std::string maskPath = ::testing::TempDir() + "varc-shadowmask-test.png";
     ASSERT_TRUE(writePng(maskPath, mask));
@@ -400,4 +400,4 @@ TEST_F(LightmapBindingTest, SubtractiveModeMixesOnlyLightmappedObjects) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

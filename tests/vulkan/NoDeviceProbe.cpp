@@ -6,10 +6,10 @@
 #include "varc/vulkan/VulkanContext.h"
 
 int main() {
-    varc::runtime::ContextOptions options;
+    varc::vulkan::ContextOptions options;
     options.enableValidation = false;
-    varc::Result<varc::runtime::VulkanContext> context =
-        varc::runtime::VulkanContext::create(options);
+    varc::Result<varc::vulkan::VulkanContext> context =
+        varc::vulkan::VulkanContext::create(options);
     if (context.ok()) {
         std::printf("unexpected: created a context on '%s'\n", context->deviceName().c_str());
         return 1;

@@ -17,7 +17,7 @@
 #include "varc/render/VariantPipeline.h"
 #include "varc/vulkan/RenderTarget.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 std::vector<std::byte> readAll(const std::string& path) {
@@ -49,16 +49,17 @@ TEST_F(PipelineCacheFileTest, SavedCacheReloadsOnTheSameDevice) {
     EXPECT_FALSE(fresh->loadedFromFile());
     EXPECT_EQ(fresh->rejectedReason(), "");
 
-    auto pack = Pack::open(VARC_TEST_PACK_DIR "/library.svpack");
+    auto pack = reader::Pack::open(VARC_TEST_PACK_DIR "/library.svpack");
     ASSERT_TRUE(pack) << pack.error().detail;
-    RenderTargetDesc desc;
+    vulkan::RenderTargetDesc desc;
     desc.width = desc.height = 8;
-    auto target = RenderTarget::create(context(), desc);
+    auto target = vulkan::RenderTarget::create(context(), desc);
     ASSERT_TRUE(target) << target.error().detail;
-    PassView pass = *pack->findShader("Custom/My First Lighting Shader")->pass("ForwardAdd");
+    reader::PassView pass =
+        *pack->findShader("Custom/My First Lighting Shader")->pass("ForwardAdd");
     auto pipeline = VariantPipeline::create(
         context(), pass.variant(0), resolveRenderState(pass.renderState(), {}),
-        {target->renderPass(LoadOp::Clear), true, 1}, fresh->handle());
+        {target->renderPass(vulkan::LoadOp::Clear), true, 1}, fresh->handle());
     ASSERT_TRUE(pipeline) << pipeline.error().detail;
     ASSERT_TRUE(fresh->save());
 
@@ -103,4 +104,4 @@ TEST_F(PipelineCacheFileTest, ForeignOrCorruptHeadersStartAFreshCache) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

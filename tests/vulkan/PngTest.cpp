@@ -13,7 +13,7 @@
 
 #include "varc/image/Png.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 using Rgba8 = std::array<uint8_t, 4>;
@@ -22,8 +22,8 @@ std::string tempPath(const std::string& name) {
     return ::testing::TempDir() + "varc_png_" + std::to_string(::getpid()) + "_" + name;
 }
 
-Image randomImage(uint32_t width, uint32_t height) {
-    Image image(width, height, PixelFormat::Rgba8);
+image::Image randomImage(uint32_t width, uint32_t height) {
+    image::Image image(width, height, image::PixelFormat::Rgba8);
     std::mt19937 random(1234);
     for (uint8_t& byte : image.bytes()) byte = static_cast<uint8_t>(random() & 0xFF);
     return image;
@@ -32,14 +32,14 @@ Image randomImage(uint32_t width, uint32_t height) {
 class PngLevelTest : public ::testing::TestWithParam<int> {};
 
 TEST_P(PngLevelTest, RoundTripsEightBitPixelsExactly) {
-    Image image = randomImage(37, 23);
+    image::Image image = randomImage(37, 23);
     std::string path = tempPath("roundtrip_" + std::to_string(GetParam()) + ".png");
     ASSERT_TRUE(writePng(path, image, GetParam()).ok());
-    Result<Image> loaded = readPng(path);
+    Result<image::Image> loaded = image::readPng(path);
     ASSERT_TRUE(loaded.ok()) << loaded.error().detail;
     EXPECT_EQ(loaded->width(), 37u);
     EXPECT_EQ(loaded->height(), 23u);
-    ASSERT_EQ(loaded->format(), PixelFormat::Rgba8);
+    ASSERT_EQ(loaded->format(), image::PixelFormat::Rgba8);
     EXPECT_TRUE(std::equal(image.bytes().begin(), image.bytes().end(), loaded->bytes().begin()));
     std::filesystem::remove(path);
 }
@@ -47,22 +47,22 @@ TEST_P(PngLevelTest, RoundTripsEightBitPixelsExactly) {
 INSTANTIATE_TEST_SUITE_P(ZlibLevels, PngLevelTest, ::testing::Values(0, 1, 6, 9));
 
 TEST(Png, HdrImagesAreClampedToEightBits) {
-    Image hdr(2, 1, PixelFormat::RgbaFloat);
+    image::Image hdr(2, 1, image::PixelFormat::RgbaFloat);
     hdr.setPixelFloat(0, 0, {-1.0f, 0.5f, 2.0f, 0.25f});
     hdr.setPixelFloat(1, 0, {1.0f, 0.0f, 1000.0f, 7.0f});
     Result<std::string> encoded = encodePng(hdr);
     ASSERT_TRUE(encoded.ok()) << encoded.error().detail;
-    Result<Image> decoded = decodePng(*encoded);
+    Result<image::Image> decoded = image::decodePng(*encoded);
     ASSERT_TRUE(decoded.ok()) << decoded.error().detail;
     EXPECT_EQ(decoded->pixel8(0, 0), (Rgba8{0, 128, 255, 64}));
     EXPECT_EQ(decoded->pixel8(1, 0), (Rgba8{255, 0, 255, 255}));
 }
 
 TEST(Png, ReinhardTonemapCompressesColourButNotAlpha) {
-    Image hdr(1, 1, PixelFormat::RgbaFloat);
+    image::Image hdr(1, 1, image::PixelFormat::RgbaFloat);
     hdr.setPixelFloat(0, 0, {1.0f, 3.0f, -1.0f, 0.5f});
     // 1 / 2 = 0.5 -> 128; 3 / 4 = 0.75 -> 191; negative -> 0; alpha only clamped.
-    EXPECT_EQ(hdr.toRgba8(Tonemap::Reinhard).pixel8(0, 0), (Rgba8{128, 191, 0, 128}));
+    EXPECT_EQ(hdr.toRgba8(image::Tonemap::Reinhard).pixel8(0, 0), (Rgba8{128, 191, 0, 128}));
 }
 
 TEST(Png, OverwritesAtomicallyWithoutLeavingTemporaries) {
@@ -70,9 +70,9 @@ TEST(Png, OverwritesAtomicallyWithoutLeavingTemporaries) {
     std::filesystem::create_directories(dir);
     std::string path = (dir / "out.png").string();
     ASSERT_TRUE(writePng(path, randomImage(8, 8)).ok());
-    Image second(4, 4, PixelFormat::Rgba8);
+    image::Image second(4, 4, image::PixelFormat::Rgba8);
     ASSERT_TRUE(writePng(path, second).ok());
-    Result<Image> loaded = readPng(path);
+    Result<image::Image> loaded = image::readPng(path);
     ASSERT_TRUE(loaded.ok());
     EXPECT_EQ(loaded->width(), 4u);
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir),
@@ -82,20 +82,21 @@ TEST(Png, OverwritesAtomicallyWithoutLeavingTemporaries) {
 }
 
 TEST(Png, ErrorsAreResults) {
-    Result<Image> missing = readPng(tempPath("does_not_exist.png"));
+    Result<image::Image> missing = image::readPng(tempPath("does_not_exist.png"));
     ASSERT_FALSE(missing.ok());
     EXPECT_EQ(missing.error().code, ErrorCode::IoError);
 
     Result<std::string> encoded = encodePng(randomImage(16, 16));
     ASSERT_TRUE(encoded.ok());
-    Result<Image> truncated = decodePng(std::string_view(*encoded).substr(0, encoded->size() / 2));
+    Result<image::Image> truncated =
+        image::decodePng(std::string_view(*encoded).substr(0, encoded->size() / 2));
     ASSERT_FALSE(truncated.ok());
     EXPECT_EQ(truncated.error().code, ErrorCode::InvalidInput);
-    Result<Image> garbage = decodePng("definitely not a png");
+    Result<image::Image> garbage = image::decodePng("definitely not a png");
     ASSERT_FALSE(garbage.ok());
     EXPECT_EQ(garbage.error().code, ErrorCode::InvalidInput);
 
-    EXPECT_EQ(encodePng(Image()).error().code, ErrorCode::InvalidInput);
+    EXPECT_EQ(encodePng(image::Image()).error().code, ErrorCode::InvalidInput);
     EXPECT_EQ(encodePng(randomImage(2, 2), 10).error().code, ErrorCode::InvalidInput);
     Status unwritable = writePng("/nonexistent-dir/varc.png", randomImage(2, 2));
     ASSERT_FALSE(unwritable.ok());
@@ -130,40 +131,41 @@ std::string truncatedPng(uint32_t width, uint32_t height) {
 // kMaxPngPixels (docs/SECURITY.md): a header of exactly the limit gets as far as reading pixels
 // (and fails there, for want of them); one row more is refused from the header alone.
 TEST(Png, AHeaderAtThePixelLimitIsReadAndOnePastIsRefused) {
-    static_assert(uint64_t{16384} * 16384 == kMaxPngPixels);
-    Result<Image> atTheLimit = decodePng(truncatedPng(16384, 16384));
+    static_assert(uint64_t{16384} * 16384 == image::kMaxPngPixels);
+    Result<image::Image> atTheLimit = image::decodePng(truncatedPng(16384, 16384));
     ASSERT_FALSE(atTheLimit.ok());
     EXPECT_EQ(atTheLimit.error().detail.find("too large"), std::string::npos)
         << atTheLimit.error().detail;
     EXPECT_NE(atTheLimit.error().detail.find("corrupt PNG"), std::string::npos)
         << atTheLimit.error().detail;
-    Result<Image> past = decodePng(truncatedPng(16384, 16385));
+    Result<image::Image> past = image::decodePng(truncatedPng(16384, 16385));
     ASSERT_FALSE(past.ok());
     EXPECT_NE(past.error().detail.find("too large"), std::string::npos) << past.error().detail;
-    EXPECT_EQ(decodePng(truncatedPng(2, 2)).error().detail.find("too large"), std::string::npos);
+    EXPECT_EQ(image::decodePng(truncatedPng(2, 2)).error().detail.find("too large"),
+              std::string::npos);
 }
 
 TEST(HalfFloat, ConvertsSpecialValues) {
-    EXPECT_EQ(halfToFloat(0x3C00), 1.0f);
-    EXPECT_EQ(halfToFloat(0xC000), -2.0f);
-    EXPECT_EQ(halfToFloat(0x7BFF), 65504.0f);
-    EXPECT_EQ(halfToFloat(0x0001), std::ldexp(1.0f, -24));
-    EXPECT_TRUE(std::isinf(halfToFloat(0x7C00)));
-    EXPECT_TRUE(std::isnan(halfToFloat(0x7E00)));
-    EXPECT_TRUE(std::signbit(halfToFloat(0x8000)));
-    EXPECT_EQ(floatToHalf(65519.0f), 0x7BFF);
-    EXPECT_EQ(floatToHalf(65520.0f), 0x7C00);
-    EXPECT_EQ(floatToHalf(1.0f + std::ldexp(1.0f, -11)), 0x3C00);  // tie rounds to even
+    EXPECT_EQ(image::halfToFloat(0x3C00), 1.0f);
+    EXPECT_EQ(image::halfToFloat(0xC000), -2.0f);
+    EXPECT_EQ(image::halfToFloat(0x7BFF), 65504.0f);
+    EXPECT_EQ(image::halfToFloat(0x0001), std::ldexp(1.0f, -24));
+    EXPECT_TRUE(std::isinf(image::halfToFloat(0x7C00)));
+    EXPECT_TRUE(std::isnan(image::halfToFloat(0x7E00)));
+    EXPECT_TRUE(std::signbit(image::halfToFloat(0x8000)));
+    EXPECT_EQ(image::floatToHalf(65519.0f), 0x7BFF);
+    EXPECT_EQ(image::floatToHalf(65520.0f), 0x7C00);
+    EXPECT_EQ(image::floatToHalf(1.0f + std::ldexp(1.0f, -11)), 0x3C00);  // tie rounds to even
 }
 
 TEST(HalfFloat, EveryNonNanHalfRoundTrips) {
     for (uint32_t bits = 0; bits <= 0xFFFF; ++bits) {
         auto half = static_cast<uint16_t>(bits);
-        float value = halfToFloat(half);
+        float value = image::halfToFloat(half);
         if (std::isnan(value)) continue;
-        ASSERT_EQ(floatToHalf(value), half) << "0x" << std::hex << bits;
+        ASSERT_EQ(image::floatToHalf(value), half) << "0x" << std::hex << bits;
     }
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -10,17 +10,18 @@
 #include "varc/render/ForwardRenderer.h"
 #include "varc/scene/Scene.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 // The numeric properties (floats, vectors, colours) of every object's shader, set by |value|:
 // the default itself, nothing (erased) or zero.
 enum class Fill { Default, Omit, Zero };
 
-scene::Scene withNumericProperties(scene::Scene scene, const Pack& pack, Fill fill, int& touched) {
+scene::Scene withNumericProperties(scene::Scene scene, const reader::Pack& pack, Fill fill,
+                                   int& touched) {
     touched = 0;
     for (scene::Object& object : scene.objects) {
-        std::optional<ShaderView> shader = pack.findShader(object.material.shader);
+        std::optional<reader::ShaderView> shader = pack.findShader(object.material.shader);
         if (!shader) continue;
         for (const pack::ShaderProperty& property : shader->properties()) {
             if (property.kind == pack::PropertyKind::Texture) continue;
@@ -59,7 +60,7 @@ public:
 
 template <typename Renderer>
 void expectOmittedPropertiesTakeDefaults(DefaultsTest<Renderer>& test, const std::string& sceneFile,
-                                         const Pack& pack) {
+                                         const reader::Pack& pack) {
     auto scene = scene::loadScene(sceneFile);
     ASSERT_TRUE(scene.ok()) << scene.error().detail;
     int touched = 0;
@@ -67,9 +68,9 @@ void expectOmittedPropertiesTakeDefaults(DefaultsTest<Renderer>& test, const std
     ASSERT_GT(touched, 0) << sceneFile << ": no shader with numeric properties";
     scene::Scene omitted = withNumericProperties(*scene, pack, Fill::Omit, touched);
     scene::Scene zeroed = withNumericProperties(*scene, pack, Fill::Zero, touched);
-    Image spelledImage = test.renderFrame(spelled).image;
-    Image omittedImage = test.renderFrame(omitted).image;
-    Image zeroedImage = test.renderFrame(zeroed).image;
+    image::Image spelledImage = test.renderFrame(spelled).image;
+    image::Image omittedImage = test.renderFrame(omitted).image;
+    image::Image zeroedImage = test.renderFrame(zeroed).image;
     EXPECT_EQ(testing::maxRgbDifference(spelledImage, omittedImage), 0.0f) << sceneFile;
     EXPECT_GT(testing::maxRgbDifference(spelledImage, zeroedImage), 0.05f) << sceneFile;
 }
@@ -88,4 +89,4 @@ TEST_F(DeferredDefaultsTest, OmittedPropertiesTakeTheShaderDefaultsFromThePack) 
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

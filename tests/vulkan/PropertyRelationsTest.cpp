@@ -12,7 +12,7 @@
 #include "varc/properties/PropertyRunner.h"
 #include "varc/render/SceneRenderer.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 using properties::Verdict;
@@ -22,7 +22,7 @@ protected:
     // The report of every lit shader in |packName| (in VARC_TEST_PACK_DIR), by shader name.
     std::map<std::string, properties::ShaderReport> check(const std::string& packName) {
         std::map<std::string, properties::ShaderReport> reports;
-        auto pack = Pack::open(std::string(VARC_TEST_PACK_DIR) + "/" + packName);
+        auto pack = reader::Pack::open(std::string(VARC_TEST_PACK_DIR) + "/" + packName);
         EXPECT_TRUE(pack) << pack.error().detail;
         if (!pack) return reports;
         auto renderer = SceneRenderer::create(context(), {&*pack});
@@ -31,7 +31,7 @@ protected:
         properties::PropertyOptions options;
         options.outDir = (std::filesystem::temp_directory_path() / "varc-properties-test").string();
         properties::PropertyRunner runner(*renderer, options);
-        for (const ShaderView& shader : properties::lightingShaders({&*pack}))
+        for (const reader::ShaderView& shader : properties::lightingShaders({&*pack}))
             reports.emplace(std::string(shader.name()), runner.check(shader));
         return reports;
     }
@@ -228,4 +228,4 @@ TEST_F(PropertyRelationsTest, ModelsThatTheRelationsDoNotDescribeAreNotApplicabl
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -9,13 +9,13 @@
 #include "varc/render/ForwardRenderer.h"
 #include "varc/scene/Scene.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 using RelaxedBlockLayoutTest = testing::VulkanTest;
 
 TEST_F(RelaxedBlockLayoutTest, HlslPackedCbufferMembersReachTheShader) {
-    auto pack = Pack::open(VARC_TEST_PACK_DIR "/helpers.svpack");
+    auto pack = reader::Pack::open(VARC_TEST_PACK_DIR "/helpers.svpack");
     ASSERT_TRUE(pack) << pack.error().detail;
     auto renderer = ForwardRenderer::create(context(), {&*pack});
     ASSERT_TRUE(renderer) << renderer.error().detail;
@@ -37,4 +37,4 @@ TEST_F(RelaxedBlockLayoutTest, HlslPackedCbufferMembersReachTheShader) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -17,7 +17,7 @@
 #include "varc/scene/Scene.h"
 #include "varc/scene/VisibleLights.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 std::string scenePath(const std::string& name) {
@@ -31,7 +31,7 @@ scene::Scene loadSinglePassScene(const std::string& name) {
 }
 
 // The largest per-channel RGB difference, in 8-bit LSB.
-float maxDifferenceLsb(const Image& a, const Image& b) {
+float maxDifferenceLsb(const image::Image& a, const image::Image& b) {
     return testing::maxRgbDifference(a, b) * 255.0f;
 }
 
@@ -210,4 +210,4 @@ TEST_F(SinglePassRenderTest, UnknownShaderIsAClearError) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -25,7 +25,7 @@
 #include "varc/vulkan/Sampler.h"
 #include "varc/vulkan/Texture.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 // A quad covering the middle of clip space at depth 0.5 (identity matrices), in both windings so
@@ -88,17 +88,17 @@ protected:
     void SetUp() override {
         VulkanTest::SetUp();
         if (HasFatalFailure()) return;
-        Image white(1, 1, PixelFormat::Rgba8);
+        image::Image white(1, 1, image::PixelFormat::Rgba8);
         white.setPixel8(0, 0, {255, 255, 255, 255});
-        auto white2D = Texture::create2D(context(), white);
+        auto white2D = vulkan::Texture::create2D(context(), white);
         ASSERT_TRUE(white2D) << white2D.error().detail;
         mWhite2D.emplace(std::move(*white2D));
-        std::vector<Image> faces(6, white);
-        auto whiteCube = Texture::createCube(context(), faces);
+        std::vector<image::Image> faces(6, white);
+        auto whiteCube = vulkan::Texture::createCube(context(), faces);
         ASSERT_TRUE(whiteCube) << whiteCube.error().detail;
         mWhiteCube.emplace(std::move(*whiteCube));
-        std::vector<Image> slices(2, white);
-        auto white3D = Texture::createVolume(context(), slices);
+        std::vector<image::Image> slices(2, white);
+        auto white3D = vulkan::Texture::createVolume(context(), slices);
         ASSERT_TRUE(white3D) << white3D.error().detail;
         mWhite3D.emplace(std::move(*white3D));
         auto sampler = createSampler(context());
@@ -118,16 +118,16 @@ protected:
 
     TextureLookup whiteTextures() const {
         return [this](std::string_view, pack::ResourceDim dim) -> std::optional<TextureBinding> {
-            const Texture& texture = dim == pack::ResourceDim::Cube    ? *mWhiteCube
-                                     : dim == pack::ResourceDim::Dim3D ? *mWhite3D
-                                                                       : *mWhite2D;
+            const vulkan::Texture& texture = dim == pack::ResourceDim::Cube    ? *mWhiteCube
+                                             : dim == pack::ResourceDim::Dim3D ? *mWhite3D
+                                                                               : *mWhite2D;
             return TextureBinding{texture.view(), mSampler.get()};
         };
     }
 
     // Declared after the context (in VulkanTest) so they are destroyed first.
-    std::optional<Texture> mWhite2D, mWhiteCube, mWhite3D;
-    UniqueHandle<VkSampler> mSampler;
+    std::optional<vulkan::Texture> mWhite2D, mWhiteCube, mWhite3D;
+    vulkan::UniqueHandle<VkSampler> mSampler;
 };
 
 struct DrawOutcome {
@@ -139,21 +139,21 @@ struct DrawOutcome {
 // |stagesSeen| ORs the stages of every variant drawn.
 void VariantDrawTest::drawEveryVariant(const std::string& packPath, size_t& drawn,
                                        StageMask& stagesSeen) {
-    auto pack = Pack::open(packPath);
+    auto pack = reader::Pack::open(packPath);
     ASSERT_TRUE(pack) << pack.error().detail;
 
-    RenderTargetDesc desc;
+    vulkan::RenderTargetDesc desc;
     desc.width = desc.height = 32;
-    desc.color = ColorFormat::Rgba32Float;
+    desc.color = vulkan::ColorFormat::Rgba32Float;
     desc.clearColor = {0.25f, 0.5f, 0.75f, 1.0f};
-    auto single = RenderTarget::create(context(), desc);
+    auto single = vulkan::RenderTarget::create(context(), desc);
     ASSERT_TRUE(single) << single.error().detail;
-    desc.extraColors.assign(3, ColorFormat::Rgba32Float);  // a G-buffer's four outputs
-    auto gbuffer = RenderTarget::create(context(), desc);
+    desc.extraColors.assign(3, vulkan::ColorFormat::Rgba32Float);  // a G-buffer's four outputs
+    auto gbuffer = vulkan::RenderTarget::create(context(), desc);
     ASSERT_TRUE(gbuffer) << gbuffer.error().detail;
     std::vector<MeshVertex> quad = doubleSidedQuad();
-    auto vertices = Buffer::createWithData(context(), std::as_bytes(std::span(quad)),
-                                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    auto vertices = vulkan::Buffer::createWithData(context(), std::as_bytes(std::span(quad)),
+                                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
     ASSERT_TRUE(vertices) << vertices.error().detail;
     auto resources = DrawResources::create(context(), 1u << 20, 64);
     ASSERT_TRUE(resources) << resources.error().detail;
@@ -162,30 +162,30 @@ void VariantDrawTest::drawEveryVariant(const std::string& packPath, size_t& draw
     queryInfo.queryType = VK_QUERY_TYPE_OCCLUSION;
     queryInfo.queryCount = 1;
     VkQueryPool rawPool = VK_NULL_HANDLE;
-    ASSERT_TRUE(checkVk(vkCreateQueryPool(context().device(), &queryInfo, nullptr, &rawPool),
-                        "vkCreateQueryPool"));
-    UniqueHandle<VkQueryPool> queries(context().device(), rawPool);
+    ASSERT_TRUE(vulkan::checkVk(
+        vkCreateQueryPool(context().device(), &queryInfo, nullptr, &rawPool), "vkCreateQueryPool"));
+    vulkan::UniqueHandle<VkQueryPool> queries(context().device(), rawPool);
 
     ShaderValues values = drawValues();
     const ShaderValues* layers[] = {&values};
     for (size_t s = 0; s < pack->shaderCount(); ++s) {
-        ShaderView shader = pack->shader(s);
+        reader::ShaderView shader = pack->shader(s);
         for (size_t p = 0; p < shader.passCount(); ++p) {
-            PassView pass = *shader.pass(p);
+            reader::PassView pass = *shader.pass(p);
             pack::PackRenderState state = resolveRenderState(pass.renderState(), values);
             for (size_t v = 0; v < pass.variantCount(); ++v) {
-                VariantView variant = pass.variant(v);
+                reader::VariantView variant = pass.variant(v);
                 SCOPED_TRACE(variant.describe());
                 size_t outputs = variant.program(Stage::Fragment)->reflection().outputs.size();
-                const RenderTarget* target = outputs > 1 ? &*gbuffer : &*single;
-                auto pipeline = VariantPipeline::create(
-                    context(), variant, state,
-                    {target->renderPass(LoadOp::Clear), true, target->colorAttachmentCount()});
+                const vulkan::RenderTarget* target = outputs > 1 ? &*gbuffer : &*single;
+                auto pipeline = VariantPipeline::create(context(), variant, state,
+                                                        {target->renderPass(vulkan::LoadOp::Clear),
+                                                         true, target->colorAttachmentCount()});
                 ASSERT_TRUE(pipeline) << pipeline.error().detail;
                 Status recorded = Ok{};
                 Status submitted = context().submitAndWait([&](VkCommandBuffer commands) {
                     vkCmdResetQueryPool(commands, queries.get(), 0, 1);
-                    target->begin(commands, LoadOp::Clear);
+                    target->begin(commands, vulkan::LoadOp::Clear);
                     VkViewport viewport = target->viewport();
                     VkRect2D area = target->area();
                     vkCmdSetViewport(commands, 0, 1, &viewport);
@@ -205,7 +205,7 @@ void VariantDrawTest::drawEveryVariant(const std::string& packPath, size_t& draw
                 ASSERT_TRUE(submitted) << submitted.error().detail;
                 ASSERT_TRUE(resources->reset());
                 DrawOutcome outcome;
-                ASSERT_TRUE(checkVk(
+                ASSERT_TRUE(vulkan::checkVk(
                     vkGetQueryPoolResults(context().device(), queries.get(), 0, 1, sizeof(uint64_t),
                                           &outcome.samplesPassed, sizeof(uint64_t),
                                           VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
@@ -248,4 +248,4 @@ TEST_F(VariantDrawTest, GeometryAndTessellationVariantsOfRealShadersDraw) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

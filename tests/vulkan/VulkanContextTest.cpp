@@ -19,7 +19,7 @@
 
 extern char** environ;
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 using testing::VulkanTest;
@@ -46,11 +46,12 @@ TEST_F(VulkanTest, RecordsValidationErrors) {
     info.usage = 0;  // invalid: VUID-VkBufferCreateInfo-usage-requiredbitmask
     VkBuffer buffer = VK_NULL_HANDLE;
     VkResult result = vkCreateBuffer(context().device(), &info, nullptr, &buffer);
-    UniqueHandle<VkBuffer> owned(context().device(), result == VK_SUCCESS ? buffer : nullptr);
+    vulkan::UniqueHandle<VkBuffer> owned(context().device(),
+                                         result == VK_SUCCESS ? buffer : nullptr);
     owned.reset();
 
     ASSERT_GE(context().validationMessageCount(), 1u);
-    std::vector<ValidationMessage> messages = context().validationMessages();
+    std::vector<vulkan::ValidationMessage> messages = context().validationMessages();
     EXPECT_NE(messages[0].idName.find("VkBufferCreateInfo-usage"), std::string::npos)
         << toString(messages[0]);
     EXPECT_TRUE(messages[0].severity & VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT);
@@ -61,10 +62,10 @@ TEST_F(VulkanTest, RecordsValidationErrors) {
 
 TEST(VulkanContext, UnknownPreferredDeviceIsNotFoundAndListsDevices) {
     if (deviceOverridden()) GTEST_SKIP() << "VARC_VULKAN_DEVICE overrides preferredDevice";
-    ContextOptions options;
+    vulkan::ContextOptions options;
     options.enableValidation = false;
     options.preferredDevice = "no-such-gpu";
-    Result<VulkanContext> context = VulkanContext::create(options);
+    Result<vulkan::VulkanContext> context = vulkan::VulkanContext::create(options);
     ASSERT_FALSE(context.ok());
     EXPECT_EQ(context.error().code, ErrorCode::NotFound);
     EXPECT_NE(context.error().detail.find("no-such-gpu"), std::string::npos);
@@ -73,10 +74,10 @@ TEST(VulkanContext, UnknownPreferredDeviceIsNotFoundAndListsDevices) {
 
 TEST(VulkanContext, PreferredDeviceMatchesCaseInsensitively) {
     if (deviceOverridden()) GTEST_SKIP() << "VARC_VULKAN_DEVICE overrides preferredDevice";
-    ContextOptions options;
+    vulkan::ContextOptions options;
     options.enableValidation = false;
     options.preferredDevice = "LLVMPIPE";
-    Result<VulkanContext> context = VulkanContext::create(options);
+    Result<vulkan::VulkanContext> context = vulkan::VulkanContext::create(options);
     ASSERT_TRUE(context.ok()) << context.error().detail;
     EXPECT_FALSE(context->validationEnabled());
     EXPECT_EQ(context->validationMessageCount(), 0u);
@@ -127,8 +128,9 @@ TEST(VulkanContext, MissingDriverIsACleanNotFoundError) {
 }
 
 TEST_F(VulkanTest, SubmitAndWaitRunsTheRecordedCommands) {
-    Result<Buffer> buffer = Buffer::create(context(), 64, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                           MemoryLocation::HostVisible, "fill target");
+    Result<vulkan::Buffer> buffer =
+        vulkan::Buffer::create(context(), 64, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                               vulkan::MemoryLocation::HostVisible, "fill target");
     ASSERT_TRUE(buffer.ok()) << buffer.error().detail;
     Status submitted = context().submitAndWait([&](VkCommandBuffer commands) {
         vkCmdFillBuffer(commands, buffer->handle(), 0, 64, 0xA5A5A5A5u);
@@ -158,12 +160,12 @@ TEST_F(VulkanTest, UniqueHandleMovesOwnershipAndDestroysOnce) {
     VkFenceCreateInfo info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO, nullptr, 0};
     VkFence raw = VK_NULL_HANDLE;
     ASSERT_EQ(vkCreateFence(context().device(), &info, nullptr, &raw), VK_SUCCESS);
-    UniqueHandle<VkFence> first(context().device(), raw);
+    vulkan::UniqueHandle<VkFence> first(context().device(), raw);
     context().nameObject(first, "moved fence");
-    UniqueHandle<VkFence> second(std::move(first));
+    vulkan::UniqueHandle<VkFence> second(std::move(first));
     EXPECT_FALSE(first);  // NOLINT(bugprone-use-after-move): checks the moved-from state
     EXPECT_EQ(second.get(), raw);
-    UniqueHandle<VkFence> third;
+    vulkan::UniqueHandle<VkFence> third;
     third = std::move(second);
     EXPECT_EQ(third.get(), raw);
     third.reset();
@@ -172,20 +174,20 @@ TEST_F(VulkanTest, UniqueHandleMovesOwnershipAndDestroysOnce) {
 }
 
 TEST(CheckVk, NamesTheCallTheResultAndTheSite) {
-    Status ok = checkVk(VK_SUCCESS, "vkCreateFence", std::source_location::current());
+    Status ok = vulkan::checkVk(VK_SUCCESS, "vkCreateFence", std::source_location::current());
     EXPECT_TRUE(ok.ok());
-    EXPECT_TRUE(checkVk(VK_INCOMPLETE, "vkEnumeratePhysicalDevices").ok());
-    Status failed =
-        checkVk(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory", std::source_location::current());
+    EXPECT_TRUE(vulkan::checkVk(VK_INCOMPLETE, "vkEnumeratePhysicalDevices").ok());
+    Status failed = vulkan::checkVk(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory",
+                                    std::source_location::current());
     ASSERT_FALSE(failed.ok());
     EXPECT_EQ(failed.error().code, ErrorCode::VulkanError);
     EXPECT_NE(failed.error().detail.find("vkAllocateMemory failed: VK_ERROR_OUT_OF_DEVICE_MEMORY"),
               std::string::npos)
         << failed.error().detail;
     EXPECT_NE(failed.error().detail.find("VulkanContextTest.cpp:"), std::string::npos);
-    Status unknown = checkVk(static_cast<VkResult>(-12345), "vkFoo");
+    Status unknown = vulkan::checkVk(static_cast<VkResult>(-12345), "vkFoo");
     EXPECT_NE(unknown.error().detail.find("VkResult(-12345)"), std::string::npos);
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -11,24 +11,24 @@
 
 #include "varc/vulkan/CheckVk.h"
 
-namespace varc::runtime::testing {
+namespace varc::render::testing {
 
 std::string spirvPath(const std::string& shaderName) {
     return std::string(VARC_VULKAN_TEST_SPIRV_DIR) + "/" + shaderName + ".spv";
 }
 
 void VulkanTest::SetUp() {
-    ContextOptions options;
+    vulkan::ContextOptions options;
     options.enableValidation = true;
     options.applicationName = "varc_vulkan_tests";
-    options.onMessage = [this](const ValidationMessage& message) {
+    options.onMessage = [this](const vulkan::ValidationMessage& message) {
         if (mTolerated.count(message.idName)) {
             ++mToleratedCount;
             return;
         }
         if (!mExpectMessages) ADD_FAILURE() << "Vulkan validation: " << toString(message);
     };
-    Result<VulkanContext> created = VulkanContext::create(options);
+    Result<vulkan::VulkanContext> created = vulkan::VulkanContext::create(options);
     ASSERT_TRUE(created.ok()) << created.error().detail;
     mContext.emplace(std::move(*created));
 }
@@ -43,7 +43,7 @@ void VulkanTest::TearDown() {
 void PackTest::SetUp() {
     VulkanTest::SetUp();
     if (HasFatalFailure()) return;
-    auto pack = Pack::open(VARC_TEST_PACK_DIR "/library.svpack");
+    auto pack = reader::Pack::open(VARC_TEST_PACK_DIR "/library.svpack");
     ASSERT_TRUE(pack) << pack.error().detail;
     mPack.emplace(std::move(*pack));
 }
@@ -66,7 +66,7 @@ std::string sceneFile(const std::string& folder, const std::string& name) {
     return std::string(VARC_TEST_SCENE_DIR) + "/" + folder + "/" + name;
 }
 
-float rgbSum(const Image& image) {
+float rgbSum(const image::Image& image) {
     float total = 0;
     for (uint32_t y = 0; y < image.height(); ++y) {
         for (uint32_t x = 0; x < image.width(); ++x) {
@@ -77,7 +77,7 @@ float rgbSum(const Image& image) {
     return total;
 }
 
-float maxRgbDifference(const Image& a, const Image& b) {
+float maxRgbDifference(const image::Image& a, const image::Image& b) {
     float worst = 0;
     for (uint32_t y = 0; y < a.height(); ++y) {
         for (uint32_t x = 0; x < a.width(); ++x) {
@@ -153,8 +153,8 @@ struct FixedState {
 
 }  // namespace
 
-Result<UniqueHandle<VkPipeline>> createPipeline(const VulkanContext& context,
-                                                const PipelineDesc& desc) {
+Result<vulkan::UniqueHandle<VkPipeline>> createPipeline(const vulkan::VulkanContext& context,
+                                                        const PipelineDesc& desc) {
     std::array<VkPipelineShaderStageCreateInfo, 2> stages = shaderStages(desc);
     FixedState fixed(desc);
     VkGraphicsPipelineCreateInfo info{};
@@ -172,18 +172,19 @@ Result<UniqueHandle<VkPipeline>> createPipeline(const VulkanContext& context,
     info.layout = desc.layout;
     info.renderPass = desc.renderPass;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    if (Status status = checkVk(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1,
-                                                          &info, nullptr, &pipeline),
-                                "vkCreateGraphicsPipelines", std::source_location::current());
+    if (Status status =
+            vulkan::checkVk(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info,
+                                                      nullptr, &pipeline),
+                            "vkCreateGraphicsPipelines", std::source_location::current());
         !status) {
         return status.error();
     }
-    return UniqueHandle<VkPipeline>(context.device(), pipeline);
+    return vulkan::UniqueHandle<VkPipeline>(context.device(), pipeline);
 }
 
-Result<UniqueHandle<VkPipelineLayout>> createPipelineLayout(const VulkanContext& context,
-                                                            VkDescriptorSetLayout setLayout,
-                                                            uint32_t pushConstantBytes) {
+Result<vulkan::UniqueHandle<VkPipelineLayout>> createPipelineLayout(
+    const vulkan::VulkanContext& context, VkDescriptorSetLayout setLayout,
+    uint32_t pushConstantBytes) {
     VkPushConstantRange range{VK_SHADER_STAGE_FRAGMENT_BIT, 0, pushConstantBytes};
     VkPipelineLayoutCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
@@ -192,15 +193,16 @@ Result<UniqueHandle<VkPipelineLayout>> createPipelineLayout(const VulkanContext&
     info.pushConstantRangeCount = pushConstantBytes > 0 ? 1 : 0;
     info.pPushConstantRanges = &range;
     VkPipelineLayout layout = VK_NULL_HANDLE;
-    if (Status status = checkVk(vkCreatePipelineLayout(context.device(), &info, nullptr, &layout),
-                                "vkCreatePipelineLayout", std::source_location::current());
+    if (Status status =
+            vulkan::checkVk(vkCreatePipelineLayout(context.device(), &info, nullptr, &layout),
+                            "vkCreatePipelineLayout", std::source_location::current());
         !status) {
         return status.error();
     }
-    return UniqueHandle<VkPipelineLayout>(context.device(), layout);
+    return vulkan::UniqueHandle<VkPipelineLayout>(context.device(), layout);
 }
 
-Result<TextureBinding> bindTexture(const VulkanContext& context, VkImageView view,
+Result<TextureBinding> bindTexture(const vulkan::VulkanContext& context, VkImageView view,
                                    VkSampler sampler) {
     VkDevice device = context.device();
     TextureBinding binding;
@@ -211,12 +213,13 @@ Result<TextureBinding> bindTexture(const VulkanContext& context, VkImageView vie
     layoutInfo.bindingCount = 1;
     layoutInfo.pBindings = &slot;
     VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-    if (Status s = checkVk(vkCreateDescriptorSetLayout(device, &layoutInfo, nullptr, &layout),
-                           "vkCreateDescriptorSetLayout", std::source_location::current());
+    if (Status s =
+            vulkan::checkVk(vkCreateDescriptorSetLayout(device, &layoutInfo, nullptr, &layout),
+                            "vkCreateDescriptorSetLayout", std::source_location::current());
         !s) {
         return s.error();
     }
-    binding.layout = UniqueHandle<VkDescriptorSetLayout>(device, layout);
+    binding.layout = vulkan::UniqueHandle<VkDescriptorSetLayout>(device, layout);
 
     VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
     VkDescriptorPoolCreateInfo poolInfo{};
@@ -225,20 +228,20 @@ Result<TextureBinding> bindTexture(const VulkanContext& context, VkImageView vie
     poolInfo.poolSizeCount = 1;
     poolInfo.pPoolSizes = &size;
     VkDescriptorPool pool = VK_NULL_HANDLE;
-    if (Status s = checkVk(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool),
-                           "vkCreateDescriptorPool", std::source_location::current());
+    if (Status s = vulkan::checkVk(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool),
+                                   "vkCreateDescriptorPool", std::source_location::current());
         !s) {
         return s.error();
     }
-    binding.pool = UniqueHandle<VkDescriptorPool>(device, pool);
+    binding.pool = vulkan::UniqueHandle<VkDescriptorPool>(device, pool);
 
     VkDescriptorSetAllocateInfo allocateInfo{};
     allocateInfo.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
     allocateInfo.descriptorPool = pool;
     allocateInfo.descriptorSetCount = 1;
     allocateInfo.pSetLayouts = &layout;
-    if (Status s = checkVk(vkAllocateDescriptorSets(device, &allocateInfo, &binding.set),
-                           "vkAllocateDescriptorSets", std::source_location::current());
+    if (Status s = vulkan::checkVk(vkAllocateDescriptorSets(device, &allocateInfo, &binding.set),
+                                   "vkAllocateDescriptorSets", std::source_location::current());
         !s) {
         return s.error();
     }
@@ -254,4 +257,4 @@ Result<TextureBinding> bindTexture(const VulkanContext& context, VkImageView vie
     return binding;
 }
 
-}  // namespace varc::runtime::testing
+}  // namespace varc::render::testing

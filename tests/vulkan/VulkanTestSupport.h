@@ -20,7 +20,7 @@
 #include "varc/vulkan/UniqueHandle.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime::testing {
+namespace varc::render::testing {
 
 // Path of a test shader compiled at build time, e.g. spirvPath("flat.frag").
 std::string spirvPath(const std::string& shaderName);
@@ -32,7 +32,7 @@ protected:
     void SetUp() override;
     void TearDown() override;
 
-    VulkanContext& context() { return *mContext; }
+    vulkan::VulkanContext& context() { return *mContext; }
     // While true, validation messages are recorded but do not fail the test.
     void expectMessages(bool expected) { mExpectMessages = expected; }
     // Messages with this id (e.g. "UNASSIGNED-CoreValidation-Shader-OutputNotConsumed") do not
@@ -40,7 +40,7 @@ protected:
     void tolerate(std::string idName) { mTolerated.insert(std::move(idName)); }
 
     // Declared first so it is destroyed last; tests keep their Vulkan objects in locals.
-    std::optional<VulkanContext> mContext;
+    std::optional<vulkan::VulkanContext> mContext;
     bool mExpectMessages = false;
     std::set<std::string> mTolerated;
     size_t mToleratedCount = 0;
@@ -52,7 +52,7 @@ class PackTest : public VulkanTest {
 protected:
     void SetUp() override;
 
-    std::optional<Pack> mPack;
+    std::optional<reader::Pack> mPack;
 };
 
 // The frame in |rendered|, or an empty frame after failing the current test with the error.
@@ -88,11 +88,11 @@ std::vector<std::string> sceneFiles(const std::string& folder);
 std::string sceneFile(const std::string& folder, const std::string& name);
 
 // The sum of R, G and B over all pixels (8-bit channels as value / 255).
-float rgbSum(const Image& image);
+float rgbSum(const image::Image& image);
 
 // The largest R, G or B difference between two images of one size (8-bit channels as value /
 // 255, so an Rgba8 and a float image compare too).
-float maxRgbDifference(const Image& a, const Image& b);
+float maxRgbDifference(const image::Image& a, const image::Image& b);
 
 struct PipelineDesc {
     VkShaderModule vertex = VK_NULL_HANDLE;
@@ -105,22 +105,22 @@ struct PipelineDesc {
 };
 
 // A triangle-list pipeline with dynamic viewport and scissor, no culling and no blending.
-Result<UniqueHandle<VkPipeline>> createPipeline(const VulkanContext& context,
-                                                const PipelineDesc& desc);
+Result<vulkan::UniqueHandle<VkPipeline>> createPipeline(const vulkan::VulkanContext& context,
+                                                        const PipelineDesc& desc);
 
 // A layout with an optional single set layout and |pushConstantBytes| of fragment push
 // constants (none when 0).
-Result<UniqueHandle<VkPipelineLayout>> createPipelineLayout(const VulkanContext& context,
-                                                            VkDescriptorSetLayout setLayout,
-                                                            uint32_t pushConstantBytes);
+Result<vulkan::UniqueHandle<VkPipelineLayout>> createPipelineLayout(
+    const vulkan::VulkanContext& context, VkDescriptorSetLayout setLayout,
+    uint32_t pushConstantBytes);
 
 // Set 0 holding one combined image sampler at binding 0 for the fragment stage.
 struct TextureBinding {
-    UniqueHandle<VkDescriptorSetLayout> layout;
-    UniqueHandle<VkDescriptorPool> pool;
+    vulkan::UniqueHandle<VkDescriptorSetLayout> layout;
+    vulkan::UniqueHandle<VkDescriptorPool> pool;
     VkDescriptorSet set = VK_NULL_HANDLE;
 };
-Result<TextureBinding> bindTexture(const VulkanContext& context, VkImageView view,
+Result<TextureBinding> bindTexture(const vulkan::VulkanContext& context, VkImageView view,
                                    VkSampler sampler);
 
-}  // namespace varc::runtime::testing
+}  // namespace varc::render::testing

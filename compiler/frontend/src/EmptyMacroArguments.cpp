@@ -8,7 +8,7 @@
 
 #include "varc/core/AsciiIdentifier.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -144,4 +144,4 @@ std::string expandEmptyMacroArguments(std::string_view text) {
     return out;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

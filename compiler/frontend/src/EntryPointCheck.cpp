@@ -9,7 +9,7 @@
 
 #include "pruner/ShaderTokenizer.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -114,4 +114,4 @@ std::optional<UnnamedParameter> findUnnamedEntryParameter(std::string_view prepr
     return std::nullopt;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

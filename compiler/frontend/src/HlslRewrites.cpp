@@ -12,7 +12,7 @@
 #include "pruner/ShaderTokenizer.h"
 #include "varc/core/AsciiIdentifier.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -629,4 +629,4 @@ std::string fixFrontFaceParameterTypes(std::string_view text) {
     return Rewriter(tokenizer).rewriteFrontFaceTypes(text);
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

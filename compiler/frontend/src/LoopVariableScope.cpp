@@ -8,7 +8,7 @@
 
 #include "pruner/ShaderTokenizer.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -137,4 +137,4 @@ std::string hoistLoopVariables(std::string_view text, const std::vector<std::str
     return LoopScopes(tokenizer).rewrite(text, unknownNames);
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -8,7 +8,7 @@
 
 #include "varc/core/AsciiIdentifier.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -87,4 +87,4 @@ std::string undefineBeforeRedefinitions(std::string_view text,
     return result;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

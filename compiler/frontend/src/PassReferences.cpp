@@ -8,7 +8,7 @@
 
 #include "varc/core/AsciiCase.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -140,4 +140,4 @@ void resolvePassReferences(shaderlab::ShaderFile& shader, ShaderCatalog& catalog
     }
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

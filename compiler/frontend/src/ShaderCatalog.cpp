@@ -5,7 +5,7 @@
 #include "varc/core/Diagnostic.h"
 #include "varc/shaderlab/ShaderLabParser.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -61,4 +61,4 @@ const shaderlab::ShaderFile* ShaderCatalog::find(std::string_view name) {
     return findInGroups(std::string(kLegacyPrefix) + std::string(name));
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -10,7 +10,7 @@
 #include "varc/shaderlab/ShaderLabParser.h"
 #include "varc/variants/PragmaParser.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -253,4 +253,4 @@ std::optional<LoadedShader> loadShader(const std::string& path,
     return shader;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -13,7 +13,7 @@
 #include "pruner/PrunedTextWriter.h"
 #include "pruner/ShaderTokenizer.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 namespace {
 
 using pruner::Declaration;
@@ -124,4 +124,4 @@ PruneResult pruneToEntryPoint(std::string_view preprocessed, std::string_view en
     return result;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

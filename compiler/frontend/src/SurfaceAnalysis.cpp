@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -331,4 +331,4 @@ std::optional<SurfaceFacts> analyzeSurface(const shaderlab::SurfaceProgram& prog
     return facts;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

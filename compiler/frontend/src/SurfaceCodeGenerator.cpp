@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <array>
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -509,4 +509,4 @@ shaderlab::GeneratedCode generateSurfaceCode(const shaderlab::SurfaceProgram& pr
     return {writeBefore(plan), after.take(), program.pragma};
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -7,7 +7,7 @@
 
 #include "varc/frontend/SurfaceCodeGenerator.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -111,4 +111,4 @@ bool generateSurfacePasses(shaderlab::ShaderFile& shader, const SurfaceTextProvi
     return ok;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

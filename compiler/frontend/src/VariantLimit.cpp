@@ -8,7 +8,7 @@
 
 #include "varc/variants/PassKeywords.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 namespace {
 
@@ -47,4 +47,4 @@ bool checkVariantLimit(const LoadedShader& shader, const LoadedPass& pass, uint6
     return false;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

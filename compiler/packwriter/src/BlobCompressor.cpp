@@ -11,7 +11,7 @@
 
 #include "varc/core/Check.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 namespace {
 
@@ -139,4 +139,4 @@ CompressedBlobs compressBlobs(const std::vector<std::string>& blobs,
     return out;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -9,7 +9,7 @@
 #include "varc/pack/PackFormat.h"
 #include "varc/packwriter/PackWriter.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 struct StoredBlob {
     pack::BlobCodec codec = pack::BlobCodec::Stored;
@@ -31,4 +31,4 @@ struct CompressedBlobs {
 CompressedBlobs compressBlobs(const std::vector<std::string>& blobs,
                               const PackWriteOptions& options);
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -9,7 +9,7 @@
 #include "varc/core/Check.h"
 #include "varc/pack/LittleEndian.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 namespace {
 
@@ -52,4 +52,4 @@ std::string assembleChunks(const std::vector<std::pair<pack::Chunk, std::string>
     return out;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -9,11 +9,11 @@
 
 #include "varc/pack/PackFormat.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 // Returns the pack file for |chunks| (in the order given) and |inputsHash|: the 64-byte header,
 // the chunk table, then each chunk at the next 8-aligned offset with zero padding between.
 std::string assembleChunks(const std::vector<std::pair<pack::Chunk, std::string>>& chunks,
                            uint64_t inputsHash);
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -7,7 +7,7 @@
 #include "varc/pack/PackModel.h"
 #include "varc/packwriter/PackWriter.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 // Fills Tools, Shaders, ShaderNames, Passes, Tags, StringLists (keyword tables and sets),
 // KeywordSets, RenderStates, VariantKeys, VariantPrograms and VariantOrder. Aborts through
@@ -19,4 +19,4 @@ void encodeShaders(const pack::PackContents& contents, const ProgramTable& progr
 void encodePrograms(const ProgramTable& programs, const PackWriteOptions& options, TableSet& tables,
                     PackWriteStats& stats);
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -8,7 +8,7 @@
 #include "TableSet.h"
 #include "varc/core/AtomicFile.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 std::string serializePack(const pack::PackContents& contents, const PackWriteOptions& options,
                           PackWriteStats* stats) {
@@ -28,4 +28,4 @@ Status writePack(const std::string& path, const pack::PackContents& contents,
     return writeFileAtomically(path, serializePack(contents, options, stats));
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

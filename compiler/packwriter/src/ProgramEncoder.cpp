@@ -11,7 +11,7 @@
 #include "varc/pack/LittleEndian.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 namespace {
 
@@ -188,4 +188,4 @@ void encodePrograms(const ProgramTable& programs, const PackWriteOptions& option
     encodeBlobs(blobs, options, tables, stats);
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

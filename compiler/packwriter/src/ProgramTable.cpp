@@ -7,7 +7,7 @@
 #include "varc/core/Check.h"
 #include "varc/pack/PackFormat.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 namespace {
 
@@ -65,4 +65,4 @@ uint32_t ProgramTable::use(const pack::PackContents& contents, uint32_t original
     return mRemap[original] = index;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

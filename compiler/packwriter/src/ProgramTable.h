@@ -8,7 +8,7 @@
 
 #include "varc/pack/PackModel.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 class ProgramTable {
 public:
@@ -31,4 +31,4 @@ private:
     std::unordered_map<uint64_t, std::vector<uint32_t>> mByHash;  // content hash -> pack indices
 };
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

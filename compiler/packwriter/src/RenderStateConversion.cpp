@@ -8,7 +8,7 @@
 
 #include "varc/core/AsciiCase.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 namespace {
 
@@ -219,4 +219,4 @@ ConvertedRenderState fromShaderLab(const shaderlab::RenderState& state) {
     return result;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

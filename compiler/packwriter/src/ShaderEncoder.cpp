@@ -10,7 +10,7 @@
 #include "varc/pack/KeyEncoding.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 namespace {
 
@@ -180,4 +180,4 @@ void encodeShaders(const pack::PackContents& contents, const ProgramTable& progr
     encodeShaderNames(contents, tables);
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -6,7 +6,7 @@
 #include "varc/core/Check.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 StringPool::StringPool() { intern(""); }
 
@@ -27,4 +27,4 @@ std::string StringPool::stringsChunk() const {
     return table.serialize();
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -8,7 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 class StringPool {
 public:
@@ -27,4 +27,4 @@ private:
     std::string mBytes;
 };
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -6,7 +6,7 @@
 #include "varc/pack/LittleEndian.h"
 #include "varc/pack/PackFormat.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 uint32_t TableBuilder::add(std::span<const uint32_t> fields) {
     VARC_CHECK(fields.size() == mFieldCount)
@@ -37,4 +37,4 @@ std::string TableBuilder::serialize() const {
     return out;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

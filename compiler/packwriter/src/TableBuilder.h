@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 class TableBuilder {
 public:
@@ -38,4 +38,4 @@ private:
     std::map<std::vector<uint32_t>, uint32_t> mRuns;  // run fields -> first record
 };
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -5,7 +5,7 @@
 #include "varc/core/Check.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 TableSet::TableSet() {
     for (size_t i = 0; i < pack::kChunkCount; ++i) {
@@ -49,4 +49,4 @@ std::vector<std::pair<pack::Chunk, std::string>> TableSet::finish() const {
     return chunks;
 }
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -12,7 +12,7 @@
 #include "TableBuilder.h"
 #include "varc/pack/PackFormat.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 class TableSet {
 public:
@@ -33,4 +33,4 @@ private:
     std::array<std::string, pack::kChunkCount> mRaw;
 };
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

@@ -8,7 +8,7 @@
 
 #include "varc/core/Check.h"
 
-namespace varc::runtime {
+namespace varc::image {
 
 namespace {
 
@@ -115,4 +115,4 @@ uint16_t floatToHalf(float value) {
     return static_cast<uint16_t>(sign | (rounded >> 13));
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::image

@@ -11,7 +11,7 @@
 #include "varc/core/AtomicFile.h"
 #include "varc/core/FileRead.h"
 
-namespace varc::runtime {
+namespace varc::image {
 
 namespace {
 
@@ -130,4 +130,4 @@ Result<Image> readPng(const std::string& path) {
     return image;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::image

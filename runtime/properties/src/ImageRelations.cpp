@@ -15,8 +15,8 @@ namespace varc::properties {
 
 namespace {
 
-using runtime::Image;
-using runtime::PixelFormat;
+using image::Image;
+using image::PixelFormat;
 
 // |image| as floats (8-bit channels as value / 255).
 std::vector<float> floatsOf(const Image& image) {

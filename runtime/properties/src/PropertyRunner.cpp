@@ -18,7 +18,7 @@ namespace varc::properties {
 
 namespace {
 
-using runtime::Image;
+using image::Image;
 
 // Half-float storage (RGBA16F) rounds to 11 significant bits: 2^-11 relative per stored value.
 constexpr float kHalfUlp = 1.0f / 2048.0f;
@@ -51,7 +51,7 @@ std::string fileSafe(std::string text) {
 }
 
 // " [variant] [variant]": the distinct variants |frame| drew, in first-draw order.
-std::string variantList(const runtime::RenderedFrame& frame) {
+std::string variantList(const render::RenderedFrame& frame) {
     std::set<std::string> seen;
     std::string list;
     for (const std::string& variant : frame.variants)
@@ -62,14 +62,14 @@ std::string variantList(const runtime::RenderedFrame& frame) {
 // The renders of one shader, by case label, and the relations checked on them.
 class ShaderCheck {
 public:
-    ShaderCheck(runtime::Renderer& renderer, const PropertyOptions& options, ShaderReport& report)
+    ShaderCheck(render::Renderer& renderer, const PropertyOptions& options, ShaderReport& report)
         : mRenderer(renderer), mOptions(options), mReport(report) {
         for (const std::string& name : relationNames())
             mReport.relations.push_back({name, Verdict::NotApplicable, {}, {}});
     }
 
     // The frame of |scene| under |label| (drawn once); nullptr after recording a render error.
-    const runtime::RenderedFrame* render(const std::string& label, const scene::Scene& scene) {
+    const render::RenderedFrame* render(const std::string& label, const scene::Scene& scene) {
         auto found = mFrames.find(label);
         if (found != mFrames.end()) return &found->second;
         auto frame = mRenderer.render(scene);
@@ -85,8 +85,8 @@ public:
 
     // Checks |relation| on case |label|: the render |actual| against sum(weight x render).
     void relate(const std::string& relation, const std::string& label,
-                const runtime::RenderedFrame* actual,
-                const std::vector<std::pair<const runtime::RenderedFrame*, float>>& terms,
+                const render::RenderedFrame* actual,
+                const std::vector<std::pair<const render::RenderedFrame*, float>>& terms,
                 const Tolerance& tolerance) {
         if (!actual) return;
         std::vector<Term> imageTerms;
@@ -105,8 +105,8 @@ public:
 
     // Checks that |lit| is brighter than |unlit| by more than 1/64 on at least 2% of its pixels:
     // a key light in range lights the objects (so the other relations compare lit images).
-    void requireLight(const std::string& label, const runtime::RenderedFrame* lit,
-                      const runtime::RenderedFrame* unlit) {
+    void requireLight(const std::string& label, const render::RenderedFrame* lit,
+                      const render::RenderedFrame* unlit) {
         if (!lit || !unlit) return;
         const size_t pixels = size_t{lit->image.width()} * lit->image.height();
         const size_t brighter = pixelsBrighter(lit->image, unlit->image, 1.0f / 64.0f);
@@ -123,8 +123,8 @@ public:
 
     // Like render(), for a coverage render that may fail without failing the check (directional
     // shadows need Hidden/varc/ScreenSpaceShadows in a pack): the error goes to |why|.
-    const runtime::RenderedFrame* tryRender(const std::string& label, const scene::Scene& scene,
-                                            std::string& why) {
+    const render::RenderedFrame* tryRender(const std::string& label, const scene::Scene& scene,
+                                           std::string& why) {
         auto frame = mRenderer.render(scene);
         if (!frame) {
             why = label + ": " + frame.error().detail;
@@ -137,25 +137,25 @@ public:
     }
 
     // |source| with its image flipped left to right, kept under |label| (not a render).
-    const runtime::RenderedFrame* flipped(const std::string& label,
-                                          const runtime::RenderedFrame* source) {
+    const render::RenderedFrame* flipped(const std::string& label,
+                                         const render::RenderedFrame* source) {
         if (!source) return nullptr;
-        runtime::RenderedFrame frame = *source;
+        render::RenderedFrame frame = *source;
         frame.image = flippedLeftRight(source->image);
         return &mFrames.insert_or_assign(label, std::move(frame)).first->second;
     }
 
     // |source| with its image turned a quarter turn clockwise, kept under |label| (not a render).
-    const runtime::RenderedFrame* quarterTurned(const std::string& label,
-                                                const runtime::RenderedFrame* source) {
+    const render::RenderedFrame* quarterTurned(const std::string& label,
+                                               const render::RenderedFrame* source) {
         if (!source) return nullptr;
-        runtime::RenderedFrame frame = *source;
+        render::RenderedFrame frame = *source;
         frame.image = properties::quarterTurned(source->image);
         return &mFrames.insert_or_assign(label, std::move(frame)).first->second;
     }
 
     // The frame drawn under |label|, or nullptr (not drawn, or its render failed).
-    const runtime::RenderedFrame* frame(const std::string& label) const {
+    const render::RenderedFrame* frame(const std::string& label) const {
         auto found = mFrames.find(label);
         return found == mFrames.end() ? nullptr : &found->second;
     }
@@ -167,8 +167,7 @@ public:
     }
 
 private:
-
-    void checkFinite(const std::string& label, const runtime::RenderedFrame& frame) {
+    void checkFinite(const std::string& label, const render::RenderedFrame& frame) {
         RelationOutcome& outcome = outcomeOf("finite");
         NonFinite found = findNonFinite(frame.image);
         if (found.count == 0) {
@@ -184,7 +183,7 @@ private:
     // Fails |outcome| on case |label|: its detail line (the finding, the variants |frame| drew,
     // the images written) and its FailedCase.
     void recordFailure(RelationOutcome& outcome, const std::string& label,
-                       const std::string& finding, const runtime::RenderedFrame& frame,
+                       const std::string& finding, const render::RenderedFrame& frame,
                        const RelationCheck* check) {
         outcome.verdict = Verdict::Fail;
         FailedCase failed{label, finding, {}, {}};
@@ -209,7 +208,7 @@ private:
         if (error) return " (images not written: " + error.message() + ")";
         std::string base = (dir / (relation + "." + fileSafe(label))).string();
         auto shown = [](const Image& image) {
-            return image.isFloat() ? image.toRgba8(runtime::Tonemap::Reinhard) : image;
+            return image.isFloat() ? image.toRgba8(image::Tonemap::Reinhard) : image;
         };
         std::vector<std::pair<std::string, Image>> images{{base + ".actual.png", shown(actual)}};
         if (check) {
@@ -217,17 +216,17 @@ private:
             images.emplace_back(base + ".diff.png", check->diff);
         }
         for (const auto& [path, image] : images) {
-            if (Status status = runtime::writePng(path, image); !status)
+            if (Status status = image::writePng(path, image); !status)
                 return " (images not written: " + status.error().detail + ")";
         }
         for (const auto& image : images) written.push_back(image.first);
         return " -> " + base + ".*.png";
     }
 
-    runtime::Renderer& mRenderer;
+    render::Renderer& mRenderer;
     const PropertyOptions& mOptions;
     ShaderReport& mReport;
-    std::map<std::string, runtime::RenderedFrame> mFrames;
+    std::map<std::string, render::RenderedFrame> mFrames;
 };
 
 // Cookie PNGs in <outDir>/cookies: alpha 1 everywhere (white) and alpha 0 (black).
@@ -238,11 +237,11 @@ Result<std::pair<std::string, std::string>> writeCookies(const std::string& outD
     if (error) return makeError(ErrorCode::IoError, dir.string() + ": " + error.message());
     std::pair<std::string, std::string> paths{(dir / "white.png").string(),
                                               (dir / "black.png").string()};
-    Image white(16, 16, runtime::PixelFormat::Rgba8), black(16, 16, runtime::PixelFormat::Rgba8);
+    Image white(16, 16, image::PixelFormat::Rgba8), black(16, 16, image::PixelFormat::Rgba8);
     for (uint8_t& byte : white.bytes()) byte = 255;
     for (size_t i = 0; i < black.bytes().size(); ++i) black.bytes()[i] = i % 4 == 3 ? 0 : 255;
-    if (Status written = runtime::writePng(paths.first, white); !written) return written.error();
-    if (Status written = runtime::writePng(paths.second, black); !written) return written.error();
+    if (Status written = image::writePng(paths.first, white); !written) return written.error();
+    if (Status written = image::writePng(paths.second, black); !written) return written.error();
     return paths;
 }
 
@@ -320,10 +319,10 @@ std::string drawCoverage(ShaderCheck& c, const LightSupport& support,
 // The variants of |shader|'s (first) ForwardBase and ForwardAdd passes that the forward renderer
 // can select for some light (variants::lightKeywords: light type, cookie, shadows, vertex
 // lights, HDR; light probes on; no material keywords), as VariantView::describe() gives them.
-std::set<std::string> reachableVariants(const runtime::ShaderView& shader) {
+std::set<std::string> reachableVariants(const reader::ShaderView& shader) {
     std::set<std::string> reachable;
     for (const char* lightMode : {"ForwardBase", "ForwardAdd"}) {
-        std::optional<runtime::PassView> pass = shader.pass(std::string_view(lightMode));
+        std::optional<reader::PassView> pass = shader.pass(std::string_view(lightMode));
         if (!pass) continue;
         for (auto type : {variants::LightType::Directional, variants::LightType::Point,
                           variants::LightType::Spot}) {
@@ -352,7 +351,7 @@ std::set<std::string> reachableVariants(const runtime::ShaderView& shader) {
 
 // `every_variant`: each variant the renderer can select was drawn by some render of the check;
 // when directional shadows could not be drawn (|why|), the SHADOWS_SCREEN variants are left out.
-void checkEveryVariant(ShaderCheck& c, const runtime::ShaderView& shader, ShaderReport& report,
+void checkEveryVariant(ShaderCheck& c, const reader::ShaderView& shader, ShaderReport& report,
                        const std::string& why) {
     if (!report.error.empty()) return;
     const std::set<std::string> reachable = reachableVariants(shader);
@@ -378,10 +377,10 @@ void checkEveryVariant(ShaderCheck& c, const runtime::ShaderView& shader, Shader
 // packs, a G-buffer variant missing) fails the relation with the renderer's error.
 void compareDeferred(ShaderCheck& c, const std::string& label, scene::Scene scene,
                      const Tolerance& tolerance) {
-    const runtime::RenderedFrame* forward = c.render(label, scene);
+    const render::RenderedFrame* forward = c.render(label, scene);
     scene.camera.path = scene::RenderPath::Deferred;
     std::string why;
-    const runtime::RenderedFrame* deferred = c.tryRender(label + " deferred", scene, why);
+    const render::RenderedFrame* deferred = c.tryRender(label + " deferred", scene, why);
     if (!deferred) {
         RelationOutcome& outcome = c.outcomeOf("forward_deferred");
         outcome.verdict = Verdict::Fail;
@@ -557,13 +556,13 @@ void markNotApplicable(ShaderCheck& c, const std::vector<std::string>& relations
 // "not-lit" when no key light the shader takes changes kSharePercent of the pixels by more than
 // kVisible against the unlit render; returns the counts ("directional 0, point 3 of 4096").
 bool notLit(const ShaderCheck& c, const LightSupport& support, std::string& counts) {
-    const runtime::RenderedFrame* none = c.frame("no lights");
+    const render::RenderedFrame* none = c.frame("no lights");
     if (!none) return false;
     std::vector<std::string> keys{"directional"};
     if (support.point) keys.push_back("point");
     if (support.spot) keys.push_back("spot");
     for (const std::string& key : keys) {
-        const runtime::RenderedFrame* lit = c.frame(key);
+        const render::RenderedFrame* lit = c.frame(key);
         if (!lit) return false;
         const size_t changed = pixelsChanged(lit->image, none->image, kVisible);
         if (atLeastShare(changed, lit->image)) return false;
@@ -581,8 +580,8 @@ bool nonLinear(const ShaderCheck& c, const LightSupport& support, std::string& c
     if (support.point) cases.emplace_back("point", "point x2");
     bool responds = false;
     for (const auto& [once, twice] : cases) {
-        const runtime::RenderedFrame* a = c.frame(once);
-        const runtime::RenderedFrame* b = c.frame(twice);
+        const render::RenderedFrame* a = c.frame(once);
+        const render::RenderedFrame* b = c.frame(twice);
         if (!a || !b) return false;
         const Growth growth = contributionGrowth(a->image, b->image, kZero, 2 * kHalfUlp, kVisible);
         if (growth.shrinking > 0) return false;
@@ -672,12 +671,12 @@ const std::vector<std::string>& relationNames() {
     return kNames;
 }
 
-std::vector<runtime::ShaderView> lightingShaders(const std::vector<const runtime::Pack*>& packs) {
-    std::vector<runtime::ShaderView> shaders;
+std::vector<reader::ShaderView> lightingShaders(const std::vector<const reader::Pack*>& packs) {
+    std::vector<reader::ShaderView> shaders;
     std::set<std::string, std::less<>> seen;
-    for (const runtime::Pack* pack : packs) {
+    for (const reader::Pack* pack : packs) {
         for (size_t i = 0; i < pack->shaderCount(); ++i) {
-            runtime::ShaderView shader = pack->shader(i);
+            reader::ShaderView shader = pack->shader(i);
             if (!shader.pass("ForwardBase")) continue;
             if (seen.insert(std::string(shader.name())).second) shaders.push_back(shader);
         }
@@ -685,10 +684,10 @@ std::vector<runtime::ShaderView> lightingShaders(const std::vector<const runtime
     return shaders;
 }
 
-PropertyRunner::PropertyRunner(runtime::Renderer& renderer, PropertyOptions options)
+PropertyRunner::PropertyRunner(render::Renderer& renderer, PropertyOptions options)
     : mRenderer(renderer), mOptions(std::move(options)) {}
 
-ShaderReport PropertyRunner::check(const runtime::ShaderView& shader) {
+ShaderReport PropertyRunner::check(const reader::ShaderView& shader) {
     ShaderReport report;
     report.shader = std::string(shader.name());
     ShaderCheck check(mRenderer, mOptions, report);
@@ -698,7 +697,7 @@ ShaderReport PropertyRunner::check(const runtime::ShaderView& shader) {
         return report;
     }
     for (const char* lightMode : {"ForwardBase", "ForwardAdd"}) {
-        if (std::optional<runtime::PassView> pass = shader.pass(lightMode))
+        if (std::optional<reader::PassView> pass = shader.pass(lightMode))
             report.litVariants += pass->variantCount();
     }
     const LightSupport support = lightSupportOf(shader);

@@ -16,17 +16,17 @@ scene::Object object(const std::string& shader, scene::MeshKind mesh, glm::vec3 
     return result;
 }
 
-bool declares(const runtime::PassView& pass, std::string_view keyword) {
+bool declares(const reader::PassView& pass, std::string_view keyword) {
     return pass.keywordIndex(keyword).has_value();
 }
 
 }  // namespace
 
-LightSupport lightSupportOf(const runtime::ShaderView& shader) {
+LightSupport lightSupportOf(const reader::ShaderView& shader) {
     LightSupport support;
     support.forwardBase = shader.pass("ForwardBase").has_value();
     support.deferred = shader.pass("Deferred").has_value();
-    std::optional<runtime::PassView> add = shader.pass("ForwardAdd");
+    std::optional<reader::PassView> add = shader.pass("ForwardAdd");
     if (!support.forwardBase || !add) return support;
     support.forwardAdd = true;
     const bool anyLightKeyword = declares(*add, "POINT") || declares(*add, "SPOT") ||

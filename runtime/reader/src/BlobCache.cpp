@@ -9,7 +9,7 @@
 
 #include "varc/pack/PackTables.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 namespace {
 
@@ -96,4 +96,4 @@ const ZSTD_DDict_s* BlobCache::dictionary() const {
     return mDictionary;
 }
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

@@ -13,7 +13,7 @@
 
 struct ZSTD_DDict_s;
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 // Thread-safe: each blob's slot is filled under its own std::once_flag, the shared dictionary
 // under another, and a filled slot is never changed again, so the returned spans stay valid
@@ -53,4 +53,4 @@ private:
     mutable ZSTD_DDict_s* mDictionary = nullptr;
 };
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

@@ -11,7 +11,7 @@
 #include "Unflattener.h"
 #include "varc/pack/LittleEndian.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 namespace {
 
@@ -159,4 +159,4 @@ Status ChunkDirectory::addChunk(uint32_t fourcc, std::span<const std::byte> data
     return Ok{};
 }
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

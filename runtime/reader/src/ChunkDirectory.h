@@ -10,7 +10,7 @@
 #include "varc/core/Result.h"
 #include "varc/pack/PackFormat.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 struct PackHeader {
     uint16_t major = 0;
@@ -46,4 +46,4 @@ private:
     std::array<std::optional<std::span<const std::byte>>, pack::kChunkCount> mChunks;
 };
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

@@ -5,7 +5,7 @@
 
 #include "varc/pack/LittleEndian.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 // A 64-bit finaliser (from MurmurHash3's fmix64): keys are bit sets with few bits, so they need
 // real mixing before masking.
@@ -38,4 +38,4 @@ uint32_t KeyHashIndex::find(uint64_t want) const {
     }
 }
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

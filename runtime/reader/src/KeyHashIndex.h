@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 class KeyHashIndex {
 public:
@@ -35,4 +35,4 @@ private:
     uint64_t mMask = 0;
 };
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

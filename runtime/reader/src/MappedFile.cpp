@@ -11,7 +11,7 @@
 #include <cstring>
 #include <utility>
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 namespace {
 
@@ -68,4 +68,4 @@ Result<MappedFile> MappedFile::map(const std::string& path) {
     return file;
 }
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

@@ -8,7 +8,7 @@
 
 #include "varc/core/Result.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 class MappedFile {
 public:
@@ -32,4 +32,4 @@ private:
     size_t mSize = 0;
 };
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

@@ -7,7 +7,7 @@
 #include "varc/pack/PackTables.h"
 #include "varc/pack/PartialPack.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 using pack::Chunk;
 
@@ -93,4 +93,4 @@ ProgramView Pack::program(size_t index) const {
     return ProgramView(mImage.get(), static_cast<uint32_t>(index));
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

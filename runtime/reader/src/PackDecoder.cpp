@@ -2,7 +2,7 @@
 // Decodes a whole open Pack back into PackContents (for tests, tools and round trips).
 #include "varc/reader/PackDecoder.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 namespace {
 
@@ -67,4 +67,4 @@ Result<pack::PackContents> decodePack(const Pack& pack) {
     return contents;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

@@ -9,7 +9,7 @@
 #include "varc/pack/KeyEncoding.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 PackImage::PackImage(MappedFile mapping) : mMapping(std::move(mapping)) {
     mBytes = mMapping.bytes();
@@ -116,4 +116,4 @@ const std::vector<variants::VariantKey>& PackImage::enumerationKeys(uint32_t pas
     return cache.keys;
 }
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

@@ -21,7 +21,7 @@
 #include "varc/reader/Pack.h"
 #include "varc/variants/VariantKey.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 // Owns the pack's storage (a mapping, or an aligned copy) and the lazily built caches. After
 // load() succeeded every record index, range and string id reachable from the tables is known
@@ -79,4 +79,4 @@ private:
     std::vector<KeyHashIndex> mKeyIndexes;  // per Passes record, built by load()
 };
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

@@ -4,7 +4,7 @@
 
 #include "varc/core/Result.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 class PackImage;
 
@@ -19,4 +19,4 @@ Status validateSchemas(const PackImage& image);
 // in the slot of their stage; blobs inside BlobData with sane codecs and sizes.
 Status validateReferences(const PackImage& image);
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

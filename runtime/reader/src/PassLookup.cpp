@@ -7,7 +7,7 @@
 #include "varc/pack/PackTables.h"
 #include "varc/reader/PassView.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 using pack::Chunk;
 
@@ -124,4 +124,4 @@ Result<VariantView> PassView::lookupMiss(const variants::VariantKey& requested,
     return makeError(ErrorCode::NotFound, message);
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

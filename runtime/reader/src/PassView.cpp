@@ -7,7 +7,7 @@
 #include "varc/core/Check.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 using pack::Chunk;
 
@@ -136,4 +136,4 @@ std::string PassView::describe() const {
     return text;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

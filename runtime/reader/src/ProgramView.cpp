@@ -6,7 +6,7 @@
 #include "ReflectionDecoder.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 using pack::Chunk;
 
@@ -56,4 +56,4 @@ std::string ProgramView::describe() const {
            stageName(stage()) + " program '" + std::string(entryPoint()) + "')";
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

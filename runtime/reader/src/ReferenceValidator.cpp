@@ -11,7 +11,7 @@
 #include "varc/pack/KeyEncoding.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 namespace {
 
@@ -185,4 +185,4 @@ Status validateReferences(const PackImage& image) {
     return Ok{};
 }
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

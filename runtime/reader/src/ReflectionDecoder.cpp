@@ -5,7 +5,7 @@
 #include "PackImage.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 namespace {
 
@@ -102,4 +102,4 @@ pack::ProgramReflection decodeReflection(const PackImage& image, uint32_t record
     return reflection;
 }
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

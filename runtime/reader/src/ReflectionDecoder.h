@@ -6,11 +6,11 @@
 
 #include "varc/pack/ProgramReflection.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 class PackImage;
 
 // |record| < the Reflections count of the validated |image|.
 pack::ProgramReflection decodeReflection(const PackImage& image, uint32_t record);
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

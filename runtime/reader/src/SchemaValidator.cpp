@@ -7,7 +7,7 @@
 #include "PackValidator.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 namespace {
 
@@ -101,4 +101,4 @@ Status validateSchemas(const PackImage& image) {
     return Ok{};
 }
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

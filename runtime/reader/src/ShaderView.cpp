@@ -8,7 +8,7 @@
 #include "varc/core/AsciiCase.h"
 #include "varc/pack/PackTables.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 using pack::Chunk;
 
@@ -53,4 +53,4 @@ std::vector<pack::ShaderProperty> ShaderView::properties() const {
     return properties;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

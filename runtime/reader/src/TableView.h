@@ -7,7 +7,7 @@
 
 #include "varc/pack/LittleEndian.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 struct TableView {
     const std::byte* records = nullptr;
@@ -21,4 +21,4 @@ struct TableView {
     }
 };
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

@@ -4,7 +4,7 @@
 
 #include "varc/pack/LittleEndian.h"
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 bool Unflattener::seek(size_t offset) {
     if (offset > mBytes.size()) return false;
@@ -31,4 +31,4 @@ bool Unflattener::readBytes(size_t count, std::span<const std::byte>& out) {
     return true;
 }
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

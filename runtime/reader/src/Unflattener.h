@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <span>
 
-namespace varc::runtime::detail {
+namespace varc::reader::detail {
 
 // Every read checks the remaining size first (sizes are compared, never pointers past the end)
 // and returns false, leaving the cursor unchanged, when the bytes are not there.
@@ -31,4 +31,4 @@ private:
     size_t mOffset = 0;
 };
 
-}  // namespace varc::runtime::detail
+}  // namespace varc::reader::detail

@@ -7,7 +7,7 @@
 #include "varc/pack/PackTables.h"
 #include "varc/reader/PassView.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 using pack::Chunk;
 
@@ -58,4 +58,4 @@ std::string VariantView::describe() const {
     return text + "}";
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

@@ -16,7 +16,7 @@
 namespace varc::reference {
 namespace {
 
-float toHalf(float v) { return runtime::halfToFloat(runtime::floatToHalf(v)); }
+float toHalf(float v) { return image::halfToFloat(image::floatToHalf(v)); }
 float unorm8(float v) { return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f); }
 
 Status readProperty(const scene::PropertyValue& value, const std::string& name, glm::vec4& out) {
@@ -262,8 +262,8 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
     out.visibility = rasterizeScene(scene, camera);
     out.classes = classifyPixels(scene, out.visibility);
     const uint32_t w = scene.camera.width, h = scene.camera.height;
-    out.color = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
-    if (anyShadowMap) out.colorHigh = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
+    out.color = image::Image(w, h, image::PixelFormat::RgbaFloat);
+    if (anyShadowMap) out.colorHigh = image::Image(w, h, image::PixelFormat::RgbaFloat);
     const bool hdr = scene.camera.hdr;
     glm::vec4 background = scene.camera.background;
     for (int c = 0; c < 4; ++c)

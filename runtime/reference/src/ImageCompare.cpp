@@ -60,9 +60,9 @@ const std::array<uint8_t, 4>& maskColour(PixelClass cls, bool interval) {
 
 }  // namespace
 
-CompareResult compareImages(const runtime::Image& rendered, const runtime::Image& reference,
+CompareResult compareImages(const image::Image& rendered, const image::Image& reference,
                             const Classification& classes, const Tolerance& tolerance,
-                            const runtime::Image* referenceHigh) {
+                            const image::Image* referenceHigh) {
     CompareResult r;
     const uint32_t w = reference.width(), h = reference.height();
     if (rendered.width() != w || rendered.height() != h || classes.width != w ||
@@ -80,8 +80,8 @@ CompareResult compareImages(const runtime::Image& rendered, const runtime::Image
         return referenceHigh ? referenceHigh->pixelFloat(x, y) : reference.pixelFloat(x, y);
     };
     const int channels = tolerance.compareAlpha ? 4 : 3;
-    r.diff = runtime::Image(w, h, runtime::PixelFormat::Rgba8);
-    r.mask = runtime::Image(w, h, runtime::PixelFormat::Rgba8);
+    r.diff = image::Image(w, h, image::PixelFormat::Rgba8);
+    r.mask = image::Image(w, h, image::PixelFormat::Rgba8);
     double signedSum = 0.0, absSum = 0.0;
     uint64_t samples = 0;
     for (uint32_t y = 0; y < h; ++y) {

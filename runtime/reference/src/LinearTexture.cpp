@@ -19,7 +19,7 @@ int wrap(int i, int size) { return ((i % size) + size) % size; }
 }  // namespace
 
 Result<std::shared_ptr<const LinearTexture>> LinearTexture::load(const std::string& path) {
-    auto image = runtime::readPng(path);
+    auto image = image::readPng(path);
     if (!image) return image.error();
     auto texture = std::make_shared<LinearTexture>();
     texture->mWidth = image->width();

@@ -296,7 +296,7 @@ Result<ObjectDraw> prepareObject(const scene::Scene& scene, const scene::Object&
 }
 
 float quantize8(float v) { return std::round(std::clamp(v, 0.0f, 1.0f) * 255.0f); }
-float toHalf(float v) { return runtime::halfToFloat(runtime::floatToHalf(v)); }
+float toHalf(float v) { return image::halfToFloat(image::floatToHalf(v)); }
 
 // The attachment after all passes: LDR in 8-bit units (0..255), HDR in half-rounded floats.
 glm::vec4 accumulate(const glm::vec4& base, const std::vector<glm::vec4>& adds, bool hdr) {
@@ -469,10 +469,10 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
     out.visibility = rasterizeScene(scene, camera, drawn);
     out.classes = classifyPixels(scene, out.visibility);
     const uint32_t w = scene.camera.width, h = scene.camera.height;
-    out.color = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
+    out.color = image::Image(w, h, image::PixelFormat::RgbaFloat);
     const bool anyShadowMap = std::any_of(shadowMaps.maps.begin(), shadowMaps.maps.end(),
                                           [](const auto& map) { return map != nullptr; });
-    if (anyShadowMap) out.colorHigh = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
+    if (anyShadowMap) out.colorHigh = image::Image(w, h, image::PixelFormat::RgbaFloat);
     const bool hdr = scene.camera.hdr;
     const glm::vec4 background = accumulate(scene.camera.background, {}, hdr);
     for (uint32_t y = 0; y < h; ++y) {

@@ -140,7 +140,7 @@ float LightTextureSet::directionalCookie(const glm::vec2& uv, const std::string&
 Status LightTextureSet::loadCookieFiles(const std::vector<scene::Light>& lights) {
     for (const scene::Light& light : lights) {
         if (!scene::isTextureFile(light.cookie) || mFiles.count(light.cookie)) continue;
-        auto image = runtime::readPng(light.cookie);
+        auto image = image::readPng(light.cookie);
         if (!image) return makeError(image.error().code, "cookie: " + image.error().detail);
         scene::CookieImage cookie;
         cookie.width = image->width();

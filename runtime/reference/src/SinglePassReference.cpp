@@ -112,7 +112,7 @@ glm::vec3 shadeFragment(const ObjectShading& object, const SurfaceSample& sample
 glm::vec4 quantize(const glm::vec4& c, bool hdr) {
     glm::vec4 out;
     for (int i = 0; i < 4; ++i) {
-        out[i] = hdr ? runtime::halfToFloat(runtime::floatToHalf(c[i]))
+        out[i] = hdr ? image::halfToFloat(image::floatToHalf(c[i]))
                      : std::round(saturate(c[i]) * 255.0f) / 255.0f;
     }
     return out;
@@ -165,7 +165,7 @@ Result<ReferenceImage> renderSinglePassReference(const scene::Scene& scene,
     out.visibility = rasterizeScene(scene, camera);
     out.classes = classifyPixels(scene, out.visibility);
     const uint32_t w = scene.camera.width, h = scene.camera.height;
-    out.color = runtime::Image(w, h, runtime::PixelFormat::RgbaFloat);
+    out.color = image::Image(w, h, image::PixelFormat::RgbaFloat);
     const bool hdr = scene.camera.hdr;
     const glm::vec4 background = quantize(scene.camera.background, hdr);
     for (uint32_t y = 0; y < h; ++y) {

@@ -7,21 +7,21 @@
 #include "varc/scene/LightTextures.h"
 #include "varc/vulkan/Sampler.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
-Image solid(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
-    Image image(1, 1, PixelFormat::Rgba8);
+image::Image solid(uint8_t r, uint8_t g, uint8_t b, uint8_t a) {
+    image::Image image(1, 1, image::PixelFormat::Rgba8);
     image.setPixel8(0, 0, {r, g, b, a});
     return image;
 }
 
 // The falloff table as a float image (sampled as R16G16B16A16_SFLOAT: within 1/2048 of the
 // 16-bit table, far below an 8-bit LSB), every channel holding f.
-Image falloffImage() {
+image::Image falloffImage() {
     std::vector<uint16_t> table = scene::falloffTable();
-    Image image(static_cast<uint32_t>(table.size()), 1, PixelFormat::RgbaFloat);
+    image::Image image(static_cast<uint32_t>(table.size()), 1, image::PixelFormat::RgbaFloat);
     for (uint32_t i = 0; i < table.size(); ++i) {
         float f = static_cast<float>(table[i]) / 65535.0f;
         image.setPixelFloat(i, 0, {f, f, f, f});
@@ -29,11 +29,11 @@ Image falloffImage() {
     return image;
 }
 
-std::vector<Image> cookieLayers(const scene::CookieImage& cookie) {
-    std::vector<Image> layers;
+std::vector<image::Image> cookieLayers(const scene::CookieImage& cookie) {
+    std::vector<image::Image> layers;
     size_t layerBytes = size_t{cookie.width} * cookie.height * 4;
     for (uint32_t layer = 0; layer < cookie.layers; ++layer) {
-        Image image(cookie.width, cookie.height, PixelFormat::Rgba8);
+        image::Image image(cookie.width, cookie.height, image::PixelFormat::Rgba8);
         std::copy_n(cookie.rgba.begin() + static_cast<std::ptrdiff_t>(layer * layerBytes),
                     layerBytes, image.bytes().begin());
         layers.push_back(std::move(image));
@@ -43,12 +43,12 @@ std::vector<Image> cookieLayers(const scene::CookieImage& cookie) {
 
 // The 16 slices of _DitherMaskLOD: texel (x, y) of slice k has alpha 1 when its rank in the 4 x 4
 // Bayer matrix is below round(16 k / 15), else 0 (slice 0: nothing, slice 15: everything).
-std::vector<Image> ditherSlices() {
+std::vector<image::Image> ditherSlices() {
     constexpr uint8_t kBayer[4][4] = {{0, 8, 2, 10}, {12, 4, 14, 6}, {3, 11, 1, 9}, {15, 7, 13, 5}};
-    std::vector<Image> slices;
+    std::vector<image::Image> slices;
     for (uint32_t k = 0; k < 16; ++k) {
         const uint32_t covered = (16 * k + 7) / 15;
-        Image image(4, 4, PixelFormat::Rgba8);
+        image::Image image(4, 4, image::PixelFormat::Rgba8);
         for (uint32_t y = 0; y < 4; ++y) {
             for (uint32_t x = 0; x < 4; ++x) {
                 const uint8_t a = kBayer[y][x] < covered ? 255 : 0;
@@ -60,19 +60,20 @@ std::vector<Image> ditherSlices() {
     return slices;
 }
 
-Result<Texture> make2D(VulkanContext& context, const Image& image, const char* name) {
-    TextureOptions options;
+Result<vulkan::Texture> make2D(vulkan::VulkanContext& context, const image::Image& image,
+                               const char* name) {
+    vulkan::TextureOptions options;
     options.name = name;
-    return Texture::create2D(context, image, options);
+    return vulkan::Texture::create2D(context, image, options);
 }
 
 }  // namespace
 
-Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
+Result<BuiltinTextures> BuiltinTextures::create(vulkan::VulkanContext& context) {
     BuiltinTextures textures;
     struct Solid {
-        std::optional<Texture>* slot;
-        Image image;
+        std::optional<vulkan::Texture>* slot;
+        image::Image image;
         const char* name;
     };
     Solid solids[] = {{&textures.mWhite, solid(255, 255, 255, 255), "white"},
@@ -89,40 +90,40 @@ Result<BuiltinTextures> BuiltinTextures::create(VulkanContext& context) {
         if (!texture) return texture.error();
         entry.slot->emplace(std::move(*texture));
     }
-    std::vector<Image> whiteFaces(6, solid(255, 255, 255, 255));
-    auto whiteCube = Texture::createCube(context, whiteFaces, {false, false, "white cube"});
+    std::vector<image::Image> whiteFaces(6, solid(255, 255, 255, 255));
+    auto whiteCube = vulkan::Texture::createCube(context, whiteFaces, {false, false, "white cube"});
     if (!whiteCube) return whiteCube.error();
     textures.mWhiteCube.emplace(std::move(*whiteCube));
     // A Cube property whose default is "" or "gray" (Unity's texture for an empty name).
-    std::vector<Image> grayFaces(6, solid(128, 128, 128, 255));
-    auto grayCube = Texture::createCube(context, grayFaces, {false, false, "gray cube"});
+    std::vector<image::Image> grayFaces(6, solid(128, 128, 128, 255));
+    auto grayCube = vulkan::Texture::createCube(context, grayFaces, {false, false, "gray cube"});
     if (!grayCube) return grayCube.error();
     textures.mGrayCube.emplace(std::move(*grayCube));
-    auto white3D = Texture::createVolume(context, std::span<const Image>(whiteFaces.data(), 1),
-                                         {false, false, "white 3D"});
+    auto white3D = vulkan::Texture::createVolume(
+        context, std::span<const image::Image>(whiteFaces.data(), 1), {false, false, "white 3D"});
     if (!white3D) return white3D.error();
     textures.mWhite3D.emplace(std::move(*white3D));
-    auto point = Texture::createCube(context, cookieLayers(scene::defaultPointCookie()),
-                                     {false, false, "point cookie"});
+    auto point = vulkan::Texture::createCube(context, cookieLayers(scene::defaultPointCookie()),
+                                             {false, false, "point cookie"});
     if (!point) return point.error();
     textures.mPoint.emplace(std::move(*point));
-    const std::vector<Image> dither = ditherSlices();
-    auto ditherMask = Texture::createVolume(context, dither, {false, false, "dither mask"});
+    const std::vector<image::Image> dither = ditherSlices();
+    auto ditherMask = vulkan::Texture::createVolume(context, dither, {false, false, "dither mask"});
     if (!ditherMask) return ditherMask.error();
     textures.mDither.emplace(std::move(*ditherMask));
 
-    SamplerDesc repeat;
+    vulkan::SamplerDesc repeat;
     repeat.name = "linear repeat";
     auto repeatSampler = createSampler(context, repeat);
     if (!repeatSampler) return repeatSampler.error();
     textures.mRepeat = std::move(*repeatSampler);
-    SamplerDesc clamp;
+    vulkan::SamplerDesc clamp;
     clamp.addressMode = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     clamp.name = "linear clamp";
     auto clampSampler = createSampler(context, clamp);
     if (!clampSampler) return clampSampler.error();
     textures.mClamp = std::move(*clampSampler);
-    SamplerDesc nearest;
+    vulkan::SamplerDesc nearest;
     nearest.filter = VK_FILTER_NEAREST;
     nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     nearest.name = "nearest repeat";
@@ -184,4 +185,4 @@ std::optional<TextureBinding> BuiltinTextures::lightTexture(std::string_view nam
 
 TextureBinding BuiltinTextures::pointCookie() const { return {mPoint->view(), mClamp.get()}; }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

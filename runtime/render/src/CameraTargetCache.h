@@ -14,7 +14,7 @@
 #include "varc/scene/Scene.h"
 #include "varc/vulkan/RenderTarget.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // What of a camera a target depends on: two cameras with equal keys can share a target.
 struct CameraTargetKey {
@@ -50,7 +50,7 @@ private:
 // A colour + depth/stencil target of |camera|'s size (HDR: Rgba16Float, else Rgba8Unorm) that
 // clears to its background, its Vulkan objects named after |name|. Errors: those of
 // RenderTarget::create.
-Result<RenderTarget> createCameraTarget(VulkanContext& context, const scene::Camera& camera,
-                                        std::string name);
+Result<vulkan::RenderTarget> createCameraTarget(vulkan::VulkanContext& context,
+                                                const scene::Camera& camera, std::string name);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

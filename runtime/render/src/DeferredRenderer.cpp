@@ -27,7 +27,7 @@
 #include "varc/variants/RuntimeKeywords.h"
 #include "varc/vulkan/Sampler.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -52,7 +52,7 @@ struct DeferredFrame {
 
 struct DeferredRenderer::State : RendererBase {
     std::string lightShader;
-    UniqueHandle<VkSampler> nearest;
+    vulkan::UniqueHandle<VkSampler> nearest;
     std::optional<GpuMesh> sphereVolume, pyramidVolume;
     CameraTargetCache<DeferredTargets> targets;
     ShadowMaps shadows;
@@ -70,14 +70,14 @@ struct DeferredRenderer::State : RendererBase {
     // The frame's phases, in order: each adds its draws to |frame|.
     Status gbufferPhase(const scene::Scene& scene, const scene::CameraMatrices& matrices,
                         const DeferredTargets& target, DeferredFrame& frame);
-    Status lightPhase(const scene::Scene& scene, const std::optional<ShaderView>& shader,
-                      const Pack* pack, const scene::CameraMatrices& matrices,
+    Status lightPhase(const scene::Scene& scene, const std::optional<reader::ShaderView>& shader,
+                      const reader::Pack* pack, const scene::CameraMatrices& matrices,
                       const DeferredTargets& target, DeferredFrame& frame);
-    Status lightDraw(const scene::Scene& scene, size_t index, const ShaderView& shader,
-                     const Pack* pack, const scene::CameraMatrices& matrices,
+    Status lightDraw(const scene::Scene& scene, size_t index, const reader::ShaderView& shader,
+                     const reader::Pack* pack, const scene::CameraMatrices& matrices,
                      const DeferredTargets& target, const GBufferBindings& gbuffer,
                      DeferredFrame& frame);
-    Status decodePhase(const std::optional<ShaderView>& shader, const Pack* pack,
+    Status decodePhase(const std::optional<reader::ShaderView>& shader, const reader::Pack* pack,
                        const DeferredTargets& target, DeferredFrame& frame);
     // Records the three passes, submits, waits and reads the frame back.
     Status submit(const DeferredTargets& target, bool hdr, DeferredFrame& frame);
@@ -86,7 +86,7 @@ struct DeferredRenderer::State : RendererBase {
 PipelineTarget DeferredRenderer::State::pipelineTarget(Phase phase, const DeferredTargets& target) {
     switch (phase) {
         case Phase::GBuffer:
-            return {target.gbuffer().renderPass(LoadOp::Clear), true,
+            return {target.gbuffer().renderPass(vulkan::LoadOp::Clear), true,
                     target.gbuffer().colorAttachmentCount()};
         case Phase::Light:
             return {target.lightPass(), true, 1};
@@ -105,13 +105,13 @@ DeferredRenderer::DeferredRenderer(DeferredRenderer&&) noexcept = default;
 DeferredRenderer& DeferredRenderer::operator=(DeferredRenderer&&) noexcept = default;
 DeferredRenderer::~DeferredRenderer() = default;
 
-Result<DeferredRenderer> DeferredRenderer::create(VulkanContext& context,
-                                                  std::vector<const Pack*> packs,
+Result<DeferredRenderer> DeferredRenderer::create(vulkan::VulkanContext& context,
+                                                  std::vector<const reader::Pack*> packs,
                                                   std::string lightShader) {
     auto state = std::make_unique<State>();
     if (Status ready = state->init(context, std::move(packs)); !ready) return ready.error();
     state->lightShader = std::move(lightShader);
-    SamplerDesc nearest;
+    vulkan::SamplerDesc nearest;
     nearest.filter = VK_FILTER_NEAREST;
     nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     nearest.addressMode = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
@@ -170,10 +170,10 @@ Status DeferredRenderer::State::gbufferPhase(const scene::Scene& scene,
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
         const std::string what = objectLabel(o, object);
-        const Pack* pack = nullptr;
+        const reader::Pack* pack = nullptr;
         auto shader = objectShader(what, object, &pack);
         if (!shader) return shader.error();
-        std::optional<PassView> pass = shader->pass(std::string_view("Deferred"));
+        std::optional<reader::PassView> pass = shader->pass(std::string_view("Deferred"));
         if (!pass)
             return makeError(ErrorCode::NotFound, what + ": the shader has no Deferred pass");
         auto variant = pass->lookup(keywords, variants::SelectionPolicy::Closest);
@@ -195,7 +195,8 @@ Status DeferredRenderer::State::gbufferPhase(const scene::Scene& scene,
 }
 
 Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t index,
-                                          const ShaderView& shader, const Pack* pack,
+                                          const reader::ShaderView& shader,
+                                          const reader::Pack* pack,
                                           const scene::CameraMatrices& matrices,
                                           const DeferredTargets& target,
                                           const GBufferBindings& gbuffer, DeferredFrame& frame) {
@@ -203,7 +204,7 @@ Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t inde
     const bool hdr = scene.camera.hdr;
     const std::string what =
         "light " + std::to_string(index) + " (shader \"" + std::string(shader.name()) + "\")";
-    std::optional<PassView> pass = shader.pass(size_t{0});
+    std::optional<reader::PassView> pass = shader.pass(size_t{0});
     if (!pass) return makeError(ErrorCode::NotFound, what + ": the shader has no pass 0");
     variants::LightDescription description;
     description.type = toVariantLight(light.type);
@@ -259,10 +260,11 @@ Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t inde
 }
 
 Status DeferredRenderer::State::lightPhase(const scene::Scene& scene,
-                                           const std::optional<ShaderView>& shader,
-                                           const Pack* pack, const scene::CameraMatrices& matrices,
+                                           const std::optional<reader::ShaderView>& shader,
+                                           const reader::Pack* pack,
+                                           const scene::CameraMatrices& matrices,
                                            const DeferredTargets& target, DeferredFrame& frame) {
-    const RenderTarget& g = target.gbuffer();
+    const vulkan::RenderTarget& g = target.gbuffer();
     const GBufferBindings gbuffer{
         {g.depthSampleView(), nearest.get(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL},
         {g.colorView(kGBufferDiffuse), nearest.get()},
@@ -276,10 +278,10 @@ Status DeferredRenderer::State::lightPhase(const scene::Scene& scene,
     return Ok{};
 }
 
-Status DeferredRenderer::State::decodePhase(const std::optional<ShaderView>& shader,
-                                            const Pack* pack, const DeferredTargets& target,
+Status DeferredRenderer::State::decodePhase(const std::optional<reader::ShaderView>& shader,
+                                            const reader::Pack* pack, const DeferredTargets& target,
                                             DeferredFrame& frame) {
-    std::optional<PassView> pass = shader->pass(size_t{1});
+    std::optional<reader::PassView> pass = shader->pass(size_t{1});
     if (!pass)
         return makeError(ErrorCode::NotFound,
                          "deferred light shader \"" + std::string(shader->name()) + "\" has no pass 1");
@@ -308,7 +310,7 @@ Status DeferredRenderer::State::decodePhase(const std::optional<ShaderView>& sha
 
 Status DeferredRenderer::State::submit(const DeferredTargets& target, bool hdr,
                                        DeferredFrame& frame) {
-    const RenderTarget& g = target.gbuffer();
+    const vulkan::RenderTarget& g = target.gbuffer();
     Status bound = Ok{};
     // Records each pass's draws; after a bind error the later passes stay empty.
     auto record = [&](VkCommandBuffer commands, const std::vector<Draw>& draws) {
@@ -317,7 +319,7 @@ Status DeferredRenderer::State::submit(const DeferredTargets& target, bool hdr,
     Status submitted = context->submitAndWait([&](VkCommandBuffer commands) {
         VkViewport viewport = g.viewport();
         VkRect2D area = g.area();
-        g.begin(commands, LoadOp::Clear);
+        g.begin(commands, vulkan::LoadOp::Clear);
         vkCmdSetViewport(commands, 0, 1, &viewport);
         vkCmdSetScissor(commands, 0, 1, &area);
         record(commands, frame.gbufferDraws);
@@ -379,10 +381,10 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
     frame.quad.emplace(std::move(*quad));
     frame.quadLayer = &frame.storage.values.emplace_back(fullScreenQuadValues(matrices));
     frame.lightMaterial = &frame.storage.values.emplace_back(lightPassMaterial(hdr));
-    const Pack* lightPack = nullptr;
+    const reader::Pack* lightPack = nullptr;
     const std::string& lightShaderName =
         scene.camera.deferredShader.empty() ? s.lightShader : scene.camera.deferredShader;
-    std::optional<ShaderView> lightShader = s.findShader(lightShaderName, &lightPack);
+    std::optional<reader::ShaderView> lightShader = s.findShader(lightShaderName, &lightPack);
     if (!lightShader && (!scene.lights.empty() || !hdr)) {
         return makeError(ErrorCode::NotFound,
                          "deferred light shader \"" + lightShaderName + "\": no pack has it");
@@ -399,4 +401,4 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
 
 void DeferredRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

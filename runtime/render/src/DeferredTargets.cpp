@@ -6,7 +6,7 @@
 #include "varc/vulkan/DeviceImage.h"
 #include "varc/vulkan/RenderPass.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -20,8 +20,9 @@ constexpr VkAccessFlags kAttachmentAccess =
 // A pass with one colour attachment (|clearColor|: cleared from UNDEFINED, else loaded) and the
 // G-buffer depth/stencil loaded in DEPTH_STENCIL_READ_ONLY_OPTIMAL: tested, never written, and
 // sampled as _CameraDepthTexture at the same time.
-Result<UniqueHandle<VkRenderPass>> createReadOnlyDepthPass(VkDevice device, VkFormat color,
-                                                           VkFormat depth, bool clearColor) {
+Result<vulkan::UniqueHandle<VkRenderPass>> createReadOnlyDepthPass(VkDevice device, VkFormat color,
+                                                                   VkFormat depth,
+                                                                   bool clearColor) {
     std::array<VkAttachmentDescription, 2> attachments{};
     attachments[0].format = color;
     attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
@@ -65,7 +66,7 @@ Result<UniqueHandle<VkRenderPass>> createReadOnlyDepthPass(VkDevice device, VkFo
         VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
         kAttachmentAccess | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_TRANSFER_READ_BIT,
         0};
-    return createOneSubpassPass(device, attachments, subpass, dependencies);
+    return vulkan::createOneSubpassPass(device, attachments, subpass, dependencies);
 }
 
 void beginPass(VkCommandBuffer commands, VkRenderPass pass, VkFramebuffer framebuffer,
@@ -83,12 +84,12 @@ void beginPass(VkCommandBuffer commands, VkRenderPass pass, VkFramebuffer frameb
 }
 
 // Colour attachment <-> sampled image.
-LayoutTransition colorToSampled() {
+vulkan::LayoutTransition colorToSampled() {
     return {VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
             VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,         VK_ACCESS_SHADER_READ_BIT};
 }
-LayoutTransition sampledToColor() {
+vulkan::LayoutTransition sampledToColor() {
     return {VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
             VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
@@ -104,59 +105,60 @@ constexpr VkPipelineStageFlags kDepthStages =
 
 }  // namespace
 
-Result<DeferredTargets> DeferredTargets::create(VulkanContext& context,
+Result<DeferredTargets> DeferredTargets::create(vulkan::VulkanContext& context,
                                                 const scene::Camera& camera) {
     DeferredTargets targets;
     const glm::vec4& b = camera.background;
     targets.mBackground = {b.r, b.g, b.b, b.a};
-    RenderTargetDesc desc;
+    vulkan::RenderTargetDesc desc;
     desc.width = camera.width;
     desc.height = camera.height;
-    desc.color = ColorFormat::Rgba8Srgb;
+    desc.color = vulkan::ColorFormat::Rgba8Srgb;
     // RT2 holds the normal in 32-bit floats instead of A2B10G10R10_UNORM (SHADER_ABI.md §6):
     // with any narrower format a one-step rounding difference of the normal at a glossy highlight
     // moves the pixel by ~10 LSB (measured with half floats: 11 LSB on a metallic sphere), so the
     // GPU could not be checked against the reference there.
-    desc.extraColors = {ColorFormat::Rgba8Srgb, ColorFormat::Rgba32Float,
-                        camera.hdr ? ColorFormat::Rgba16Float : ColorFormat::Rgba8Unorm};
+    desc.extraColors = {
+        vulkan::ColorFormat::Rgba8Srgb, vulkan::ColorFormat::Rgba32Float,
+        camera.hdr ? vulkan::ColorFormat::Rgba16Float : vulkan::ColorFormat::Rgba8Unorm};
     // In HDR the light buffer is the frame: its background is the camera's. In LDR the decode
     // pass writes object pixels only, into an output cleared to the background.
     desc.extraClearColors = {{0, 0, 0, 0}, {0, 0, 0, 0}, targets.mBackground};
     desc.sampledDepth = true;
     desc.clearColor = {0, 0, 0, 0};
     desc.name = "deferred G-buffer";
-    auto gbuffer = RenderTarget::create(context, desc);
+    auto gbuffer = vulkan::RenderTarget::create(context, desc);
     if (!gbuffer) return gbuffer.error();
     targets.mGBuffer.emplace(std::move(*gbuffer));
-    const RenderTarget& g = *targets.mGBuffer;
+    const vulkan::RenderTarget& g = *targets.mGBuffer;
 
-    VkFormat lightFormat = toVkFormat(g.attachmentFormat(kGBufferLight));
+    VkFormat lightFormat = vulkan::toVkFormat(g.attachmentFormat(kGBufferLight));
     auto lightPass =
         createReadOnlyDepthPass(context.device(), lightFormat, g.depthStencilFormat(), false);
     if (!lightPass) return lightPass.error();
     targets.mLightPass = std::move(*lightPass);
-    auto lightFramebuffer = createPassFramebuffer(
+    auto lightFramebuffer = vulkan::createPassFramebuffer(
         context.device(), targets.mLightPass.get(),
         std::array{g.colorView(kGBufferLight), g.depthView()}, g.width(), g.height());
     if (!lightFramebuffer) return lightFramebuffer.error();
     targets.mLightFramebuffer = std::move(*lightFramebuffer);
     if (camera.hdr) return targets;
 
-    RenderTargetDesc outputDesc;
+    vulkan::RenderTargetDesc outputDesc;
     outputDesc.width = camera.width;
     outputDesc.height = camera.height;
-    outputDesc.color = ColorFormat::Rgba8Unorm;
+    outputDesc.color = vulkan::ColorFormat::Rgba8Unorm;
     outputDesc.depthStencil = false;
     outputDesc.clearColor = targets.mBackground;
     outputDesc.name = "deferred LDR output";
-    auto output = RenderTarget::create(context, outputDesc);
+    auto output = vulkan::RenderTarget::create(context, outputDesc);
     if (!output) return output.error();
     targets.mOutput.emplace(std::move(*output));
     auto decodePass = createReadOnlyDepthPass(context.device(), VK_FORMAT_R8G8B8A8_UNORM,
                                               g.depthStencilFormat(), true);
     if (!decodePass) return decodePass.error();
     targets.mDecodePass = std::move(*decodePass);
-    auto decodeFramebuffer = createPassFramebuffer(
+    auto decodeFramebuffer = vulkan::createPassFramebuffer(
         context.device(), targets.mDecodePass.get(),
         std::array{targets.mOutput->colorView(), g.depthView()}, g.width(), g.height());
     if (!decodeFramebuffer) return decodeFramebuffer.error();
@@ -175,38 +177,39 @@ void DeferredTargets::beginDecodePass(VkCommandBuffer commands) const {
 
 void DeferredTargets::toLighting(VkCommandBuffer commands) const {
     for (uint32_t i : {kGBufferDiffuse, kGBufferSpecular, kGBufferNormal}) {
-        transitionLayout(commands, mGBuffer->colorImage(i), VK_IMAGE_ASPECT_COLOR_BIT,
-                         colorToSampled());
+        vulkan::transitionLayout(commands, mGBuffer->colorImage(i), VK_IMAGE_ASPECT_COLOR_BIT,
+                                 colorToSampled());
     }
-    transitionLayout(commands, mGBuffer->depthImage(), kDepthStencil,
-                     {VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                      VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, kDepthStages,
-                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                      kDepthStages | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_SHADER_READ_BIT});
+    vulkan::transitionLayout(
+        commands, mGBuffer->depthImage(), kDepthStencil,
+        {VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+         VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, kDepthStages,
+         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+         kDepthStages | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_SHADER_READ_BIT});
 }
 
 void DeferredTargets::fromLighting(VkCommandBuffer commands) const {
     for (uint32_t i : {kGBufferDiffuse, kGBufferSpecular, kGBufferNormal}) {
-        transitionLayout(commands, mGBuffer->colorImage(i), VK_IMAGE_ASPECT_COLOR_BIT,
-                         sampledToColor());
+        vulkan::transitionLayout(commands, mGBuffer->colorImage(i), VK_IMAGE_ASPECT_COLOR_BIT,
+                                 sampledToColor());
     }
-    transitionLayout(commands, mGBuffer->depthImage(), kDepthStencil,
-                     {VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
-                      VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                      kDepthStages | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, kDepthStages,
-                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
+    vulkan::transitionLayout(commands, mGBuffer->depthImage(), kDepthStencil,
+                             {VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                              VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                              kDepthStages | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, kDepthStages,
+                              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
 }
 
 void DeferredTargets::toDecode(VkCommandBuffer commands) const {
-    transitionLayout(commands, mGBuffer->colorImage(kGBufferLight), VK_IMAGE_ASPECT_COLOR_BIT,
-                     colorToSampled());
+    vulkan::transitionLayout(commands, mGBuffer->colorImage(kGBufferLight),
+                             VK_IMAGE_ASPECT_COLOR_BIT, colorToSampled());
 }
 
 void DeferredTargets::fromDecode(VkCommandBuffer commands) const {
-    transitionLayout(commands, mGBuffer->colorImage(kGBufferLight), VK_IMAGE_ASPECT_COLOR_BIT,
-                     sampledToColor());
+    vulkan::transitionLayout(commands, mGBuffer->colorImage(kGBufferLight),
+                             VK_IMAGE_ASPECT_COLOR_BIT, sampledToColor());
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

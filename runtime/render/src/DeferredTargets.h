@@ -11,7 +11,7 @@
 #include "varc/scene/Scene.h"
 #include "varc/vulkan/RenderTarget.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // G-buffer attachment indices (SV_Target0..3).
 inline constexpr uint32_t kGBufferDiffuse = 0;   // RT0 Rgba8Srgb: diffuse colour, occlusion
@@ -23,11 +23,12 @@ inline constexpr uint32_t kGBufferLight = 3;
 class DeferredTargets {
 public:
     // Errors: those of RenderTarget::create and Vulkan.
-    static Result<DeferredTargets> create(VulkanContext& context, const scene::Camera& camera);
+    static Result<DeferredTargets> create(vulkan::VulkanContext& context,
+                                          const scene::Camera& camera);
 
-    const RenderTarget& gbuffer() const { return *mGBuffer; }
+    const vulkan::RenderTarget& gbuffer() const { return *mGBuffer; }
     // LDR only: the decoded frame (Rgba8Unorm, cleared to the background).
-    const RenderTarget* output() const { return mOutput ? &*mOutput : nullptr; }
+    const vulkan::RenderTarget* output() const { return mOutput ? &*mOutput : nullptr; }
     VkRenderPass lightPass() const { return mLightPass.get(); }
     VkRenderPass decodePass() const { return mDecodePass.get(); }
     std::array<float, 4> background() const { return mBackground; }
@@ -45,11 +46,11 @@ public:
     void fromDecode(VkCommandBuffer commands) const;
 
 private:
-    std::optional<RenderTarget> mGBuffer;
-    std::optional<RenderTarget> mOutput;
-    UniqueHandle<VkRenderPass> mLightPass, mDecodePass;
-    UniqueHandle<VkFramebuffer> mLightFramebuffer, mDecodeFramebuffer;
+    std::optional<vulkan::RenderTarget> mGBuffer;
+    std::optional<vulkan::RenderTarget> mOutput;
+    vulkan::UniqueHandle<VkRenderPass> mLightPass, mDecodePass;
+    vulkan::UniqueHandle<VkFramebuffer> mLightFramebuffer, mDecodeFramebuffer;
     std::array<float, 4> mBackground{};
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -5,7 +5,7 @@
 
 #include "varc/scene/LightTextures.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 ShaderValues deferredLightValues(const scene::Light& light, bool asQuad) {
     ShaderValues values;
@@ -64,4 +64,4 @@ std::array<QuadCorner, 4> fullScreenQuad(const scene::CameraMatrices& camera) {
     return corners;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

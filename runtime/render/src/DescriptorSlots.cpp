@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <tuple>
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -82,4 +82,4 @@ uint32_t descriptorSetCount(const std::vector<DescriptorSlot>& slots) {
     return count;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -2,7 +2,7 @@
 // Draw: the draw-record loop the forward, deferred and single-pass renderers share.
 #include "Draw.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 Status recordDraws(VkCommandBuffer commands, DrawResources& resources,
                    const std::vector<Draw>& draws, uint32_t& drawCount) {
@@ -22,4 +22,4 @@ Status recordDraws(VkCommandBuffer commands, DrawResources& resources,
     return Ok{};
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

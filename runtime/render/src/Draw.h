@@ -11,7 +11,7 @@
 #include "varc/render/DrawResources.h"
 #include "varc/render/VariantPipeline.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // Everything DrawResources::bind() and vkCmdDrawIndexed need for one draw.
 struct Draw {
@@ -32,4 +32,4 @@ struct Draw {
 Status recordDraws(VkCommandBuffer commands, DrawResources& resources,
                    const std::vector<Draw>& draws, uint32_t& drawCount);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -6,16 +6,16 @@
 
 #include "varc/vulkan/CheckVk.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
-Result<DrawResources> DrawResources::create(VulkanContext& context, VkDeviceSize uniformBytes,
-                                            uint32_t maxSets) {
+Result<DrawResources> DrawResources::create(vulkan::VulkanContext& context,
+                                            VkDeviceSize uniformBytes, uint32_t maxSets) {
     DrawResources resources;
     resources.mContext = &context;
     resources.mAlignment =
         std::max<VkDeviceSize>(context.properties().limits.minUniformBufferOffsetAlignment, 16);
-    auto buffer = Buffer::create(context, uniformBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                 MemoryLocation::HostVisible, "frame uniforms");
+    auto buffer = vulkan::Buffer::create(context, uniformBytes, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                         vulkan::MemoryLocation::HostVisible, "frame uniforms");
     if (!buffer) return buffer.error();
     resources.mUniforms = std::move(*buffer);
     std::array<VkDescriptorPoolSize, 4> sizes = {
@@ -29,12 +29,12 @@ Result<DrawResources> DrawResources::create(VulkanContext& context, VkDeviceSize
     info.poolSizeCount = static_cast<uint32_t>(sizes.size());
     info.pPoolSizes = sizes.data();
     VkDescriptorPool pool = VK_NULL_HANDLE;
-    if (Status ok = checkVk(vkCreateDescriptorPool(context.device(), &info, nullptr, &pool),
-                            "vkCreateDescriptorPool");
+    if (Status ok = vulkan::checkVk(vkCreateDescriptorPool(context.device(), &info, nullptr, &pool),
+                                    "vkCreateDescriptorPool");
         !ok) {
         return ok.error();
     }
-    resources.mPool = UniqueHandle<VkDescriptorPool>(context.device(), pool);
+    resources.mPool = vulkan::UniqueHandle<VkDescriptorPool>(context.device(), pool);
     return resources;
 }
 
@@ -63,7 +63,8 @@ Status DrawResources::bind(VkCommandBuffer commands, const VariantPipeline& pipe
     allocate.descriptorPool = mPool.get();
     allocate.descriptorSetCount = static_cast<uint32_t>(rawLayouts.size());
     allocate.pSetLayouts = rawLayouts.data();
-    if (Status ok = checkVk(vkAllocateDescriptorSets(mContext->device(), &allocate, sets.data()),
+    if (Status ok =
+            vulkan::checkVk(vkAllocateDescriptorSets(mContext->device(), &allocate, sets.data()),
                             "vkAllocateDescriptorSets (frame descriptor pool exhausted?)");
         !ok) {
         return ok;
@@ -115,8 +116,8 @@ Status DrawResources::bind(VkCommandBuffer commands, const VariantPipeline& pipe
 
 Status DrawResources::reset() {
     mUsed = 0;
-    return checkVk(vkResetDescriptorPool(mContext->device(), mPool.get(), 0),
-                   "vkResetDescriptorPool");
+    return vulkan::checkVk(vkResetDescriptorPool(mContext->device(), mPool.get(), 0),
+                           "vkResetDescriptorPool");
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

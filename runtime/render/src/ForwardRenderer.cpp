@@ -20,17 +20,17 @@
 #include "varc/variants/LightKeywords.h"
 #include "varc/vulkan/RenderTarget.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 struct ForwardRenderer::State : RendererBase {
-    CameraTargetCache<RenderTarget> targets;
+    CameraTargetCache<vulkan::RenderTarget> targets;
     ShadowMaps shadows;
     ScreenShadowMasks screenShadows;  // directional lights' masks (SHADOWS_SCREEN)
 
-    Status addObjectDraws(const scene::Scene& scene, size_t index, const RenderTarget& target,
-                          FrameStorage& storage, const ShaderValues& camera,
-                          const scene::CameraMatrices& matrices, std::vector<Draw>& draws,
-                          RenderedFrame& frame);
+    Status addObjectDraws(const scene::Scene& scene, size_t index,
+                          const vulkan::RenderTarget& target, FrameStorage& storage,
+                          const ShaderValues& camera, const scene::CameraMatrices& matrices,
+                          std::vector<Draw>& draws, RenderedFrame& frame);
 };
 
 ForwardRenderer::ForwardRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
@@ -38,8 +38,8 @@ ForwardRenderer::ForwardRenderer(ForwardRenderer&&) noexcept = default;
 ForwardRenderer& ForwardRenderer::operator=(ForwardRenderer&&) noexcept = default;
 ForwardRenderer::~ForwardRenderer() = default;
 
-Result<ForwardRenderer> ForwardRenderer::create(VulkanContext& context,
-                                                std::vector<const Pack*> packs) {
+Result<ForwardRenderer> ForwardRenderer::create(vulkan::VulkanContext& context,
+                                                std::vector<const reader::Pack*> packs) {
     auto state = std::make_unique<State>();
     if (Status ready = state->init(context, std::move(packs)); !ready) return ready.error();
     return ForwardRenderer(std::move(state));
@@ -74,13 +74,13 @@ variants::LightDescription forwardLight(const scene::Scene& scene, const scene::
 // One object's draws: ForwardBase with the main directional light (if any), then one ForwardAdd
 // per add light.
 Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t index,
-                                              const RenderTarget& target, FrameStorage& storage,
-                                              const ShaderValues& camera,
+                                              const vulkan::RenderTarget& target,
+                                              FrameStorage& storage, const ShaderValues& camera,
                                               const scene::CameraMatrices& matrices,
                                               std::vector<Draw>& draws, RenderedFrame& frame) {
     const scene::Object& object = scene.objects[index];
     const std::string what = objectLabel(index, object);
-    const Pack* pack = nullptr;
+    const reader::Pack* pack = nullptr;
     auto shader = objectShader(what, object, &pack);
     if (!shader) return shader.error();
     // A shader with a ShadowCaster pass and no ForwardBase pass (varc's built-in fallbacks used
@@ -103,7 +103,7 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
     }
 
     auto addDraw = [&](const char* lightMode, const scene::Light* light) -> Status {
-        std::optional<PassView> pass = shader->pass(std::string_view(lightMode));
+        std::optional<reader::PassView> pass = shader->pass(std::string_view(lightMode));
         if (!pass)
             return makeError(ErrorCode::NotFound,
                              what + ": the shader has no " + lightMode + " pass");
@@ -126,7 +126,7 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
                                 *material,
                                 object.transform.localToWorld(),
                                 object.mesh,
-                                {target.renderPass(LoadOp::Clear), true, 1},
+                                {target.renderPass(vulkan::LoadOp::Clear), true, 1},
                                 scene.camera.hdr ? 1u : 0u});
         if (!draw) return draw.error();
         ShaderValues& lightLayer = storage.values.emplace_back(forwardLightValues(light));
@@ -195,4 +195,4 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
 
 void ForwardRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -5,9 +5,10 @@
 #include "varc/render/DeferredValues.h"
 #include "varc/scene/Mesh.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
-Result<GpuMesh> uploadFullScreenQuad(VulkanContext& context, const scene::CameraMatrices& camera) {
+Result<GpuMesh> uploadFullScreenQuad(vulkan::VulkanContext& context,
+                                     const scene::CameraMatrices& camera) {
     scene::Mesh mesh;
     for (const QuadCorner& corner : fullScreenQuad(camera)) {
         mesh.positions.push_back(corner.position);
@@ -19,4 +20,4 @@ Result<GpuMesh> uploadFullScreenQuad(VulkanContext& context, const scene::Camera
     return uploadMesh(context, mesh);
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -7,9 +7,10 @@
 #include "varc/scene/CameraMatrices.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // The quad's NDC positions, its rays as NORMALs and its screen uvs, as two triangles.
-Result<GpuMesh> uploadFullScreenQuad(VulkanContext& context, const scene::CameraMatrices& camera);
+Result<GpuMesh> uploadFullScreenQuad(vulkan::VulkanContext& context,
+                                     const scene::CameraMatrices& camera);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

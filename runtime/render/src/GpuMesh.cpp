@@ -6,9 +6,9 @@
 
 #include "varc/render/VertexLayout.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
-Result<GpuMesh> uploadMesh(VulkanContext& context, const scene::Mesh& mesh) {
+Result<GpuMesh> uploadMesh(vulkan::VulkanContext& context, const scene::Mesh& mesh) {
     std::vector<MeshVertex> vertices(mesh.positions.size());
     for (size_t i = 0; i < vertices.size(); ++i) {
         MeshVertex& v = vertices[i];
@@ -20,11 +20,13 @@ Result<GpuMesh> uploadMesh(VulkanContext& context, const scene::Mesh& mesh) {
             {1.0f, 1.0f, 1.0f, 1.0f}};
     }
     GpuMesh gpu;
-    auto vertexBuffer = Buffer::createWithData(context, std::as_bytes(std::span(vertices)),
-                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "mesh vertices");
+    auto vertexBuffer =
+        vulkan::Buffer::createWithData(context, std::as_bytes(std::span(vertices)),
+                                       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, "mesh vertices");
     if (!vertexBuffer) return vertexBuffer.error();
-    auto indexBuffer = Buffer::createWithData(context, std::as_bytes(std::span(mesh.indices)),
-                                              VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "mesh indices");
+    auto indexBuffer =
+        vulkan::Buffer::createWithData(context, std::as_bytes(std::span(mesh.indices)),
+                                       VK_BUFFER_USAGE_INDEX_BUFFER_BIT, "mesh indices");
     if (!indexBuffer) return indexBuffer.error();
     gpu.vertices = std::move(*vertexBuffer);
     gpu.indices = std::move(*indexBuffer);
@@ -32,4 +34,4 @@ Result<GpuMesh> uploadMesh(VulkanContext& context, const scene::Mesh& mesh) {
     return gpu;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -8,15 +8,15 @@
 #include "varc/scene/Mesh.h"
 #include "varc/vulkan/Buffer.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 struct GpuMesh {
-    Buffer vertices;
-    Buffer indices;
+    vulkan::Buffer vertices;
+    vulkan::Buffer indices;
     uint32_t indexCount = 0;
 };
 
 // Uploads |mesh| (positions, normals, tangents, uv0; colour white). Errors: those of Buffer.
-Result<GpuMesh> uploadMesh(VulkanContext& context, const scene::Mesh& mesh);
+Result<GpuMesh> uploadMesh(vulkan::VulkanContext& context, const scene::Mesh& mesh);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -7,7 +7,7 @@
 #include <map>
 #include <utility>
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 // Completes a closed convex mesh from its positions and triangles: each triangle wound so that
@@ -148,4 +148,4 @@ LightVolume chooseLightVolume(const scene::Light& light, const scene::Camera& ca
     return volume;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -7,7 +7,7 @@
 #include "varc/core/FileRead.h"
 #include "varc/vulkan/CheckVk.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -38,7 +38,8 @@ std::string pipelineCacheMismatch(const VkPhysicalDeviceProperties& device,
     return {};
 }
 
-Result<PipelineCacheFile> PipelineCacheFile::open(const VulkanContext& context, std::string path) {
+Result<PipelineCacheFile> PipelineCacheFile::open(const vulkan::VulkanContext& context,
+                                                  std::string path) {
     PipelineCacheFile file;
     file.mContext = &context;
     file.mPath = std::move(path);
@@ -55,28 +56,28 @@ Result<PipelineCacheFile> PipelineCacheFile::open(const VulkanContext& context, 
     info.initialDataSize = data.size();
     info.pInitialData = data.empty() ? nullptr : data.data();
     VkPipelineCache cache = VK_NULL_HANDLE;
-    if (Status ok = checkVk(vkCreatePipelineCache(context.device(), &info, nullptr, &cache),
-                            "vkCreatePipelineCache");
+    if (Status ok = vulkan::checkVk(vkCreatePipelineCache(context.device(), &info, nullptr, &cache),
+                                    "vkCreatePipelineCache");
         !ok) {
         return ok.error();
     }
-    file.mCache = UniqueHandle<VkPipelineCache>(context.device(), cache);
+    file.mCache = vulkan::UniqueHandle<VkPipelineCache>(context.device(), cache);
     file.mLoaded = !data.empty();
     return file;
 }
 
 Status PipelineCacheFile::save() const {
     size_t size = 0;
-    if (Status ok =
-            checkVk(vkGetPipelineCacheData(mContext->device(), mCache.get(), &size, nullptr),
-                    "vkGetPipelineCacheData");
+    if (Status ok = vulkan::checkVk(
+            vkGetPipelineCacheData(mContext->device(), mCache.get(), &size, nullptr),
+            "vkGetPipelineCacheData");
         !ok) {
         return ok;
     }
     std::string data(size, '\0');
-    if (Status ok =
-            checkVk(vkGetPipelineCacheData(mContext->device(), mCache.get(), &size, data.data()),
-                    "vkGetPipelineCacheData");
+    if (Status ok = vulkan::checkVk(
+            vkGetPipelineCacheData(mContext->device(), mCache.get(), &size, data.data()),
+            "vkGetPipelineCacheData");
         !ok) {
         return ok;
     }
@@ -84,4 +85,4 @@ Status PipelineCacheFile::save() const {
     return writeFileAtomically(mPath, data);
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <type_traits>
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -226,4 +226,4 @@ VulkanRenderState toVulkan(const pack::PackRenderState& state, bool hasStencil) 
     return vk;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -7,7 +7,7 @@
 #include "varc/render/SceneValues.h"
 #include "varc/scene/Mesh.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 variants::ShadowMode toVariantShadows(scene::ShadowType type) {
     switch (type) {
@@ -36,7 +36,8 @@ std::string objectLabel(size_t index, const scene::Object& object) {
            object.material.shader + "\")";
 }
 
-Status RendererBase::init(VulkanContext& vulkan, std::vector<const Pack*> inputPacks) {
+Status RendererBase::init(vulkan::VulkanContext& vulkan,
+                          std::vector<const reader::Pack*> inputPacks) {
     context = &vulkan;
     packs = std::move(inputPacks);
     auto builtin = BuiltinTextures::create(vulkan);
@@ -54,9 +55,9 @@ Status RendererBase::init(VulkanContext& vulkan, std::vector<const Pack*> inputP
     return Ok{};
 }
 
-std::optional<ShaderView> RendererBase::findShader(const std::string& name,
-                                                   const Pack** owner) const {
-    for (const Pack* pack : packs) {
+std::optional<reader::ShaderView> RendererBase::findShader(const std::string& name,
+                                                           const reader::Pack** owner) const {
+    for (const reader::Pack* pack : packs) {
         if (auto shader = pack->findShader(name)) {
             *owner = pack;
             return shader;
@@ -65,9 +66,10 @@ std::optional<ShaderView> RendererBase::findShader(const std::string& name,
     return std::nullopt;
 }
 
-Result<ShaderView> RendererBase::objectShader(const std::string& what, const scene::Object& object,
-                                              const Pack** owner) const {
-    std::optional<ShaderView> shader = findShader(object.material.shader, owner);
+Result<reader::ShaderView> RendererBase::objectShader(const std::string& what,
+                                                      const scene::Object& object,
+                                                      const reader::Pack** owner) const {
+    std::optional<reader::ShaderView> shader = findShader(object.material.shader, owner);
     if (!shader) return makeError(ErrorCode::NotFound, what + ": no pack has this shader");
     return *shader;
 }
@@ -112,7 +114,8 @@ Result<Draw> RendererBase::objectDraw(const ObjectDrawRequest& request) {
     return draw;
 }
 
-Result<const VariantPipeline*> RendererBase::pipeline(const Pack* pack, const VariantView& variant,
+Result<const VariantPipeline*> RendererBase::pipeline(const reader::Pack* pack,
+                                                      const reader::VariantView& variant,
                                                       const pack::PackRenderState& state,
                                                       const PipelineTarget& target,
                                                       uint32_t targetKind) {
@@ -129,11 +132,11 @@ Result<const VariantPipeline*> RendererBase::pipeline(const Pack* pack, const Va
     return &mPipelines.back().pipeline;
 }
 
-Status RendererBase::drawFrame(const RenderTarget& target, const std::vector<Draw>& draws,
+Status RendererBase::drawFrame(const vulkan::RenderTarget& target, const std::vector<Draw>& draws,
                                RenderedFrame& frame) {
     Status bound = Ok{};
     Status submitted = context->submitAndWait([&](VkCommandBuffer commands) {
-        target.begin(commands, LoadOp::Clear);
+        target.begin(commands, vulkan::LoadOp::Clear);
         VkViewport viewport = target.viewport();
         VkRect2D area = target.area();
         vkCmdSetViewport(commands, 0, 1, &viewport);
@@ -153,15 +156,15 @@ Status RendererBase::drawFrame(const RenderTarget& target, const std::vector<Dra
 Status RendererBase::loadTextureFiles(const std::map<std::string, std::string>& textureNames) {
     for (const auto& [property, name] : textureNames) {
         if (!scene::isTextureFile(name) || mTextureFiles.count(name)) continue;
-        auto image = readPng(name);
+        auto image = image::readPng(name);
         if (!image) {
             return makeError(image.error().code,
                              "texture " + property + " = '" + name + "': " + image.error().detail);
         }
-        TextureOptions options;
+        vulkan::TextureOptions options;
         options.srgb = true;  // colour textures hold sRGB-encoded values, as Unity imports them
         options.name = name;
-        auto texture = Texture::create2D(*context, *image, options);
+        auto texture = vulkan::Texture::create2D(*context, *image, options);
         if (!texture) return texture.error();
         mTextureFiles.emplace(name, std::move(*texture));
     }
@@ -179,11 +182,11 @@ std::optional<TextureBinding> RendererBase::materialTexture(const std::string& n
 Status RendererBase::loadCookieFiles(const std::vector<scene::Light>& lights) {
     for (const scene::Light& light : lights) {
         if (!scene::isTextureFile(light.cookie) || mCookieFiles.count(light.cookie)) continue;
-        auto image = readPng(light.cookie);
+        auto image = image::readPng(light.cookie);
         if (!image) return makeError(image.error().code, "cookie: " + image.error().detail);
-        TextureOptions options;  // UNORM: a cookie's alpha is an attenuation, not a colour
+        vulkan::TextureOptions options;  // UNORM: a cookie's alpha is an attenuation, not a colour
         options.name = light.cookie;
-        auto texture = Texture::create2D(*context, *image, options);
+        auto texture = vulkan::Texture::create2D(*context, *image, options);
         if (!texture) return texture.error();
         mCookieFiles.emplace(light.cookie, std::move(*texture));
     }
@@ -219,11 +222,11 @@ Result<std::optional<TextureBinding>> RendererBase::lightmapTexture(const scene:
     const std::array<float, 4> key{texel.r, texel.g, texel.b, texel.a};
     auto found = mLightmaps.find(key);
     if (found == mLightmaps.end()) {
-        Image image(1, 1, PixelFormat::RgbaFloat);
+        image::Image image(1, 1, image::PixelFormat::RgbaFloat);
         image.setPixelFloat(0, 0, key);
-        TextureOptions options;
+        vulkan::TextureOptions options;
         options.name = std::string(name);
-        auto texture = Texture::create2D(*context, image, options);
+        auto texture = vulkan::Texture::create2D(*context, image, options);
         if (!texture) return texture.error();
         found = mLightmaps.emplace(key, std::move(*texture)).first;
     }
@@ -234,11 +237,11 @@ Result<std::optional<TextureBinding>> RendererBase::lightmapTexture(const scene:
 Result<std::optional<TextureBinding>> RendererBase::lightmapFile(const std::string& path) {
     auto found = mLightmapFiles.find(path);
     if (found == mLightmapFiles.end()) {
-        auto image = readPng(path);
+        auto image = image::readPng(path);
         if (!image) return makeError(image.error().code, "lightmap: " + image.error().detail);
-        TextureOptions options;  // UNORM: the values as stored, linear
+        vulkan::TextureOptions options;  // UNORM: the values as stored, linear
         options.name = path;
-        auto texture = Texture::create2D(*context, *image, options);
+        auto texture = vulkan::Texture::create2D(*context, *image, options);
         if (!texture) return texture.error();
         found = mLightmapFiles.emplace(path, std::move(*texture)).first;
     }
@@ -255,4 +258,4 @@ std::optional<TextureBinding> RendererBase::cookieFile(const scene::Light& light
     return TextureBinding{file->second.view(), sampler};
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

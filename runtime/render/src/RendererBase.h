@@ -29,7 +29,7 @@
 #include "varc/vulkan/RenderTarget.h"
 #include "varc/vulkan/Texture.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // The keyword model's name for a scene light type.
 variants::LightType toVariantLight(scene::LightType type);
@@ -55,9 +55,9 @@ struct ObjectMaterial {
 // One object drawn with one variant of one pass: what RendererBase::objectDraw needs.
 struct ObjectDrawRequest {
     std::string what;  // how errors name the object (objectLabel)
-    const Pack* pack = nullptr;
-    const PassView* pass = nullptr;
-    const VariantView* variant = nullptr;
+    const reader::Pack* pack = nullptr;
+    const reader::PassView* pass = nullptr;
+    const reader::VariantView* variant = nullptr;
     ObjectMaterial material;
     glm::mat4 localToWorld{1.0f};  // a negative determinant culls the other side
     scene::MeshKind mesh = scene::MeshKind::Sphere;
@@ -67,22 +67,23 @@ struct ObjectDrawRequest {
 };
 
 struct RendererBase {
-    VulkanContext* context = nullptr;
-    std::vector<const Pack*> packs;
+    vulkan::VulkanContext* context = nullptr;
+    std::vector<const reader::Pack*> packs;
     std::optional<BuiltinTextures> textures;
     std::optional<DrawResources> resources;
     std::map<scene::MeshKind, GpuMesh> meshes;
     VkPipelineCache pipelineCache = VK_NULL_HANDLE;  // optional, see usePipelineCache()
 
     // Creates the textures, draw resources and built-in meshes.
-    Status init(VulkanContext& context, std::vector<const Pack*> packs);
+    Status init(vulkan::VulkanContext& context, std::vector<const reader::Pack*> packs);
 
     // The shader called |name| in the first pack that has it (|owner| set to that pack).
-    std::optional<ShaderView> findShader(const std::string& name, const Pack** owner) const;
+    std::optional<reader::ShaderView> findShader(const std::string& name,
+                                                 const reader::Pack** owner) const;
 
     // The shader of |object| (findShader); the error "<what>: no pack has this shader".
-    Result<ShaderView> objectShader(const std::string& what, const scene::Object& object,
-                                    const Pack** owner) const;
+    Result<reader::ShaderView> objectShader(const std::string& what, const scene::Object& object,
+                                            const reader::Pack** owner) const;
 
     // The material an object's draws bind: |material|'s values completed with the shader's
     // Properties |defaults|, then with |engineDefaults| (values the engine supplies when the
@@ -103,7 +104,8 @@ struct RendererBase {
     // The pipeline of |variant| with |state| for |target|, created on first use. Pipelines are
     // reused for any render pass compatible with the one they were made for; |targetKind| tells
     // apart targets whose formats differ (HDR/LDR, G-buffer/light/decode passes).
-    Result<const VariantPipeline*> pipeline(const Pack* pack, const VariantView& variant,
+    Result<const VariantPipeline*> pipeline(const reader::Pack* pack,
+                                            const reader::VariantView& variant,
                                             const pack::PackRenderState& state,
                                             const PipelineTarget& target, uint32_t targetKind);
 
@@ -111,7 +113,7 @@ struct RendererBase {
     // target), submits and waits, resets the draw resources, then reads the colour back into
     // |frame|.image; adds the draws recorded to |frame|.draws. Errors, first that applies: the
     // reset's, the first bind error (recordDraws), the submit's, the readback's.
-    Status drawFrame(const RenderTarget& target, const std::vector<Draw>& draws,
+    Status drawFrame(const vulkan::RenderTarget& target, const std::vector<Draw>& draws,
                      RenderedFrame& frame);
 
     // Loads each PNG file among |textureNames| (scene::isTextureFile) once per renderer, as an
@@ -145,17 +147,18 @@ struct RendererBase {
 
 private:
     struct CachedPipeline {
-        const Pack* pack;
+        const reader::Pack* pack;
         std::string variant;  // VariantView::describe()
         pack::PackRenderState state;
         uint32_t targetKind;
         VariantPipeline pipeline;
     };
     std::deque<CachedPipeline> mPipelines;         // a deque: returned pointers stay valid
-    std::map<std::string, Texture> mTextureFiles;  // material PNGs (sRGB), by path
-    std::map<std::string, Texture> mCookieFiles;   // cookie PNGs (UNORM), by path
-    std::map<std::array<float, 4>, Texture> mLightmaps;  // 1x1 float lightmap texels, by value
-    std::map<std::string, Texture> mLightmapFiles;       // lightmap PNGs (UNORM), by path
+    std::map<std::string, vulkan::Texture> mTextureFiles;  // material PNGs (sRGB), by path
+    std::map<std::string, vulkan::Texture> mCookieFiles;   // cookie PNGs (UNORM), by path
+    std::map<std::array<float, 4>, vulkan::Texture>
+        mLightmaps;                                         // 1x1 float lightmap texels, by value
+    std::map<std::string, vulkan::Texture> mLightmapFiles;  // lightmap PNGs (UNORM), by path
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -4,7 +4,7 @@
 
 #include <utility>
 
-namespace varc::runtime {
+namespace varc::render {
 
 SceneRenderer::SceneRenderer(ForwardRenderer forward, SinglePassRenderer singlePass,
                              DeferredRenderer deferred)
@@ -12,8 +12,8 @@ SceneRenderer::SceneRenderer(ForwardRenderer forward, SinglePassRenderer singleP
       mSinglePass(std::move(singlePass)),
       mDeferred(std::move(deferred)) {}
 
-Result<SceneRenderer> SceneRenderer::create(VulkanContext& context,
-                                            std::vector<const Pack*> packs) {
+Result<SceneRenderer> SceneRenderer::create(vulkan::VulkanContext& context,
+                                            std::vector<const reader::Pack*> packs) {
     auto forward = ForwardRenderer::create(context, packs);
     if (!forward) return forward.error();
     auto singlePass = SinglePassRenderer::create(context, packs);
@@ -45,4 +45,4 @@ void SceneRenderer::usePipelineCache(VkPipelineCache cache) {
     mDeferred.usePipelineCache(cache);
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

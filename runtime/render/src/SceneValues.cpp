@@ -5,7 +5,7 @@
 
 #include "varc/scene/LightTextures.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 ShaderValues cameraValues(const scene::Scene& scene, const scene::CameraMatrices& m) {
     const scene::Camera& camera = scene.camera;
@@ -160,4 +160,4 @@ ShaderValues materialValues(const scene::Material& material,
     return values;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -9,7 +9,7 @@
 #include "varc/render/RenderStateResolver.h"
 #include "varc/render/SceneValues.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -44,24 +44,24 @@ Status ScreenShadowMasks::prepare(RendererBase& renderer, const scene::Camera& c
     bool sameLights = sameSize && mMasks.size() == lights.size();
     for (size_t light : lights) sameLights = sameLights && mMasks.count(light);
     if (sameLights) return Ok{};
-    RenderTargetDesc depth;
+    vulkan::RenderTargetDesc depth;
     depth.width = camera.width;
     depth.height = camera.height;
     depth.sampledDepth = true;
     depth.name = "camera depth texture";
-    auto depthTarget = RenderTarget::create(*renderer.context, depth);
+    auto depthTarget = vulkan::RenderTarget::create(*renderer.context, depth);
     if (!depthTarget) return depthTarget.error();
     mDepth.emplace(std::move(*depthTarget));
     mMasks.clear();
     for (size_t light : lights) {
-        RenderTargetDesc mask;
+        vulkan::RenderTargetDesc mask;
         mask.width = camera.width;
         mask.height = camera.height;
-        mask.color = ColorFormat::Rgba32Float;
+        mask.color = vulkan::ColorFormat::Rgba32Float;
         mask.depthStencil = false;
         mask.clearColor = {1.0f, 1.0f, 1.0f, 1.0f};
         mask.name = "screen shadow mask";
-        auto target = RenderTarget::create(*renderer.context, mask);
+        auto target = vulkan::RenderTarget::create(*renderer.context, mask);
         if (!target) return target.error();
         mMasks.emplace(light, std::move(*target));
     }
@@ -78,9 +78,9 @@ Status ScreenShadowMasks::render(RendererBase& renderer, const scene::Scene& sce
         if (shadows.isDirectional(i) && shadows.map(i)) lights.push_back(i);
     }
     if (lights.empty()) return Ok{};
-    const Pack* pack = nullptr;
-    std::optional<ShaderView> collector = renderer.findShader(kScreenShadowShader, &pack);
-    std::optional<PassView> pass = collector ? collector->pass(size_t{0}) : std::nullopt;
+    const reader::Pack* pack = nullptr;
+    std::optional<reader::ShaderView> collector = renderer.findShader(kScreenShadowShader, &pack);
+    std::optional<reader::PassView> pass = collector ? collector->pass(size_t{0}) : std::nullopt;
     if (!pass) {
         return makeError(ErrorCode::NotFound,
                          std::string("directional shadows need the shader \"") +
@@ -110,10 +110,10 @@ Status ScreenShadowMasks::render(RendererBase& renderer, const scene::Scene& sce
         auto variant = pass->lookup(collectorKeywords(l, shadows.directional(light)),
                                     variants::SelectionPolicy::Exact);
         if (!variant) return variant.error();
-        const RenderTarget& mask = mMasks.at(light);
-        auto pipeline = renderer.pipeline(pack, *variant,
-                                          resolveRenderState(pass->renderState(), noMaterial),
-                                          {mask.renderPass(LoadOp::Clear), false, 1}, kMaskKind);
+        const vulkan::RenderTarget& mask = mMasks.at(light);
+        auto pipeline =
+            renderer.pipeline(pack, *variant, resolveRenderState(pass->renderState(), noMaterial),
+                              {mask.renderPass(vulkan::LoadOp::Clear), false, 1}, kMaskKind);
         if (!pipeline) return pipeline.error();
         ShaderValues& lightLayer = storage.values.emplace_back(forwardLightValues(&l));
         shadows.addReceiverValues(scene, light, lightLayer);
@@ -136,35 +136,36 @@ Status ScreenShadowMasks::render(RendererBase& renderer, const scene::Scene& sce
     uint32_t drawCount = 0;
     Status submitted = renderer.context->submitAndWait([&](VkCommandBuffer commands) {
         if (mSampledBefore) {
-            transitionLayout(commands, mDepth->depthImage(), kDepthStencil,
-                             {VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
-                              VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, kDepthStages,
-                              VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
+            vulkan::transitionLayout(commands, mDepth->depthImage(), kDepthStencil,
+                                     {VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                                      VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, kDepthStages,
+                                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
             for (auto& [light, mask] : mMasks) {
-                transitionLayout(commands, mask.colorImage(), VK_IMAGE_ASPECT_COLOR_BIT,
-                                 {VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                  VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
-                                  VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                  VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT});
+                vulkan::transitionLayout(commands, mask.colorImage(), VK_IMAGE_ASPECT_COLOR_BIT,
+                                         {VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                          VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
+                                          VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                          VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT});
             }
         }
         VkViewport viewport = mDepth->viewport();
         VkRect2D area = mDepth->area();
-        mDepth->begin(commands, LoadOp::Clear);
+        mDepth->begin(commands, vulkan::LoadOp::Clear);
         vkCmdSetViewport(commands, 0, 1, &viewport);
         vkCmdSetScissor(commands, 0, 1, &area);
         bound = recordDraws(commands, *renderer.resources, depthDraws, drawCount);
         mDepth->end(commands);
-        transitionLayout(commands, mDepth->depthImage(), kDepthStencil,
-                         {VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                          VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, kDepthStages,
-                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT});
+        vulkan::transitionLayout(
+            commands, mDepth->depthImage(), kDepthStencil,
+            {VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+             VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, kDepthStages,
+             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+             VK_ACCESS_SHADER_READ_BIT});
         for (auto& [light, mask] : mMasks) {
-            mask.begin(commands, LoadOp::Clear);
+            mask.begin(commands, vulkan::LoadOp::Clear);
             vkCmdSetViewport(commands, 0, 1, &viewport);
             vkCmdSetScissor(commands, 0, 1, &area);
             if (bound) {
@@ -172,12 +173,12 @@ Status ScreenShadowMasks::render(RendererBase& renderer, const scene::Scene& sce
                                     drawCount);
             }
             mask.end(commands);
-            transitionLayout(commands, mask.colorImage(), VK_IMAGE_ASPECT_COLOR_BIT,
-                             {VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                              VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                              VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                              VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT});
+            vulkan::transitionLayout(
+                commands, mask.colorImage(), VK_IMAGE_ASPECT_COLOR_BIT,
+                {VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                 VK_ACCESS_SHADER_READ_BIT});
         }
     });
     mSampledBefore = true;
@@ -188,10 +189,10 @@ Status ScreenShadowMasks::render(RendererBase& renderer, const scene::Scene& sce
     return Ok{};
 }
 
-std::optional<TextureBinding> ScreenShadowMasks::mask(size_t light) const {
+std::optional<render::TextureBinding> render::ScreenShadowMasks::mask(size_t light) const {
     if (!mRendered.count(light)) return std::nullopt;
-    return TextureBinding{mMasks.at(light).colorView(), mNearest.get(),
-                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    return render::TextureBinding{mMasks.at(light).colorView(), mNearest.get(),
+                                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -15,7 +15,7 @@
 #include "ShadowMaps.h"
 #include "varc/vulkan/RenderTarget.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 inline constexpr const char* kScreenShadowShader = "Hidden/varc/ScreenSpaceShadows";
 
@@ -34,11 +34,11 @@ private:
     Status prepare(RendererBase& renderer, const scene::Camera& camera,
                    const std::vector<size_t>& lights);
 
-    std::optional<RenderTarget> mDepth;       // the camera depth texture
-    std::map<size_t, RenderTarget> mMasks;    // by light index
+    std::optional<vulkan::RenderTarget> mDepth;     // the camera depth texture
+    std::map<size_t, vulkan::RenderTarget> mMasks;  // by light index
     bool mSampledBefore = false;              // targets are in their sampled layouts
     std::map<size_t, bool> mRendered;         // lights with a mask this frame
-    UniqueHandle<VkSampler> mNearest;
+    vulkan::UniqueHandle<VkSampler> mNearest;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

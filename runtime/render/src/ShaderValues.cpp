@@ -3,7 +3,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-namespace varc::runtime {
+namespace varc::render {
 
 void ShaderValues::set(std::string name, float value) { mValues[std::move(name)] = {1, {value}}; }
 
@@ -44,4 +44,4 @@ void ShaderValues::merge(const ShaderValues& other) {
     for (const auto& [name, value] : other.mValues) mValues[name] = value;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

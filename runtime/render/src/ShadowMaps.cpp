@@ -7,7 +7,7 @@
 #include "varc/render/SceneValues.h"
 #include "varc/vulkan/Sampler.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -21,12 +21,13 @@ constexpr VkPipelineStageFlags kDepthStages =
 constexpr VkAccessFlags kDepthAccess =
     VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
 
-LayoutTransition depthTo(VkImageLayout layout, VkPipelineStageFlags stages, VkAccessFlags access) {
+vulkan::LayoutTransition depthTo(VkImageLayout layout, VkPipelineStageFlags stages,
+                                 VkAccessFlags access) {
     return {VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, layout, kDepthStages,
             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, stages, access};
 }
 
-LayoutTransition backToDepth(VkImageLayout layout, VkPipelineStageFlags stages) {
+vulkan::LayoutTransition backToDepth(VkImageLayout layout, VkPipelineStageFlags stages) {
     return {layout, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, stages, 0, kDepthStages,
             kDepthAccess};
 }
@@ -90,51 +91,51 @@ Status ShadowMaps::prepare(RendererBase& renderer, uint32_t resolution, bool cub
     }
     if (map.target && map.target->width() == resolution && map.cube.has_value() == cube)
         return Ok{};
-    RenderTargetDesc desc;
+    vulkan::RenderTargetDesc desc;
     desc.width = desc.height = resolution;
     desc.sampledDepth = !cube;
     desc.copyableDepth = cube;
     desc.name = cube ? "shadow cube face" : "shadow map";
-    auto target = RenderTarget::create(*renderer.context, desc);
+    auto target = vulkan::RenderTarget::create(*renderer.context, desc);
     if (!target) return target.error();
     map.target.emplace(std::move(*target));
     map.sampledBefore = false;
     map.cube.reset();
     if (!cube) return Ok{};
-    DeviceImageDesc cubeDesc;
+    vulkan::DeviceImageDesc cubeDesc;
     cubeDesc.format = map.target->depthStencilFormat();
     cubeDesc.width = cubeDesc.height = resolution;
     cubeDesc.cube = true;
     cubeDesc.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
     cubeDesc.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;  // the view samples depth only
-    auto image = createDeviceImage(*renderer.context, cubeDesc, "shadow cube map");
+    auto image = vulkan::createDeviceImage(*renderer.context, cubeDesc, "shadow cube map");
     if (!image) return image.error();
     map.cube.emplace(std::move(*image));
     return Ok{};
 }
 
-Result<UniqueHandle<VkSampler>> createShadowSampler(const VulkanContext& context,
-                                                    const std::string& name) {
-    SamplerDesc nearest;
+Result<vulkan::UniqueHandle<VkSampler>> createShadowSampler(const vulkan::VulkanContext& context,
+                                                            const std::string& name) {
+    vulkan::SamplerDesc nearest;
     nearest.filter = VK_FILTER_NEAREST;
     nearest.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
     nearest.addressMode = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
     nearest.name = name;
-    return createSampler(context, nearest);
+    return vulkan::createSampler(context, nearest);
 }
 
 Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
                          const scene::CameraMatrices& matrices, const ShaderValues& camera,
-                         const std::string& keyword, bool mirrored, const RenderTarget& target,
-                         FrameStorage& storage, std::vector<Draw>& draws,
-                         std::vector<std::string>& drawn) {
+                         const std::string& keyword, bool mirrored,
+                         const vulkan::RenderTarget& target, FrameStorage& storage,
+                         std::vector<Draw>& draws, std::vector<std::string>& drawn) {
     for (size_t o = 0; o < scene.objects.size(); ++o) {
         const scene::Object& object = scene.objects[o];
         const std::string what = objectLabel(o, object);
-        const Pack* pack = nullptr;
+        const reader::Pack* pack = nullptr;
         auto shader = renderer.objectShader(what, object, &pack);
         if (!shader) return shader.error();
-        std::optional<PassView> pass = shader->pass(std::string_view("ShadowCaster"));
+        std::optional<reader::PassView> pass = shader->pass(std::string_view("ShadowCaster"));
         if (!pass) continue;  // casts no shadow
         // The light's keyword and the material's (shader_feature variants, e.g. Standard's
         // _ALPHATEST_ON).
@@ -147,9 +148,15 @@ Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
         if (!material) return material.error();
         const ShaderValues& objectLayer = storage.values.emplace_back(
             objectValues(scene, object, matrices, scene::ForwardLightAssignment{}));
-        ObjectDrawRequest request{what, pack, &*pass, &*variant, *material,
-                                  object.transform.localToWorld(), object.mesh,
-                                  {target.renderPass(LoadOp::Clear), true, 1}, kShadowTargetKind};
+        ObjectDrawRequest request{what,
+                                  pack,
+                                  &*pass,
+                                  &*variant,
+                                  *material,
+                                  object.transform.localToWorld(),
+                                  object.mesh,
+                                  {target.renderPass(vulkan::LoadOp::Clear), true, 1},
+                                  kShadowTargetKind};
         request.mirroredView = mirrored;
         auto draw = renderer.objectDraw(request);
         if (!draw) return draw.error();
@@ -209,19 +216,19 @@ Status ShadowMaps::renderPoint(RendererBase& renderer, const scene::Scene& scene
     }
     Status bound = Ok{};
     uint32_t drawCount = 0;
-    const RenderTarget& target = *map.target;
+    const vulkan::RenderTarget& target = *map.target;
     const VkImage cube = map.cube->image.get();
     const uint32_t size = map.point.resolution;
     Status submitted = renderer.context->submitAndWait([&](VkCommandBuffer commands) {
         // The cube is never an attachment: it is sampled in SHADER_READ_ONLY_OPTIMAL.
         const VkImageLayout cubeFrom = map.sampledBefore ? VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL
                                                          : VK_IMAGE_LAYOUT_UNDEFINED;
-        transitionLayout(commands, cube, kDepthStencil,
-                         {cubeFrom, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                          VK_ACCESS_TRANSFER_WRITE_BIT});
+        vulkan::transitionLayout(
+            commands, cube, kDepthStencil,
+            {cubeFrom, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+             0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
         for (uint32_t face = 0; face < 6; ++face) {
-            target.begin(commands, LoadOp::Clear);
+            target.begin(commands, vulkan::LoadOp::Clear);
             VkViewport viewport = target.viewport();
             VkRect2D area = target.area();
             vkCmdSetViewport(commands, 0, 1, &viewport);
@@ -241,10 +248,11 @@ Status ShadowMaps::renderPoint(RendererBase& renderer, const scene::Scene& scene
                              backToDepth(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                                          VK_PIPELINE_STAGE_TRANSFER_BIT));
         }
-        transitionLayout(commands, cube, kDepthStencil,
-                         {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT});
+        vulkan::transitionLayout(
+            commands, cube, kDepthStencil,
+            {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+             VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+             VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT});
     });
     map.sampledBefore = true;
     if (Status reset = renderer.resources->reset(); !reset) return reset.error();
@@ -295,23 +303,24 @@ Status ShadowMaps::drawDepthPass(RendererBase& renderer, LightMap& map,
                                  const std::vector<DepthTile>& tiles) {
     Status bound = Ok{};
     uint32_t drawCount = 0;
-    const RenderTarget& target = *map.target;
+    const vulkan::RenderTarget& target = *map.target;
     Status submitted = renderer.context->submitAndWait([&](VkCommandBuffer commands) {
         if (map.sampledBefore) {
-            transitionLayout(commands, target.depthImage(), kDepthStencil,
-                             backToDepth(VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
-                                         VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT));
+            vulkan::transitionLayout(commands, target.depthImage(), kDepthStencil,
+                                     backToDepth(VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                                                 VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT));
         }
-        target.begin(commands, LoadOp::Clear);
+        target.begin(commands, vulkan::LoadOp::Clear);
         for (const DepthTile& tile : tiles) {
             vkCmdSetViewport(commands, 0, 1, &tile.viewport);
             vkCmdSetScissor(commands, 0, 1, &tile.area);
             if (bound) bound = recordDraws(commands, *renderer.resources, *tile.draws, drawCount);
         }
         target.end(commands);
-        transitionLayout(commands, target.depthImage(), kDepthStencil,
-                         depthTo(VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
-                                 VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
+        vulkan::transitionLayout(
+            commands, target.depthImage(), kDepthStencil,
+            depthTo(VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT));
     });
     map.sampledBefore = true;
     if (Status reset = renderer.resources->reset(); !reset) return reset.error();
@@ -354,4 +363,4 @@ void ShadowMaps::addReceiverValues(const scene::Scene& scene, size_t light,
     values.set("_ShadowMapTexture_TexelSize", glm::vec4(1.0f / size, 1.0f / size, size, size));
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

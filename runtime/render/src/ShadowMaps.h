@@ -14,21 +14,21 @@
 #include "varc/vulkan/DeviceImage.h"
 #include "varc/vulkan/RenderTarget.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // Appends the caster draws of every object whose shader has a ShadowCaster pass (variant
 // |keyword|, e.g. SHADOWS_DEPTH), seen through |matrices| with |camera| as their camera layer,
 // into |target|; |mirrored| views flip culling. Adds each variant's describe() to |drawn|.
 Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
                          const scene::CameraMatrices& matrices, const ShaderValues& camera,
-                         const std::string& keyword, bool mirrored, const RenderTarget& target,
-                         FrameStorage& storage, std::vector<Draw>& draws,
-                         std::vector<std::string>& drawn);
+                         const std::string& keyword, bool mirrored,
+                         const vulkan::RenderTarget& target, FrameStorage& storage,
+                         std::vector<Draw>& draws, std::vector<std::string>& drawn);
 
 // The sampler shadow maps and screen masks are read with: nearest, clamp to edge, no compare
 // (SHADER_ABI.md §6).
-Result<UniqueHandle<VkSampler>> createShadowSampler(const VulkanContext& context,
-                                                    const std::string& name);
+Result<vulkan::UniqueHandle<VkSampler>> createShadowSampler(const vulkan::VulkanContext& context,
+                                                            const std::string& name);
 
 class ShadowMaps {
 public:
@@ -63,15 +63,16 @@ private:
         scene::ShadowCamera spot;
         scene::PointShadowCamera point;
         scene::DirectionalShadowSetup directional;
-        std::optional<RenderTarget> target;  // the map (spot) or each face in turn (point)
-        std::optional<DeviceImage> cube;     // point: the depth cube the faces are copied to
+        std::optional<vulkan::RenderTarget> target;  // the map (spot) or each face in turn (point)
+        std::optional<vulkan::DeviceImage> cube;  // point: the depth cube the faces are copied to
         bool sampledBefore = false;  // the target's depth is in DEPTH_STENCIL_READ_ONLY_OPTIMAL
     };
     Status prepare(RendererBase& renderer, uint32_t resolution, bool cube, LightMap& map);
     Status casterDraws(RendererBase& renderer, const scene::Scene& scene,
                        const scene::CameraMatrices& matrices, const ShaderValues& camera,
-                       const std::string& keyword, bool mirrored, const RenderTarget& target,
-                       FrameStorage& storage, std::vector<Draw>& draws) {
+                       const std::string& keyword, bool mirrored,
+                       const vulkan::RenderTarget& target, FrameStorage& storage,
+                       std::vector<Draw>& draws) {
         return appendCasterDraws(renderer, scene, matrices, camera, keyword, mirrored, target,
                                  storage, draws, *mDrawn);
     }
@@ -94,7 +95,7 @@ private:
 
     std::map<size_t, LightMap> mMaps;  // by light index; targets reused across frames
     std::map<size_t, bool> mRendered;  // lights with a map this frame
-    UniqueHandle<VkSampler> mNearest;
+    vulkan::UniqueHandle<VkSampler> mNearest;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -26,7 +26,7 @@
 #include "varc/vulkan/Buffer.h"
 #include "varc/vulkan/RenderTarget.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -39,11 +39,11 @@ struct InstancedLayout {
     uint32_t maxInstances = 0;
 };
 
-InstancedLayout instancedLayout(const VariantView& variant) {
+InstancedLayout instancedLayout(const reader::VariantView& variant) {
     InstancedLayout layout;
     layout.maxInstances = UINT32_MAX;
     for (Stage stage : {Stage::Vertex, Stage::Fragment}) {
-        std::optional<ProgramView> program = variant.program(stage);
+        std::optional<reader::ProgramView> program = variant.program(stage);
         if (!program) continue;
         for (const pack::UniformBlock& block : program->reflection().uniformBlocks) {
             for (const pack::BlockMember& member : block.members) {
@@ -63,8 +63,8 @@ InstancedLayout instancedLayout(const VariantView& variant) {
 // One draw: an object, or an instanced batch of objects that share everything but their
 // per-instance properties.
 struct DrawGroup {
-    const Pack* pack = nullptr;
-    std::optional<PassView> pass;
+    const reader::Pack* pack = nullptr;
+    std::optional<reader::PassView> pass;
     scene::MeshKind mesh = scene::MeshKind::Sphere;
     scene::ObjectLightList lights;
     std::map<std::string, scene::PropertyValue> sharedProperties;  // instanced ones blanked
@@ -122,16 +122,16 @@ ShaderValues singleObjectValues(const scene::Object& object) {
 }  // namespace
 
 struct SinglePassRenderer::State : RendererBase {
-    CameraTargetCache<RenderTarget> targets;
+    CameraTargetCache<vulkan::RenderTarget> targets;
     // Per shader pass (PassView::describe()): the INSTANCING_ON variant's layout, or null.
     std::map<std::string, std::optional<InstancedLayout>> instancedLayouts;
 
-    const InstancedLayout* instancing(const PassView& pass);
+    const InstancedLayout* instancing(const reader::PassView& pass);
     Result<std::vector<DrawGroup>> group(const scene::Scene& scene,
                                          const scene::VisibleLightSet& visible, bool instancing);
 };
 
-const InstancedLayout* SinglePassRenderer::State::instancing(const PassView& pass) {
+const InstancedLayout* SinglePassRenderer::State::instancing(const reader::PassView& pass) {
     auto [it, inserted] = instancedLayouts.try_emplace(pass.describe());
     if (inserted && pass.keywordIndex(variants::kInstancingKeyword)) {
         std::vector<std::string> keywords = {variants::kInstancingKeyword};
@@ -182,8 +182,8 @@ SinglePassRenderer::SinglePassRenderer(SinglePassRenderer&&) noexcept = default;
 SinglePassRenderer& SinglePassRenderer::operator=(SinglePassRenderer&&) noexcept = default;
 SinglePassRenderer::~SinglePassRenderer() = default;
 
-Result<SinglePassRenderer> SinglePassRenderer::create(VulkanContext& context,
-                                                      std::vector<const Pack*> packs) {
+Result<SinglePassRenderer> SinglePassRenderer::create(vulkan::VulkanContext& context,
+                                                      std::vector<const reader::Pack*> packs) {
     auto state = std::make_unique<State>();
     if (Status ready = state->init(context, std::move(packs)); !ready) return ready.error();
     return SinglePassRenderer(std::move(state));
@@ -222,7 +222,7 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
                                   *material,
                                   first.transform.localToWorld(),
                                   group.mesh,
-                                  {(*target)->renderPass(LoadOp::Clear), true, 1},
+                                  {(*target)->renderPass(vulkan::LoadOp::Clear), true, 1},
                                   scene.camera.hdr ? 1u : 0u});
         if (!draw) return draw.error();
         draw->instances = static_cast<uint32_t>(group.objects.size());
@@ -244,4 +244,4 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene) {
 
 void SinglePassRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-namespace varc::runtime {
+namespace varc::render {
 
 glm::vec2 spotFadeConstants(float spotAngleDegrees) {
     const float outer = glm::radians(0.5f * spotAngleDegrees);
@@ -55,4 +55,4 @@ ShaderValues drawLightValues(const scene::ObjectLightList& list) {
     return values;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

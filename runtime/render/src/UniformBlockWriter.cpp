@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <cstring>
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -110,4 +110,4 @@ BlockWriteReport writeUniformBlock(const pack::UniformBlock& block, ValueLayers 
     return report;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

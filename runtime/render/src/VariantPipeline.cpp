@@ -13,7 +13,7 @@
 #include "varc/vulkan/CheckVk.h"
 #include "varc/vulkan/ShaderModule.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -21,9 +21,9 @@ Error withContext(const std::string& what, const Error& error) {
     return makeError(error.code, what + ": " + error.detail);
 }
 
-Result<std::vector<UniqueHandle<VkDescriptorSetLayout>>> createSetLayouts(
-    const VulkanContext& context, const std::vector<DescriptorSlot>& slots) {
-    std::vector<UniqueHandle<VkDescriptorSetLayout>> layouts;
+Result<std::vector<vulkan::UniqueHandle<VkDescriptorSetLayout>>> createSetLayouts(
+    const vulkan::VulkanContext& context, const std::vector<DescriptorSlot>& slots) {
+    std::vector<vulkan::UniqueHandle<VkDescriptorSetLayout>> layouts;
     for (uint32_t set = 0; set < descriptorSetCount(slots); ++set) {
         std::vector<VkDescriptorSetLayoutBinding> bindings;
         for (const DescriptorSlot& slot : slots) {
@@ -35,9 +35,9 @@ Result<std::vector<UniqueHandle<VkDescriptorSetLayout>>> createSetLayouts(
         info.bindingCount = static_cast<uint32_t>(bindings.size());
         info.pBindings = bindings.data();
         VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-        if (Status ok =
-                checkVk(vkCreateDescriptorSetLayout(context.device(), &info, nullptr, &layout),
-                        "vkCreateDescriptorSetLayout");
+        if (Status ok = vulkan::checkVk(
+                vkCreateDescriptorSetLayout(context.device(), &info, nullptr, &layout),
+                "vkCreateDescriptorSetLayout");
             !ok) {
             return ok.error();
         }
@@ -53,8 +53,9 @@ struct ShaderStage {
     std::string entryPoint;
 };
 
-Result<UniqueHandle<VkPipelineLayout>> createPipelineLayout(
-    VulkanContext& context, const std::vector<UniqueHandle<VkDescriptorSetLayout>>& setLayouts) {
+Result<vulkan::UniqueHandle<VkPipelineLayout>> createPipelineLayout(
+    vulkan::VulkanContext& context,
+    const std::vector<vulkan::UniqueHandle<VkDescriptorSetLayout>>& setLayouts) {
     std::vector<VkDescriptorSetLayout> rawLayouts;
     for (const auto& layout : setLayouts) rawLayouts.push_back(layout.get());
     VkPipelineLayoutCreateInfo layoutInfo{};
@@ -62,12 +63,13 @@ Result<UniqueHandle<VkPipelineLayout>> createPipelineLayout(
     layoutInfo.setLayoutCount = static_cast<uint32_t>(rawLayouts.size());
     layoutInfo.pSetLayouts = rawLayouts.data();
     VkPipelineLayout layout = VK_NULL_HANDLE;
-    if (Status ok = checkVk(vkCreatePipelineLayout(context.device(), &layoutInfo, nullptr, &layout),
+    if (Status ok =
+            vulkan::checkVk(vkCreatePipelineLayout(context.device(), &layoutInfo, nullptr, &layout),
                             "vkCreatePipelineLayout");
         !ok) {
         return ok.error();
     }
-    return UniqueHandle<VkPipelineLayout>(context.device(), layout);
+    return vulkan::UniqueHandle<VkPipelineLayout>(context.device(), layout);
 }
 
 // Unity draws meshes as triangles, so a tessellated mesh arrives in patches of three control
@@ -76,8 +78,8 @@ constexpr uint32_t kPatchControlPoints = 3;
 
 // A triangle-list pipeline (patches of three points with tessellation) with dynamic viewport
 // and scissor, one sample, |state|'s blend on every colour attachment of |target|.
-Result<UniqueHandle<VkPipeline>> createGraphicsPipeline(
-    VulkanContext& context, std::span<const ShaderStage> shaderStages,
+Result<vulkan::UniqueHandle<VkPipeline>> createGraphicsPipeline(
+    vulkan::VulkanContext& context, std::span<const ShaderStage> shaderStages,
     const VertexInputLayout& vertexInput, VkPipelineLayout layout, const VulkanRenderState& state,
     const PipelineTarget& target, VkPipelineCache cache) {
     std::vector<VkPipelineShaderStageCreateInfo> stages;
@@ -140,13 +142,13 @@ Result<UniqueHandle<VkPipeline>> createGraphicsPipeline(
     info.layout = layout;
     info.renderPass = target.renderPass;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    if (Status ok = checkVk(
+    if (Status ok = vulkan::checkVk(
             vkCreateGraphicsPipelines(context.device(), cache, 1, &info, nullptr, &pipeline),
             "vkCreateGraphicsPipelines");
         !ok) {
         return ok.error();
     }
-    return UniqueHandle<VkPipeline>(context.device(), pipeline);
+    return vulkan::UniqueHandle<VkPipeline>(context.device(), pipeline);
 }
 
 }  // namespace
@@ -164,15 +166,16 @@ constexpr std::array<std::pair<Stage, VkShaderStageFlagBits>, 5> kPipelineStages
 
 }  // namespace
 
-Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const VariantView& variant,
+Result<VariantPipeline> VariantPipeline::create(vulkan::VulkanContext& context,
+                                                const reader::VariantView& variant,
                                                 const pack::PackRenderState& resolvedState,
                                                 const PipelineTarget& target,
                                                 VkPipelineCache cache) {
     VariantPipeline result;
     result.mDescription = variant.describe();
-    std::vector<std::pair<VkShaderStageFlagBits, ProgramView>> programs;
+    std::vector<std::pair<VkShaderStageFlagBits, reader::ProgramView>> programs;
     for (const auto& [stage, vulkanStage] : kPipelineStages) {
-        if (std::optional<ProgramView> program = variant.program(stage)) {
+        if (std::optional<reader::ProgramView> program = variant.program(stage)) {
             programs.emplace_back(vulkanStage, *program);
         }
     }
@@ -196,7 +199,7 @@ Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const Va
     auto vertexInput = vertexInputLayout(reflections.front().vertexInputs);
     if (!vertexInput) return withContext(result.mDescription, vertexInput.error());
 
-    std::vector<UniqueHandle<VkShaderModule>> modules;
+    std::vector<vulkan::UniqueHandle<VkShaderModule>> modules;
     std::vector<ShaderStage> stages;
     for (const auto& [vulkanStage, program] : programs) {
         auto spirv = program.spirv();
@@ -222,4 +225,4 @@ Result<VariantPipeline> VariantPipeline::create(VulkanContext& context, const Va
     return result;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -7,7 +7,7 @@
 
 #include "varc/core/AsciiCase.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 namespace {
 
@@ -51,4 +51,4 @@ Result<VertexInputLayout> vertexInputLayout(const std::vector<pack::VertexInput>
     return layout;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::render

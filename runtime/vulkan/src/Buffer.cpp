@@ -8,7 +8,7 @@
 #include "varc/core/Check.h"
 #include "varc/vulkan/CheckVk.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 Result<Buffer> Buffer::create(const VulkanContext& context, VkDeviceSize size,
                               VkBufferUsageFlags usage, MemoryLocation location,
@@ -92,4 +92,4 @@ void Buffer::write(std::span<const std::byte> data, VkDeviceSize offset) {
     if (!data.empty()) std::memcpy(mMapped + offset, data.data(), data.size());
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

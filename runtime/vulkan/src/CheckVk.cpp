@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 const char* vkResultName(VkResult result) {
     switch (result) {
@@ -59,4 +59,4 @@ Status checkVk(VkResult result, const char* call, std::source_location where) {
                                                  std::to_string(where.line()) + ")");
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

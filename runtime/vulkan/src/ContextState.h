@@ -13,7 +13,7 @@
 #include "varc/vulkan/VulkanContext.h"
 #include "ValidationLog.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 // Heap-allocated so the ValidationLog keeps its address (it is the messenger's pUserData) when
 // the context moves.
@@ -55,4 +55,4 @@ Status selectPhysicalDevice(VulkanContext::State& state, const std::string& pref
 // Creates |state.device|, |state.queue| and |state.commandPool|.
 Status createDevice(VulkanContext::State& state);
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -6,7 +6,7 @@
 
 #include "varc/vulkan/CheckVk.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 namespace {
 
@@ -92,4 +92,4 @@ void transitionLayout(VkCommandBuffer commands, VkImage image, VkImageAspectFlag
                          nullptr, 1, &barrier);
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -9,7 +9,7 @@
 #include "varc/core/AsciiCase.h"
 #include "varc/vulkan/CheckVk.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 namespace {
 
@@ -164,4 +164,4 @@ Status createDevice(VulkanContext::State& state) {
                    "vkCreateCommandPool", std::source_location::current());
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -7,7 +7,7 @@
 #include "varc/vulkan/CheckVk.h"
 #include "ContextState.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 namespace {
 
@@ -116,4 +116,4 @@ Status createInstance(VulkanContext::State& state, const std::string& applicatio
     return state.validation ? createMessenger(state) : Status(Ok{});
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -4,7 +4,7 @@
 
 #include "varc/vulkan/CheckVk.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 Result<UniqueHandle<VkRenderPass>> createOneSubpassPass(
     VkDevice device, std::span<const VkAttachmentDescription> attachments,
@@ -46,4 +46,4 @@ Result<UniqueHandle<VkFramebuffer>> createPassFramebuffer(VkDevice device, VkRen
     return UniqueHandle<VkFramebuffer>(device, framebuffer);
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

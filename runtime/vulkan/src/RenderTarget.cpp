@@ -11,7 +11,7 @@
 #include "varc/vulkan/CheckVk.h"
 #include "varc/vulkan/RenderPass.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 namespace {
 
@@ -116,13 +116,14 @@ Result<UniqueHandle<VkRenderPass>> createRenderPass(VkDevice device,
 }
 
 // Converts |bytes| read back from a |format| image to an Image.
-Image convertReadback(const std::byte* bytes, uint32_t width, uint32_t height, ColorFormat format) {
+image::Image convertReadback(const std::byte* bytes, uint32_t width, uint32_t height,
+                             ColorFormat format) {
     if (!isFloat(format)) {
-        Image image(width, height, PixelFormat::Rgba8);
+        image::Image image(width, height, image::PixelFormat::Rgba8);
         std::memcpy(image.bytes().data(), bytes, image.bytes().size());
         return image;
     }
-    Image image(width, height, PixelFormat::RgbaFloat);
+    image::Image image(width, height, image::PixelFormat::RgbaFloat);
     std::span<float> out = image.floats();
     if (format == ColorFormat::Rgba32Float) {
         std::memcpy(out.data(), bytes, out.size_bytes());
@@ -130,7 +131,7 @@ Image convertReadback(const std::byte* bytes, uint32_t width, uint32_t height, C
         for (std::size_t i = 0; i < out.size(); ++i) {
             uint16_t half = 0;
             std::memcpy(&half, bytes + i * 2, 2);
-            out[i] = halfToFloat(half);
+            out[i] = image::halfToFloat(half);
         }
     }
     return image;
@@ -343,7 +344,7 @@ void RenderTarget::begin(VkCommandBuffer commands, LoadOp op) const {
 
 void RenderTarget::end(VkCommandBuffer commands) const { vkCmdEndRenderPass(commands); }
 
-Result<Image> RenderTarget::readback(VulkanContext& context, uint32_t attachment) const {
+Result<image::Image> RenderTarget::readback(VulkanContext& context, uint32_t attachment) const {
     VARC_CHECK(attachment < colorAttachmentCount()) << "no colour attachment " << attachment;
     ColorFormat format = attachmentFormat(attachment);
     VkDeviceSize size = VkDeviceSize{mDesc.width} * mDesc.height * bytesPerPixel(format);
@@ -386,4 +387,4 @@ void RenderTarget::recordReadback(VkCommandBuffer commands, VkBuffer destination
                          nullptr, 1, &toHost, 0, nullptr);
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

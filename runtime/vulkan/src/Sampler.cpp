@@ -6,7 +6,7 @@
 
 #include "varc/vulkan/CheckVk.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 Result<UniqueHandle<VkSampler>> createSampler(const VulkanContext& context,
                                               const SamplerDesc& desc) {
@@ -37,4 +37,4 @@ Result<UniqueHandle<VkSampler>> createSampler(const VulkanContext& context,
     return handle;
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -7,7 +7,7 @@
 #include "varc/core/FileRead.h"
 #include "varc/vulkan/CheckVk.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 Result<std::vector<uint32_t>> readSpirvFile(const std::string& path) {
     Result<std::string> read = readFile(path);
@@ -54,4 +54,4 @@ Result<UniqueHandle<VkShaderModule>> loadShaderModule(const VulkanContext& conte
     return createShaderModule(context, *words, path);
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -11,7 +11,7 @@
 #include "varc/vulkan/Buffer.h"
 #include "varc/vulkan/CheckVk.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 namespace {
 
@@ -22,7 +22,7 @@ VkFormatFeatureFlags optimalFeatures(const VulkanContext& context, VkFormat form
 }
 
 // The texel bytes of |image| in the texture's format (8-bit as is, floats as halves).
-std::vector<std::byte> texelBytes(const Image& image) {
+std::vector<std::byte> texelBytes(const image::Image& image) {
     if (!image.isFloat()) {
         std::span<const std::byte> raw = std::as_bytes(image.bytes());
         return std::vector<std::byte>(raw.begin(), raw.end());
@@ -30,21 +30,21 @@ std::vector<std::byte> texelBytes(const Image& image) {
     std::span<const float> floats = image.floats();
     std::vector<std::byte> bytes(floats.size() * 2);
     for (std::size_t i = 0; i < floats.size(); ++i) {
-        uint16_t half = floatToHalf(floats[i]);
+        uint16_t half = image::floatToHalf(floats[i]);
         std::memcpy(bytes.data() + i * 2, &half, 2);
     }
     return bytes;
 }
 
-Status checkLayers(std::span<const Image> layers, bool cube) {
-    const Image& first = layers.front();
+Status checkLayers(std::span<const image::Image> layers, bool cube) {
+    const image::Image& first = layers.front();
     if (first.width() == 0 || first.height() == 0) {
         return makeError(ErrorCode::InvalidInput, "cannot make a texture from an empty image");
     }
     if (cube && (layers.size() != 6 || first.width() != first.height())) {
         return makeError(ErrorCode::InvalidInput, "a cube texture needs six square faces");
     }
-    for (const Image& layer : layers) {
+    for (const image::Image& layer : layers) {
         if (layer.width() != first.width() || layer.height() != first.height() ||
             layer.format() != first.format()) {
             return makeError(ErrorCode::InvalidInput, "the faces or slices differ in size or pixel format");
@@ -55,12 +55,12 @@ Status checkLayers(std::span<const Image> layers, bool cube) {
 
 }  // namespace
 
-Result<Texture> Texture::create2D(VulkanContext& context, const Image& image,
+Result<Texture> Texture::create2D(VulkanContext& context, const image::Image& image,
                                   const TextureOptions& options) {
-    return create(context, std::span<const Image>(&image, 1), Shape::Flat, options);
+    return create(context, std::span<const image::Image>(&image, 1), Shape::Flat, options);
 }
 
-Result<Texture> Texture::createCube(VulkanContext& context, std::span<const Image> faces,
+Result<Texture> Texture::createCube(VulkanContext& context, std::span<const image::Image> faces,
                                     const TextureOptions& options) {
     if (faces.size() != 6) {
         return makeError(ErrorCode::InvalidInput,
@@ -69,7 +69,7 @@ Result<Texture> Texture::createCube(VulkanContext& context, std::span<const Imag
     return create(context, faces, Shape::Cube, options);
 }
 
-Result<Texture> Texture::createVolume(VulkanContext& context, std::span<const Image> slices,
+Result<Texture> Texture::createVolume(VulkanContext& context, std::span<const image::Image> slices,
                                       const TextureOptions& options) {
     if (slices.empty()) return makeError(ErrorCode::InvalidInput, "a 3D texture needs slices");
     if (options.mipmaps) {
@@ -78,12 +78,12 @@ Result<Texture> Texture::createVolume(VulkanContext& context, std::span<const Im
     return create(context, slices, Shape::Volume, options);
 }
 
-Result<Texture> Texture::create(VulkanContext& context, std::span<const Image> layers,
+Result<Texture> Texture::create(VulkanContext& context, std::span<const image::Image> layers,
                                 Shape shape, const TextureOptions& options) {
     bool cube = shape == Shape::Cube;
     if (Status status = checkLayers(layers, cube); !status) return status.error();
     Texture texture;
-    const Image& first = layers.front();
+    const image::Image& first = layers.front();
     texture.mWidth = first.width();
     texture.mHeight = first.height();
     texture.mCube = cube;
@@ -120,7 +120,7 @@ Result<Texture> Texture::create(VulkanContext& context, std::span<const Image> l
     return texture;
 }
 
-Status Texture::upload(VulkanContext& context, std::span<const Image> layers) {
+Status Texture::upload(VulkanContext& context, std::span<const image::Image> layers) {
     std::vector<std::byte> staged;
     std::vector<VkBufferImageCopy> regions;
     for (uint32_t layer = 0; layer < layers.size(); ++layer) {
@@ -187,4 +187,4 @@ void Texture::recordMipChain(VkCommandBuffer commands, VkFilter filter) const {
          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT, mMipLevels - 1, 1});
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

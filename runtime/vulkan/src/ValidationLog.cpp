@@ -5,7 +5,7 @@
 #include <string>
 #include <utility>
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 std::string toString(const ValidationMessage& message) {
     std::string out =
@@ -63,4 +63,4 @@ void ValidationLog::record(ValidationMessage message) {
     if (mObserver) mObserver(message);
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -11,7 +11,7 @@
 
 #include "varc/vulkan/ValidationMessage.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 // Records every message handed to |callback| (the messenger's pfnUserCallback, with the log as
 // pUserData) and forwards it to an optional observer. Layers may call from any thread.
@@ -47,4 +47,4 @@ private:
     std::vector<ValidationMessage> mMessages;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -10,7 +10,7 @@
 #include "varc/vulkan/CheckVk.h"
 #include "ContextState.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 namespace {
 
@@ -198,4 +198,4 @@ void VulkanContext::setObjectName(VkObjectType type, uint64_t handle,
     (void)mState->setObjectName(device(), &info);
 }
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -11,8 +11,8 @@
 namespace varc::properties {
 namespace {
 
-using runtime::Image;
-using runtime::PixelFormat;
+using image::Image;
+using image::PixelFormat;
 
 Image filled(float value, uint32_t size = 8) {
     Image image(size, size, PixelFormat::RgbaFloat);

@@ -65,7 +65,7 @@ protected:
         ASSERT_EQ(a.mainDirectional, 0);
         ASSERT_EQ(a.addLights.size(), 2u);
     }
-    CompareResult compareWith(const runtime::Image& rendered) {
+    CompareResult compareWith(const image::Image& rendered) {
         return compareImages(rendered, mReference.color, mReference.classes);
     }
 
@@ -86,7 +86,7 @@ TEST_F(ImageCompareTest, IdenticalImagePasses) {
 }
 
 TEST_F(ImageCompareTest, OneLsbNoisePasses) {
-    runtime::Image noisy = mReference.color.toRgba8();
+    image::Image noisy = mReference.color.toRgba8();
     std::mt19937 random(5);
     std::uniform_int_distribution<int> lsb(-1, 1);
     for (uint8_t& byte : noisy.bytes()) byte = static_cast<uint8_t>(std::clamp(byte + lsb(random), 0, 255));
@@ -97,7 +97,7 @@ TEST_F(ImageCompareTest, OneLsbNoisePasses) {
 }
 
 TEST_F(ImageCompareTest, SystematicOneLsbBiasFailsOnTheMean) {
-    runtime::Image biased = mReference.color.toRgba8();
+    image::Image biased = mReference.color.toRgba8();
     for (uint8_t& byte : biased.bytes()) byte = static_cast<uint8_t>(std::min(255, byte + 1));
     const CompareResult r = compareWith(biased);
     EXPECT_FALSE(r.passed) << r.message;
@@ -106,7 +106,7 @@ TEST_F(ImageCompareTest, SystematicOneLsbBiasFailsOnTheMean) {
 }
 
 TEST_F(ImageCompareTest, SingleWrongInteriorPixelIsReported) {
-    runtime::Image wrong = mReference.color.toRgba8();
+    image::Image wrong = mReference.color.toRgba8();
     uint32_t x = 0, y = 0;
     for (uint32_t i = 0; i < 96 * 96; ++i) {
         if (mReference.classes.classes[i] == PixelClass::Interior) {
@@ -133,8 +133,8 @@ TEST_F(ImageCompareTest, SingleWrongInteriorPixelIsReported) {
 
 // The mask shows what each pixel was checked as: its class, an interval, or a mismatch.
 TEST_F(ImageCompareTest, MaskColoursPixelClassesIntervalsAndMismatches) {
-    runtime::Image wrong = mReference.color.toRgba8();
-    runtime::Image high = mReference.color;
+    image::Image wrong = mReference.color.toRgba8();
+    image::Image high = mReference.color;
     uint32_t edge = 0, background = 0;
     std::vector<uint32_t> interior;
     for (uint32_t i = 0; i < 96 * 96; ++i) {
@@ -163,7 +163,7 @@ TEST_F(ImageCompareTest, MaskColoursPixelClassesIntervalsAndMismatches) {
 
 // An edge pixel that shows its neighbour's colour (a one-pixel coverage difference) passes.
 TEST_F(ImageCompareTest, EdgePixelMayMatchANeighbour) {
-    runtime::Image shifted = mReference.color.toRgba8();
+    image::Image shifted = mReference.color.toRgba8();
     int changed = 0;
     for (uint32_t y = 1; y + 1 < 96; ++y) {
         for (uint32_t x = 1; x + 1 < 96; ++x) {
@@ -205,7 +205,7 @@ TEST_F(ImageCompareTest, SwappedLightTypeFails) {
 }
 
 TEST_F(ImageCompareTest, SizeMismatchFails) {
-    const runtime::Image small(32, 32, runtime::PixelFormat::Rgba8);
+    const image::Image small(32, 32, image::PixelFormat::Rgba8);
     const CompareResult r = compareWith(small);
     EXPECT_FALSE(r.passed);
     EXPECT_NE(r.message.find("sizes differ"), std::string::npos);

@@ -17,13 +17,13 @@ float srgbToLinear(float c) {
 }
 
 TEST(LinearTexture, DecodesSrgbThenFiltersBilinearlyWithRepeat) {
-    runtime::Image image(2, 1, runtime::PixelFormat::Rgba8);
+    image::Image image(2, 1, image::PixelFormat::Rgba8);
     image.setPixel8(0, 0, {0, 64, 255, 255});
     image.setPixel8(1, 0, {255, 192, 0, 51});
     const std::string path = (std::filesystem::path(::testing::TempDir()) /
                               ("varc-linear-texture-" + std::to_string(::getpid()) + ".png"))
                                  .string();
-    ASSERT_TRUE(runtime::writePng(path, image).ok());
+    ASSERT_TRUE(image::writePng(path, image).ok());
     auto texture = LinearTexture::load(path);
     std::filesystem::remove(path);
     ASSERT_TRUE(texture.ok()) << texture.error().detail;

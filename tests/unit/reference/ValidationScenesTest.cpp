@@ -24,8 +24,8 @@ fs::path outputDir() {
     return dir;
 }
 
-runtime::Image classImage(const Classification& c) {
-    runtime::Image image(c.width, c.height, runtime::PixelFormat::Rgba8);
+image::Image classImage(const Classification& c) {
+    image::Image image(c.width, c.height, image::PixelFormat::Rgba8);
     for (uint32_t y = 0; y < c.height; ++y) {
         for (uint32_t x = 0; x < c.width; ++x) {
             const uint8_t v = c.at(x, y) == PixelClass::Interior ? 255 : c.at(x, y) == PixelClass::Edge ? 128 : 0;
@@ -60,8 +60,10 @@ TEST(ValidationScenes, EveryForwardSceneRenders) {
         }
         EXPECT_GT(interior, image->color.width() * image->color.height() / 5) << name;
         EXPECT_GT(lit, interior / 10) << name;
-        ASSERT_TRUE(runtime::writePng((out / (name + ".png")).string(), image->color).ok());
-        ASSERT_TRUE(runtime::writePng((out / (name + ".classes.png")).string(), classImage(image->classes)).ok());
+        ASSERT_TRUE(image::writePng((out / (name + ".png")).string(), image->color).ok());
+        ASSERT_TRUE(
+            image::writePng((out / (name + ".classes.png")).string(), classImage(image->classes))
+                .ok());
     }
     EXPECT_GE(scenes, 8);
     std::printf("reference images in %s\n", out.string().c_str());

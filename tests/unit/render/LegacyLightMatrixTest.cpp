@@ -5,7 +5,7 @@
 #include "varc/render/DeferredValues.h"
 #include "varc/render/SceneValues.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 // A GLSLPROGRAM declares `uniform mat4 _LightMatrix0;` itself (the corpus's Custom/LightCookie):
@@ -34,4 +34,4 @@ TEST(LegacyLightMatrix, CarriesTheWorldToLightMatrixOfEveryLight) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -12,7 +12,7 @@
 #include "varc/render/LightVolume.h"
 #include "varc/scene/Scene.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 // Largest signed distance of |p| to the outward face planes of |mesh| placed by |toWorld|.
@@ -160,4 +160,4 @@ TEST(LightVolume, TheVolumeScenesUseEveryDraw) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

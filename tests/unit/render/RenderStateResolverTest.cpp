@@ -4,7 +4,7 @@
 
 #include "varc/render/RenderStateResolver.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 // Seed 002's light pass: `Blend [_SrcBlend] [_DstBlend]`, ZWrite Off.
@@ -75,4 +75,4 @@ TEST(RenderStateResolver, StencilNeedsAStencilAttachment) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

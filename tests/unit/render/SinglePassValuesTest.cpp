@@ -6,7 +6,7 @@
 
 #include "varc/render/SinglePassValues.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 glm::vec4 element(const ShaderValues& values, const char* name, size_t i) {
@@ -76,4 +76,4 @@ TEST(SinglePassValues, DrawListsSplitIntoPixelAndVertexLights) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

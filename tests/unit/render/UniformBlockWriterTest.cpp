@@ -5,7 +5,7 @@
 
 #include "varc/render/UniformBlockWriter.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 float floatAt(const std::vector<std::byte>& bytes, size_t offset) {
@@ -86,4 +86,4 @@ TEST(UniformBlockWriter, NeverWritesPastAMemberThatOverrunsTheBlock) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

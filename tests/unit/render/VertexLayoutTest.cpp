@@ -5,7 +5,7 @@
 
 #include "varc/render/VertexLayout.h"
 
-namespace varc::runtime {
+namespace varc::render {
 namespace {
 
 TEST(VertexLayout, SemanticsAndLegacyNamesMapOntoTheMeshStreams) {
@@ -31,4 +31,4 @@ TEST(VertexLayout, UnknownSemanticIsAnErrorNamingIt) {
 }
 
 }  // namespace
-}  // namespace varc::runtime
+}  // namespace varc::render

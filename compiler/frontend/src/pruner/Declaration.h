@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 
 // Token range of one top-level declaration as found by DeclarationSplitter, with the landmarks
 // the classifier needs. Indices are into the tokenizer's token list.
@@ -40,4 +40,4 @@ struct Declaration {
     std::vector<std::string_view> uses;     // identifiers it mentions (a superset of references)
 };
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

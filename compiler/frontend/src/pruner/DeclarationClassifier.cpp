@@ -7,7 +7,7 @@
 
 #include "pruner/TokenMatch.h"
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 namespace {
 
 template <size_t N>
@@ -253,4 +253,4 @@ bool DeclarationClassifier::noteQualifier(std::string_view word, Statement& stat
     return true;
 }
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

@@ -9,7 +9,7 @@
 #include "pruner/ShaderTokenizer.h"
 #include "varc/frontend/StagePruner.h"
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 
 class DeclarationClassifier {
 public:
@@ -56,4 +56,4 @@ private:
     ShaderDialect mDialect;
 };
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

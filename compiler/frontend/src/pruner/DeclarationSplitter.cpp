@@ -7,7 +7,7 @@
 
 #include "pruner/TokenMatch.h"
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 namespace {
 
 // Identifiers followed by `(` that do not name a function: `layout(std140)`,
@@ -83,4 +83,4 @@ bool DeclarationSplitter::endsAtClosingBrace(size_t begin) const {
            isHlslBlockKeyword(mTokens[first].text);
 }
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

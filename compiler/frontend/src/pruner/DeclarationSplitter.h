@@ -9,7 +9,7 @@
 #include "pruner/ShaderTokenizer.h"
 #include "varc/frontend/StagePruner.h"
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 
 class DeclarationSplitter {
 public:
@@ -34,4 +34,4 @@ private:
     ShaderDialect mDialect;
 };
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

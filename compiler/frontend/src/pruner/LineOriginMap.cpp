@@ -4,7 +4,7 @@
 
 #include <optional>
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 namespace {
 
 struct LineDirective {
@@ -94,4 +94,4 @@ bool LineOriginMap::build(const std::vector<DirectiveLine>& directives, size_t l
     return true;
 }
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

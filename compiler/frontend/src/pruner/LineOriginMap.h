@@ -9,7 +9,7 @@
 
 #include "pruner/ShaderTokenizer.h"
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 
 struct LineOrigin {
     bool afterLineDirective = false;  // false: no #line above; |line| is the physical line
@@ -39,4 +39,4 @@ private:
     std::vector<LineOrigin> mOrigins;
 };
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

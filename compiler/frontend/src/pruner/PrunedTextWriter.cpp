@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 namespace {
 
 std::string_view trimRight(std::string_view s) {
@@ -99,4 +99,4 @@ void PrunedTextWriter::padTo(size_t line) {
     }
 }
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

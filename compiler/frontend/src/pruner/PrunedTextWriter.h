@@ -10,7 +10,7 @@
 #include "pruner/LineOriginMap.h"
 #include "pruner/ShaderTokenizer.h"
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 
 class PrunedTextWriter {
 public:
@@ -49,4 +49,4 @@ private:
     LineOrigin mNext;  // what the next output line maps to, once a #line is written
 };
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

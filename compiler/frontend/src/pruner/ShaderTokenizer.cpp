@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 namespace {
 
 constexpr size_t kNotFound = std::string::npos;
@@ -151,4 +151,4 @@ size_t ShaderTokenizer::scanNumber(size_t begin) const {
     return i;
 }
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 
 enum class TokenKind { Identifier, Number, String, Punct };
 
@@ -63,4 +63,4 @@ private:
     std::vector<DirectiveLine> mDirectives;
 };
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

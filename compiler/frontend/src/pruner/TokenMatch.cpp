@@ -2,7 +2,7 @@
 // Small token predicates and bracket matching shared by the declaration splitter and classifier.
 #include "pruner/TokenMatch.h"
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 namespace {
 
 char closerOf(const Token& open) {
@@ -57,4 +57,4 @@ void collectReferences(const std::vector<Token>& tokens, size_t begin, size_t en
     }
 }
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

@@ -9,7 +9,7 @@
 
 #include "pruner/ShaderTokenizer.h"
 
-namespace varc::compiler::pruner {
+namespace varc::frontend::pruner {
 
 inline bool isPunct(const Token& token, char c) {
     return token.kind == TokenKind::Punct && token.text.size() == 1 && token.text[0] == c;
@@ -41,4 +41,4 @@ size_t skipAttributes(const std::vector<Token>& tokens, size_t begin, size_t end
 void collectReferences(const std::vector<Token>& tokens, size_t begin, size_t end,
                        std::vector<std::string_view>& out);
 
-}  // namespace varc::compiler::pruner
+}  // namespace varc::frontend::pruner

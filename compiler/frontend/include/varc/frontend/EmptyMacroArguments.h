@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // |text| (HLSL before preprocessing) with each call of a one-parameter function-like macro whose
 // argument is empty or the lone token `##` replaced by the macro's body on the call's line, the
@@ -19,4 +19,4 @@ namespace varc::compiler {
 // a body that pastes or stringises anything but the parameter leaves its calls alone.
 std::string expandEmptyMacroArguments(std::string_view text);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // Where an entry-point parameter without a name sits, in |preprocessed|'s own coordinates and
 // in the original file's (through the text's `#line <line> <fileId>` directives).
@@ -29,4 +29,4 @@ struct UnnamedParameter {
 std::optional<UnnamedParameter> findUnnamedEntryParameter(std::string_view preprocessed,
                                                           std::string_view entry);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // Rewrites a preprocessed HLSL program (no macros left, `#line` directives allowed) so glslang
 // compiles constructs that the DirectX compilers accept and glslang refuses:
@@ -64,4 +64,4 @@ std::string truncateWideHexLiterals(std::string_view text);
 // Text without SV_IsFrontFace or VFACE is returned unchanged.
 std::string fixFrontFaceParameterTypes(std::string_view text);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

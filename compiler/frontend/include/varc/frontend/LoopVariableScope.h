@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // fxc (and so Unity) puts a variable declared in a `for` header in the enclosing block, as
 // Direct3D 9 HLSL did: code after the loop may use it, and a second loop may declare it again
@@ -21,4 +21,4 @@ namespace varc::compiler {
 // No line is added or removed. Returns |text| unchanged when nothing applies.
 std::string hoistLoopVariables(std::string_view text, const std::vector<std::string>& unknownNames);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // The names glslang's |log| reports as redefined with different substitutions.
 // Example: "ERROR: 9:9: '#define' : Macro redefined; different substitutions: PI\n" -> {"PI"}.
@@ -22,4 +22,4 @@ std::vector<std::string> redefinedMacros(std::string_view log);
 std::string undefineBeforeRedefinitions(std::string_view text,
                                         const std::vector<std::string>& names);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -7,7 +7,7 @@
 #include "varc/frontend/ShaderCatalog.h"
 #include "varc/shaderlab/ShaderAst.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // Resolves the references of |shader| in place, finding other shaders through |catalog|:
 //  * `UsePass "Some/Shader/PASSNAME"` becomes a copy of the pass named PASSNAME (compared
@@ -24,4 +24,4 @@ namespace varc::compiler {
 void resolvePassReferences(shaderlab::ShaderFile& shader, ShaderCatalog& catalog,
                            DiagnosticSink& sink);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

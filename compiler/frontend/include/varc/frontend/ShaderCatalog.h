@@ -11,7 +11,7 @@
 #include "varc/includes/SourceMap.h"
 #include "varc/shaderlab/ShaderAst.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // Where the shaders a reference may name are found, in this order (Unity finds any shader of
 // the project by name):
@@ -52,4 +52,4 @@ private:
     Group mGroups[3];  // inputs, search files, built-in shaders (listed when first parsed)
 };
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -15,7 +15,7 @@
 #include "varc/variants/PassKeywords.h"
 #include "varc/variants/VariantSpace.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // One pass that has a program block, ready for variant expansion and compilation.
 struct LoadedPass {
@@ -63,4 +63,4 @@ std::string describePassOrigin(const shaderlab::PassOrigin& origin);
 std::string describePass(const shaderlab::ShaderFile& shader, const shaderlab::Pass& pass,
                          size_t index);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 enum class ShaderDialect { Hlsl, Glsl };
 
@@ -61,4 +61,4 @@ struct PruneResult {
 PruneResult pruneToEntryPoint(std::string_view preprocessed, std::string_view entryPoint,
                               ShaderDialect dialect);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

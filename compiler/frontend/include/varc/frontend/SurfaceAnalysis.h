@@ -10,7 +10,7 @@
 #include "varc/core/Diagnostic.h"
 #include "varc/shaderlab/ShaderAst.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // How the lighting function `Lighting<MODEL>` takes its light (docs/SURFACE_SHADERS.md):
 // Gi: (s, gi); GiViewDir: (s, viewDir, gi); Legacy: (s, lightDir, atten);
@@ -61,4 +61,4 @@ std::string withoutComments(std::string_view text);
 std::optional<SurfaceFacts> analyzeSurface(const shaderlab::SurfaceProgram& program,
                                            std::string_view text, DiagnosticSink& sink);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

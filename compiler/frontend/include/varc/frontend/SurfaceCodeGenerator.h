@@ -7,7 +7,7 @@
 #include "varc/frontend/SurfaceAnalysis.h"
 #include "varc/shaderlab/ShaderAst.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 enum class SurfacePassKind { ForwardBase, ForwardAdd, ShadowCaster };
 
@@ -28,4 +28,4 @@ shaderlab::GeneratedCode generateSurfaceCode(const shaderlab::SurfaceProgram& pr
 // physically based models (Standard, StandardSpecular), fade for the others, as Unity does.
 shaderlab::SurfaceOptions::Alpha effectiveAlpha(const shaderlab::SurfaceProgram& program);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

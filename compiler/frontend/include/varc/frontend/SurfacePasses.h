@@ -8,7 +8,7 @@
 #include "varc/core/Diagnostic.h"
 #include "varc/shaderlab/ShaderAst.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // The text a surface program is analysed in (its program with the include files spliced);
 // nullopt after reporting why it cannot be had.
@@ -24,4 +24,4 @@ using SurfaceTextProvider = std::function<std::optional<std::string>(const shade
 bool generateSurfacePasses(shaderlab::ShaderFile& shader, const SurfaceTextProvider& textOf,
                            DiagnosticSink& sink);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -8,7 +8,7 @@
 #include "varc/core/Diagnostic.h"
 #include "varc/frontend/ShaderLoader.h"
 
-namespace varc::compiler {
+namespace varc::frontend {
 
 // The default of --max-variants: per pass.
 inline constexpr uint64_t kDefaultMaxVariantsPerPass = 10'000'000;
@@ -20,4 +20,4 @@ inline constexpr uint64_t kDefaultMaxVariantsPerPass = 10'000'000;
 bool checkVariantLimit(const LoadedShader& shader, const LoadedPass& pass, uint64_t limit,
                        DiagnosticSink& sink);
 
-}  // namespace varc::compiler
+}  // namespace varc::frontend

@@ -9,7 +9,7 @@
 #include "varc/core/Result.h"
 #include "varc/pack/PackModel.h"
 
-namespace varc::compiler {
+namespace varc::packwriter {
 
 enum class PackDictionary {
     Auto,    // train a zstd dictionary across the blobs; keep it only if the pack gets smaller
@@ -53,4 +53,4 @@ std::string serializePack(const pack::PackContents& contents, const PackWriteOpt
 Status writePack(const std::string& path, const pack::PackContents& contents,
                  const PackWriteOptions& options = {}, PackWriteStats* stats = nullptr);
 
-}  // namespace varc::compiler
+}  // namespace varc::packwriter

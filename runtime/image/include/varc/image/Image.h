@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-namespace varc::runtime {
+namespace varc::image {
 
 enum class PixelFormat {
     Rgba8,      // 4 bytes per pixel, as stored (sRGB-encoded when the source was an sRGB format)
@@ -65,4 +65,4 @@ private:
 float halfToFloat(uint16_t half);
 uint16_t floatToHalf(float value);
 
-}  // namespace varc::runtime
+}  // namespace varc::image

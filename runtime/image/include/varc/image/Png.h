@@ -9,7 +9,7 @@
 #include "varc/core/Result.h"
 #include "varc/image/Image.h"
 
-namespace varc::runtime {
+namespace varc::image {
 
 // Encodes |image| as an 8-bit RGBA PNG with zlib |zlibLevel| (0 = store .. 9 = smallest) and
 // one fixed row filter ("sub") instead of libpng's per-row adaptive choice. Float (HDR) images are
@@ -40,4 +40,4 @@ Result<Image> decodePng(std::string_view bytes);
 // be read, else those of decodePng (the message names |path|).
 Result<Image> readPng(const std::string& path);
 
-}  // namespace varc::runtime
+}  // namespace varc::image

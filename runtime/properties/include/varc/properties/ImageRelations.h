@@ -14,7 +14,7 @@ namespace varc::properties {
 
 // One term of an expected image: |weight| x |image|.
 struct Term {
-    const runtime::Image* image = nullptr;
+    const image::Image* image = nullptr;
     float weight = 1.0f;
 };
 
@@ -43,8 +43,8 @@ struct RelationCheck {
     size_t comparedPixels = 0;  // pixels not skipped as saturated
     size_t failingPixels = 0;
     std::vector<PixelError> worst;  // up to kWorstPixels failing pixels, largest excess first
-    runtime::Image expected;        // RgbaFloat: the weighted sum of the terms
-    runtime::Image diff;            // Rgba8: |actual - expected| x 16, red where failing
+    image::Image expected;          // RgbaFloat: the weighted sum of the terms
+    image::Image diff;              // Rgba8: |actual - expected| x 16, red where failing
     // "passed (4096 pixels)" or "12 of 4096 pixels differ; worst: (31,20) G expected 0.25 got
     // 0.5 (allowed 0.001); ..."
     std::string summary() const;
@@ -54,26 +54,26 @@ inline constexpr size_t kWorstPixels = 5;
 
 // Compares |actual| with the sum of |terms| (RGB channels only: alpha is not a lit value). All
 // images must have |actual|'s size (VARC_CHECK). A NaN anywhere fails its pixel.
-RelationCheck checkRelation(const runtime::Image& actual, const std::vector<Term>& terms,
+RelationCheck checkRelation(const image::Image& actual, const std::vector<Term>& terms,
                             const Tolerance& tolerance);
 
 // |image| flipped left to right: pixel (x, y) moves to (width - 1 - x, y).
-runtime::Image flippedLeftRight(const runtime::Image& image);
+image::Image flippedLeftRight(const image::Image& image);
 
 // Square |image| turned a quarter turn clockwise on screen (rows down): pixel (x, y) moves to
 // (size - 1 - y, x). VARC_CHECK: width == height.
-runtime::Image quarterTurned(const runtime::Image& image);
+image::Image quarterTurned(const image::Image& image);
 
 // The pixels of |image| (any format) that hold a NaN or an infinity in any channel.
 struct NonFinite {
     size_t count = 0;
     uint32_t firstX = 0, firstY = 0;
 };
-NonFinite findNonFinite(const runtime::Image& image);
+NonFinite findNonFinite(const image::Image& image);
 
 // The pixels where some RGB channel of |a| and |b| differ by more than |by| (either way; 8-bit
 // channels as value / 255); both of one size (VARC_CHECK).
-size_t pixelsChanged(const runtime::Image& a, const runtime::Image& b, float by);
+size_t pixelsChanged(const image::Image& a, const image::Image& b, float by);
 
 // How a light's contribution (its render minus the unlit render) changes when its intensity
 // doubles: the pixels where some channel of |twice| is below |once| by more than |absolute| +
@@ -83,11 +83,11 @@ struct Growth {
     size_t shrinking = 0;
     size_t growing = 0;
 };
-Growth contributionGrowth(const runtime::Image& once, const runtime::Image& twice, float absolute,
+Growth contributionGrowth(const image::Image& once, const image::Image& twice, float absolute,
                           float relative, float by);
 
 // The pixels where some RGB channel of |lit| exceeds the same channel of |unlit| by more than
 // |by| (8-bit channels as value / 255); both of one size (VARC_CHECK).
-size_t pixelsBrighter(const runtime::Image& lit, const runtime::Image& unlit, float by);
+size_t pixelsBrighter(const image::Image& lit, const image::Image& unlit, float by);
 
 }  // namespace varc::properties

@@ -79,18 +79,18 @@ const std::vector<std::string>& relationNames();
 
 // The shaders of |packs| with a ForwardBase pass, in pack order; a name in two packs once (the
 // renderer draws the first pack's).
-std::vector<runtime::ShaderView> lightingShaders(const std::vector<const runtime::Pack*>& packs);
+std::vector<reader::ShaderView> lightingShaders(const std::vector<const reader::Pack*>& packs);
 
 class PropertyRunner {
 public:
     // |renderer| draws with the packs |shader|s come from; it must outlive the runner.
-    PropertyRunner(runtime::Renderer& renderer, PropertyOptions options);
+    PropertyRunner(render::Renderer& renderer, PropertyOptions options);
 
     // Draws |shader|'s scenes and checks every relation; writes the images of failing cases.
-    ShaderReport check(const runtime::ShaderView& shader);
+    ShaderReport check(const reader::ShaderView& shader);
 
 private:
-    runtime::Renderer& mRenderer;
+    render::Renderer& mRenderer;
     PropertyOptions mOptions;
 };
 

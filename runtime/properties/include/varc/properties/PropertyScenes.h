@@ -25,7 +25,7 @@ struct LightSupport {
     bool directionalCookie = false;
     bool pointCookie = false;
 };
-LightSupport lightSupportOf(const runtime::ShaderView& shader);
+LightSupport lightSupportOf(const reader::ShaderView& shader);
 
 // An |size| x |size| scene of |shader| (materials keep the pack's Properties defaults): a
 // sphere, a cube and a plane under them, camera above and in front, black background and

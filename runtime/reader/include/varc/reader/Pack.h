@@ -16,7 +16,7 @@
 #include "varc/reader/ProgramView.h"
 #include "varc/reader/ShaderView.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 namespace detail {
 class PackImage;
@@ -92,4 +92,4 @@ private:
     std::unique_ptr<detail::PackImage> mImage;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

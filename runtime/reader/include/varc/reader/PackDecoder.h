@@ -6,12 +6,12 @@
 #include "varc/pack/PackModel.h"
 #include "varc/reader/Pack.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 // Everything |pack| holds, with every blob decompressed and variants in enumeration order:
-// equal to the contents given to compiler::serializePack() after its normalisation (programs
+// equal to the contents given to packwriter::serializePack() after its normalisation (programs
 // merged, renumbered in first-use order, unused ones dropped). Fails only when a blob does not
 // decompress. Allocates freely; not meant for the render loop.
 Result<pack::PackContents> decodePack(const Pack& pack);
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

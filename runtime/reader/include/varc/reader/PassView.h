@@ -18,7 +18,7 @@
 #include "varc/variants/VariantKey.h"
 #include "varc/variants/VariantSelector.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 namespace detail {
 class PackImage;
@@ -91,4 +91,4 @@ private:
     uint32_t mRecord;  // index into the Passes table
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

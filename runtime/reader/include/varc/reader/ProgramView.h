@@ -11,7 +11,7 @@
 #include "varc/core/Result.h"
 #include "varc/pack/PackModel.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 namespace detail {
 class PackImage;
@@ -48,4 +48,4 @@ private:
     uint32_t mIndex;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

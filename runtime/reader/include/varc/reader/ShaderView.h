@@ -11,7 +11,7 @@
 #include "varc/pack/PackModel.h"
 #include "varc/reader/PassView.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 namespace detail {
 class PackImage;
@@ -43,4 +43,4 @@ private:
     uint32_t mIndex;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

@@ -13,7 +13,7 @@
 #include "varc/reader/ProgramView.h"
 #include "varc/variants/VariantKey.h"
 
-namespace varc::runtime {
+namespace varc::reader {
 
 namespace detail {
 class PackImage;
@@ -55,4 +55,4 @@ private:
     bool mExact;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::reader

@@ -42,11 +42,11 @@ struct CompareResult {
     std::string message;  // one line: pass/fail, max/mean error, failing count, first failure
     // Rgba8, same size: grey = the reference's luminance / 4; red = too bright, blue = too dark
     // (32 levels per LSB); failing pixels fully saturated, with green 255.
-    runtime::Image diff;
+    image::Image diff;
     // Rgba8, same size: what each pixel was checked as. kMaskBackground (dark grey), kMaskInterior
     // (mid grey), kMaskEdge (yellow: matched against its neighbourhood), kMaskInterval (cyan:
     // interior pixel checked against a shadow interval) and kMaskMismatch (red: failed).
-    runtime::Image mask;
+    image::Image mask;
 };
 
 // The colours of CompareResult::mask, RGBA.
@@ -64,8 +64,8 @@ inline constexpr std::array<uint8_t, 4> kMaskMismatch = {255, 0, 0, 255};
 // |reference| to |referenceHigh| (shadow taps that could go either way): the error is the
 // distance to it, and interior interval pixels stay out of the mean. Images of different sizes
 // fail with a message and no diff.
-CompareResult compareImages(const runtime::Image& rendered, const runtime::Image& reference,
+CompareResult compareImages(const image::Image& rendered, const image::Image& reference,
                             const Classification& classes, const Tolerance& tolerance = {},
-                            const runtime::Image* referenceHigh = nullptr);
+                            const image::Image* referenceHigh = nullptr);
 
 }  // namespace varc::reference

@@ -17,7 +17,7 @@ namespace varc::reference {
 
 class LinearTexture {
 public:
-    // Reads the PNG at |path|. Errors: those of runtime::readPng (the message names the path).
+    // Reads the PNG at |path|. Errors: those of image::readPng (the message names the path).
     static Result<std::shared_ptr<const LinearTexture>> load(const std::string& path);
 
     // The filtered linear RGBA at |uv| (any value: repeat).

@@ -83,10 +83,10 @@ struct ReferenceOptions {
 };
 
 struct ReferenceImage {
-    runtime::Image color;  // RgbaFloat, linear; LDR values are multiples of 1/255
+    image::Image color;  // RgbaFloat, linear; LDR values are multiples of 1/255
     // The upper bound of each pixel where a shadow tap could go either way (color is then the
     // lower bound); equal to color elsewhere. Empty when the scene has no shadow maps.
-    runtime::Image colorHigh;
+    image::Image colorHigh;
     Classification classes;
     VisibilityBuffer visibility;
 };

@@ -10,11 +10,11 @@
 #include "varc/scene/Scene.h"
 #include "varc/vulkan/Texture.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 class BuiltinTextures {
 public:
-    static Result<BuiltinTextures> create(VulkanContext& context);
+    static Result<BuiltinTextures> create(vulkan::VulkanContext& context);
 
     // "white", "black", "bump", "gray" ("grey"), "red" (2D; Unity's default texture names, in any
     // ASCII case: "Gray" is gray), "white" and "gray" (cube: a Cube property whose default is "")
@@ -38,9 +38,9 @@ public:
                                                bool deferred) const;
 
 private:
-    std::optional<Texture> mWhite, mBlack, mBump, mGray, mRed, mWhiteCube, mGrayCube, mWhite3D,
-        mFalloff, mSpot, mDirectional, mPoint, mDither;
-    UniqueHandle<VkSampler> mRepeat, mClamp, mNearestRepeat;
+    std::optional<vulkan::Texture> mWhite, mBlack, mBump, mGray, mRed, mWhiteCube, mGrayCube,
+        mWhite3D, mFalloff, mSpot, mDirectional, mPoint, mDither;
+    vulkan::UniqueHandle<VkSampler> mRepeat, mClamp, mNearestRepeat;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

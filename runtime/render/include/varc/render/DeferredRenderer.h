@@ -20,13 +20,14 @@
 #include "varc/scene/Scene.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 class DeferredRenderer final : public Renderer {
 public:
     // |packs| must outlive the renderer. Objects' shaders need a "Deferred" pass; lights are drawn
     // with |lightShader| (pass 0 = light pass, pass 1 = LDR decode, as varc/DeferredLight).
-    static Result<DeferredRenderer> create(VulkanContext& context, std::vector<const Pack*> packs,
+    static Result<DeferredRenderer> create(vulkan::VulkanContext& context,
+                                           std::vector<const reader::Pack*> packs,
                                            std::string lightShader = "varc/DeferredLight");
 
     // The frame: HDR = the light buffer (RgbaFloat), LDR = the decoded Rgba8 image whose alpha is
@@ -46,4 +47,4 @@ private:
     std::unique_ptr<State> mState;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -9,7 +9,7 @@
 #include "varc/scene/CameraMatrices.h"
 #include "varc/scene/Scene.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // UnityDeferredLight (_LightPos = (position, 1/range²), _LightDir = (forward, 0), _LightColor =
 // (colour × intensity, intensity), _LightAsQuad = 1 for the full-screen quad and 0 for a light
@@ -37,4 +37,4 @@ struct QuadCorner {
 // draw them as triangles (0, 1, 2), (0, 2, 3), clockwise in framebuffer space = front facing.
 std::array<QuadCorner, 4> fullScreenQuad(const scene::CameraMatrices& camera);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -11,7 +11,7 @@
 #include "varc/core/Result.h"
 #include "varc/pack/ProgramReflection.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 struct DescriptorSlot {
     uint32_t set = 0;
@@ -37,4 +37,4 @@ Result<std::vector<DescriptorSlot>> collectDescriptorSlots(
 // 1 + the highest set number used; 0 when there are no descriptors.
 uint32_t descriptorSetCount(const std::vector<DescriptorSlot>& slots);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

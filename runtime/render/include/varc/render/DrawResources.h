@@ -11,7 +11,7 @@
 #include "varc/render/VariantPipeline.h"
 #include "varc/vulkan/Buffer.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 struct TextureBinding {
     VkImageView view = VK_NULL_HANDLE;
@@ -27,7 +27,7 @@ using TextureLookup =
 class DrawResources {
 public:
     // |uniformBytes| of uniform memory and room for |maxSets| descriptor sets per frame.
-    static Result<DrawResources> create(VulkanContext& context,
+    static Result<DrawResources> create(vulkan::VulkanContext& context,
                                         VkDeviceSize uniformBytes = 8u << 20,
                                         uint32_t maxSets = 4096);
 
@@ -43,11 +43,11 @@ public:
 private:
     Result<VkDeviceSize> writeBlock(const std::vector<std::byte>& bytes);
 
-    VulkanContext* mContext = nullptr;
-    Buffer mUniforms;
+    vulkan::VulkanContext* mContext = nullptr;
+    vulkan::Buffer mUniforms;
     VkDeviceSize mUsed = 0;
     VkDeviceSize mAlignment = 256;
-    UniqueHandle<VkDescriptorPool> mPool;
+    vulkan::UniqueHandle<VkDescriptorPool> mPool;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

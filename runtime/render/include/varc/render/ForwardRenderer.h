@@ -19,12 +19,13 @@
 #include "varc/scene/Scene.h"
 #include "varc/vulkan/Buffer.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 class ForwardRenderer final : public Renderer {
 public:
     // |packs| must outlive the renderer; shaders are found by name in the first pack that has them.
-    static Result<ForwardRenderer> create(VulkanContext& context, std::vector<const Pack*> packs);
+    static Result<ForwardRenderer> create(vulkan::VulkanContext& context,
+                                          std::vector<const reader::Pack*> packs);
 
     // Errors name the object and shader: an unknown shader, a pass the shader lacks
     // (ForwardBase is required; ForwardAdd only when add lights exist), no variant for the light,
@@ -43,4 +44,4 @@ private:
     std::unique_ptr<State> mState;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

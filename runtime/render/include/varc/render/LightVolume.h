@@ -18,7 +18,7 @@
 #include "varc/scene/Mesh.h"
 #include "varc/scene/Scene.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 enum class LightVolumeDraw {
     FullScreenQuad,  // the pass's own state; the rays come in through NORMAL (_LightAsQuad = 1)
@@ -45,4 +45,4 @@ struct LightVolume {
 LightVolume chooseLightVolume(const scene::Light& light, const scene::Camera& camera,
                               const scene::CameraMatrices& matrices);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

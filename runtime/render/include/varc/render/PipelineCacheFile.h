@@ -10,7 +10,7 @@
 #include "varc/vulkan/UniqueHandle.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // Why a cache file's contents were not used (empty = they were).
 std::string pipelineCacheMismatch(const VkPhysicalDeviceProperties& device,
@@ -20,7 +20,7 @@ class PipelineCacheFile {
 public:
     // Opens |path| (missing file: a fresh cache). A header for another device, or a truncated or
     // corrupt header, starts a fresh cache and is reported by rejectedReason(); never an error.
-    static Result<PipelineCacheFile> open(const VulkanContext& context, std::string path);
+    static Result<PipelineCacheFile> open(const vulkan::VulkanContext& context, std::string path);
 
     VkPipelineCache handle() const { return mCache.get(); }
     const std::string& rejectedReason() const { return mRejected; }
@@ -30,11 +30,11 @@ public:
     Status save() const;
 
 private:
-    const VulkanContext* mContext = nullptr;
+    const vulkan::VulkanContext* mContext = nullptr;
     std::string mPath;
     std::string mRejected;
     bool mLoaded = false;
-    UniqueHandle<VkPipelineCache> mCache;
+    vulkan::UniqueHandle<VkPipelineCache> mCache;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

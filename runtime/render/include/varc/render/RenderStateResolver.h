@@ -10,7 +10,7 @@
 #include "varc/pack/PackRenderState.h"
 #include "varc/render/ShaderValues.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // Every StateField's property replaced by the material's float value (Unity's enum numbers, as
 // `Blend [_SrcBlend]` expects); fields whose property the material lacks keep their default.
@@ -33,4 +33,4 @@ struct VulkanRenderState {
 };
 VulkanRenderState toVulkan(const pack::PackRenderState& resolved, bool hasStencil);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

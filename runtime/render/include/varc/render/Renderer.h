@@ -14,10 +14,10 @@
 #include "varc/image/Image.h"
 #include "varc/scene/Scene.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 struct RenderedFrame {
-    Image image;                        // Rgba8 (LDR: RGBA8_UNORM) or RgbaFloat (HDR: RGBA16F)
+    image::Image image;                 // Rgba8 (LDR: RGBA8_UNORM) or RgbaFloat (HDR: RGBA16F)
     std::vector<std::string> variants;  // VariantView::describe() of every draw, in draw order
     uint32_t draws = 0;
 };
@@ -36,4 +36,4 @@ public:
     virtual void usePipelineCache(VkPipelineCache cache) = 0;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -13,13 +13,14 @@
 #include "varc/render/SinglePassRenderer.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 class SceneRenderer final : public Renderer {
 public:
     // |packs| must outlive the renderer; shaders are found by name in the first pack that has
     // them. Deferred scenes draw their lights with "varc/DeferredLight".
-    static Result<SceneRenderer> create(VulkanContext& context, std::vector<const Pack*> packs);
+    static Result<SceneRenderer> create(vulkan::VulkanContext& context,
+                                        std::vector<const reader::Pack*> packs);
 
     // By scene.camera.path: "forward" (default), "single_pass" or "deferred".
     Result<RenderedFrame> render(const scene::Scene& scene) override;
@@ -36,4 +37,4 @@ private:
     DeferredRenderer mDeferred;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -9,7 +9,7 @@
 #include "varc/scene/ForwardLights.h"
 #include "varc/scene/Scene.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // UnityPerFrame + UnityPerCamera (§4.1, §4.2); time is 0 so renders are reproducible.
 ShaderValues cameraValues(const scene::Scene& scene, const scene::CameraMatrices& camera);
@@ -34,4 +34,4 @@ scene::Material withPropertyDefaults(scene::Material material,
 ShaderValues materialValues(const scene::Material& material,
                             std::map<std::string, std::string>& textures);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace varc::runtime {
+namespace varc::render {
 
 // One named value: |elements| elements of |width| floats each (1 = scalar, 4 = vector,
 // 16 = a 4x4 matrix in glm's column-major order). Vectors narrower than a member are truncated,
@@ -40,4 +40,4 @@ private:
     std::map<std::string, ShaderValue, std::less<>> mValues;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

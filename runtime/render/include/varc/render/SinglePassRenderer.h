@@ -13,7 +13,7 @@
 #include "varc/scene/Scene.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 struct SinglePassOptions {
     // Objects drawn with the same shader, mesh and non-instanced material properties that are
@@ -26,8 +26,8 @@ struct SinglePassOptions {
 class SinglePassRenderer final : public Renderer {
 public:
     // |packs| must outlive the renderer; shaders are found by name in the first pack that has them.
-    static Result<SinglePassRenderer> create(VulkanContext& context,
-                                             std::vector<const Pack*> packs);
+    static Result<SinglePassRenderer> create(vulkan::VulkanContext& context,
+                                             std::vector<const reader::Pack*> packs);
 
     // Draws every object with its shader's first pass, in scene order (batches at the position
     // of their first object). Errors name the object and shader: an unknown shader, a shader
@@ -48,4 +48,4 @@ private:
     std::unique_ptr<State> mState;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -9,7 +9,7 @@
 #include "varc/scene/Scene.h"
 #include "varc/scene/VisibleLights.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // _LightBuffer: per slot of |visible|, _VisibleLightColors = (colour x intensity, 0),
 // _VisibleLightDirectionsOrPositions = (-forward, 0) for directional lights, (position, 1)
@@ -27,4 +27,4 @@ glm::vec2 spotFadeConstants(float spotAngleDegrees);
 // unity_4LightIndices0/1 = slots 0-3 / 4-7 as floats (unused components 0).
 ShaderValues drawLightValues(const scene::ObjectLightList& list);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

@@ -11,7 +11,7 @@
 #include "varc/pack/ProgramReflection.h"
 #include "varc/render/ShaderValues.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // Where each member's value comes from: the first layer that has the name wins, so pass the
 // most specific first (object, light, material, camera, frame).
@@ -28,4 +28,4 @@ struct BlockWriteReport {
 BlockWriteReport writeUniformBlock(const pack::UniformBlock& block, ValueLayers layers,
                                    std::vector<std::byte>& bytes);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

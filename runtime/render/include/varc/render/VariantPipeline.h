@@ -12,7 +12,7 @@
 #include "varc/vulkan/UniqueHandle.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 struct PipelineTarget {
     VkRenderPass renderPass = VK_NULL_HANDLE;  // any pass compatible with the target's formats
@@ -24,7 +24,8 @@ class VariantPipeline {
 public:
     // Errors name the variant (VariantView::describe()): a missing vertex or fragment program,
     // SPIR-V that fails to decompress, unsupported vertex inputs or descriptors, Vulkan failures.
-    static Result<VariantPipeline> create(VulkanContext& context, const VariantView& variant,
+    static Result<VariantPipeline> create(vulkan::VulkanContext& context,
+                                          const reader::VariantView& variant,
                                           const pack::PackRenderState& resolvedState,
                                           const PipelineTarget& target,
                                           VkPipelineCache cache = VK_NULL_HANDLE);
@@ -33,17 +34,17 @@ public:
     VkPipelineLayout layout() const { return mLayout.get(); }
     const std::vector<DescriptorSlot>& slots() const { return mSlots; }
     // One layout per set 0..setCount-1 (empty layouts fill gaps).
-    const std::vector<UniqueHandle<VkDescriptorSetLayout>>& setLayouts() const {
+    const std::vector<vulkan::UniqueHandle<VkDescriptorSetLayout>>& setLayouts() const {
         return mSetLayouts;
     }
     const std::string& description() const { return mDescription; }
 
 private:
     std::vector<DescriptorSlot> mSlots;
-    std::vector<UniqueHandle<VkDescriptorSetLayout>> mSetLayouts;
-    UniqueHandle<VkPipelineLayout> mLayout;
-    UniqueHandle<VkPipeline> mPipeline;
+    std::vector<vulkan::UniqueHandle<VkDescriptorSetLayout>> mSetLayouts;
+    vulkan::UniqueHandle<VkPipelineLayout> mLayout;
+    vulkan::UniqueHandle<VkPipeline> mPipeline;
     std::string mDescription;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::render

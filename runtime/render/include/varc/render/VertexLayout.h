@@ -11,7 +11,7 @@
 #include "varc/core/Result.h"
 #include "varc/pack/ProgramReflection.h"
 
-namespace varc::runtime {
+namespace varc::render {
 
 // Interleaved, 64 bytes per vertex.
 struct MeshVertex {
@@ -33,4 +33,4 @@ struct VertexInputLayout {
 // varc_Color, varc_MultiTexCoordN. InvalidInput naming the input for anything else.
 Result<VertexInputLayout> vertexInputLayout(const std::vector<pack::VertexInput>& inputs);
 
-}  // namespace varc::runtime
+}  // namespace varc::render

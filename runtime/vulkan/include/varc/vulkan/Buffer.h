@@ -12,7 +12,7 @@
 #include "varc/vulkan/UniqueHandle.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 enum class MemoryLocation {
     DeviceLocal,  // for vertex/index/uniform data written once through a staging buffer
@@ -50,4 +50,4 @@ private:
     std::byte* mMapped = nullptr;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

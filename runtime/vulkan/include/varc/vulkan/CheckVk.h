@@ -8,7 +8,7 @@
 
 #include "varc/core/Result.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 // The enumerator name of |result|, e.g. "VK_ERROR_OUT_OF_DEVICE_MEMORY"; "VkResult(unknown)" for
 // values this build does not name (checkVk then prints the number).
@@ -25,4 +25,4 @@ const char* vkResultName(VkResult result);
 Status checkVk(VkResult result, const char* call,
                std::source_location where = std::source_location::current());
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -11,7 +11,7 @@
 #include "varc/vulkan/UniqueHandle.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 struct DeviceImageDesc {
     VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
@@ -53,4 +53,4 @@ struct LayoutTransition {
 void transitionLayout(VkCommandBuffer commands, VkImage image, VkImageAspectFlags aspect,
                       const LayoutTransition& transition);
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

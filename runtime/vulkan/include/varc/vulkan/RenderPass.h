@@ -11,7 +11,7 @@
 #include "varc/core/Result.h"
 #include "varc/vulkan/UniqueHandle.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 // Creates a render pass of the single subpass |subpass| over |attachments|, ordered against
 // other work by |dependencies|. Errors: ErrorCode::VulkanError from vkCreateRenderPass.
@@ -25,4 +25,4 @@ Result<UniqueHandle<VkFramebuffer>> createPassFramebuffer(VkDevice device, VkRen
                                                           std::span<const VkImageView> views,
                                                           uint32_t width, uint32_t height);
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -15,7 +15,7 @@
 #include "varc/vulkan/UniqueHandle.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 enum class ColorFormat {
     Rgba8Unorm,   // VK_FORMAT_R8G8B8A8_UNORM (LDR)
@@ -98,7 +98,7 @@ public:
     // Copies the colour image to a host-visible buffer and waits. 8-bit formats give Rgba8
     // images of the stored bytes (still sRGB-encoded for Rgba8Srgb); float formats give
     // RgbaFloat images (half floats converted exactly). Errors: ErrorCode::VulkanError.
-    Result<Image> readback(VulkanContext& context, uint32_t attachment = 0) const;
+    Result<image::Image> readback(VulkanContext& context, uint32_t attachment = 0) const;
 
 private:
     Status createImages(const VulkanContext& context);
@@ -119,4 +119,4 @@ private:
     UniqueHandle<VkFramebuffer> mFramebuffer;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

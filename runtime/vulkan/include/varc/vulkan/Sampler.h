@@ -10,7 +10,7 @@
 #include "varc/vulkan/UniqueHandle.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 struct SamplerDesc {
     VkFilter filter = VK_FILTER_LINEAR;  // both magnification and minification
@@ -27,4 +27,4 @@ struct SamplerDesc {
 Result<UniqueHandle<VkSampler>> createSampler(const VulkanContext& context,
                                               const SamplerDesc& desc = {});
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

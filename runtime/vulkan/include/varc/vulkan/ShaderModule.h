@@ -13,7 +13,7 @@
 #include "varc/vulkan/UniqueHandle.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 // SPIR-V's first word.
 constexpr uint32_t kSpirvMagic = 0x07230203;
@@ -33,4 +33,4 @@ Result<UniqueHandle<VkShaderModule>> createShaderModule(const VulkanContext& con
 Result<UniqueHandle<VkShaderModule>> loadShaderModule(const VulkanContext& context,
                                                       const std::string& path);
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -13,7 +13,7 @@
 #include "varc/vulkan/DeviceImage.h"
 #include "varc/vulkan/VulkanContext.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 struct TextureOptions {
     bool srgb = false;     // 8-bit images: VK_FORMAT_R8G8B8A8_SRGB instead of _UNORM
@@ -28,15 +28,16 @@ class Texture {
 public:
     // Errors: ErrorCode::InvalidInput for an empty image; ErrorCode::Unsupported when mipmaps
     // are asked for a format the device cannot blit; ErrorCode::VulkanError.
-    static Result<Texture> create2D(VulkanContext& context, const Image& image,
+    static Result<Texture> create2D(VulkanContext& context, const image::Image& image,
                                     const TextureOptions& options = {});
     // |faces| in Vulkan's layer order +X, -X, +Y, -Y, +Z, -Z: six square images of one size and
     // pixel format (else ErrorCode::InvalidInput). The view is VK_IMAGE_VIEW_TYPE_CUBE.
-    static Result<Texture> createCube(VulkanContext& context, std::span<const Image> faces,
+    static Result<Texture> createCube(VulkanContext& context, std::span<const image::Image> faces,
                                       const TextureOptions& options = {});
     // |slices| (front to back, one size and pixel format, else ErrorCode::InvalidInput) as a
     // 3D texture; the view is VK_IMAGE_VIEW_TYPE_3D. No mipmaps.
-    static Result<Texture> createVolume(VulkanContext& context, std::span<const Image> slices,
+    static Result<Texture> createVolume(VulkanContext& context,
+                                        std::span<const image::Image> slices,
                                         const TextureOptions& options = {});
 
     VkImage image() const { return mImage.image.get(); }
@@ -50,9 +51,9 @@ public:
 
 private:
     enum class Shape { Flat, Cube, Volume };
-    static Result<Texture> create(VulkanContext& context, std::span<const Image> layers,
+    static Result<Texture> create(VulkanContext& context, std::span<const image::Image> layers,
                                   Shape shape, const TextureOptions& options);
-    Status upload(VulkanContext& context, std::span<const Image> layers);
+    Status upload(VulkanContext& context, std::span<const image::Image> layers);
     void recordMipChain(VkCommandBuffer commands, VkFilter filter) const;
 
     DeviceImage mImage;
@@ -64,4 +65,4 @@ private:
     bool mVolume = false;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

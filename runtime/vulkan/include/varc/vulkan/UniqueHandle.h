@@ -8,7 +8,7 @@
 #include <type_traits>
 #include <utility>
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 // HandleTraits<VkT> names the destroy function and the VkObjectType (for debug names) of a
 // device-level handle type. Only the types listed below can be wrapped.
@@ -107,4 +107,4 @@ static_assert(std::is_nothrow_move_assignable_v<UniqueHandle<VkBuffer>>);
 static_assert(sizeof(UniqueHandle<VkBuffer>) == sizeof(VkDevice) + sizeof(VkBuffer),
               "UniqueHandle is exactly a device plus a handle");
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

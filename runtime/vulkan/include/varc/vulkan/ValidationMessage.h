@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 struct ValidationMessage {
     VkDebugUtilsMessageSeverityFlagBitsEXT severity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
@@ -18,4 +18,4 @@ struct ValidationMessage {
 // "error [VUID-...] text" or "warning [...] text", for test output and logs.
 std::string toString(const ValidationMessage& message);
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -16,7 +16,7 @@
 #include "varc/vulkan/UniqueHandle.h"
 #include "varc/vulkan/ValidationMessage.h"
 
-namespace varc::runtime {
+namespace varc::vulkan {
 
 struct ContextOptions {
     // Case-insensitive substring of VkPhysicalDeviceProperties::deviceName, e.g. "llvmpipe".
@@ -98,4 +98,4 @@ private:
     std::unique_ptr<State> mState;
 };
 
-}  // namespace varc::runtime
+}  // namespace varc::vulkan

@@ -1,0 +1,207 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "jobs/ProgramCompiler.h"
+
+#include <algorithm>
+#include <cctype>
+#include <ctime>
+#include <optional>
+#include <string>
+
+#include "varc/core/JoinWords.h"
+#include "varc/driver/GlslangFrontend.h"
+#include "varc/driver/GlslangLogParser.h"
+#include "varc/driver/SpirvImageOffsets.h"
+#include "varc/driver/SpirvMatrixMath.h"
+#include "varc/driver/SpirvOptimizer.h"
+#include "varc/driver/SpirvReflection.h"
+#include "varc/frontend/EntryPointCheck.h"
+#include "varc/frontend/HlslRewrites.h"
+#include "varc/frontend/LoopVariableScope.h"
+#include "varc/variants/PassKeywords.h"
+
+namespace varc::driver::detail {
+
+namespace {
+
+// The whitespace-separated words of |text| ("float4\n  x" -> {"float4", "x"}).
+std::vector<std::string> splitWords(std::string_view text) {
+    std::vector<std::string> words;
+    size_t i = 0;
+    while (i < text.size()) {
+        while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+        size_t begin = i;
+        while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+        if (i > begin) words.emplace_back(text.substr(begin, i - begin));
+    }
+    return words;
+}
+
+// glslang's output for one program text: compiled, then (when it compiled) optimised and
+// validated.
+struct Attempt {
+    CompileOutput compiled;
+    SpirvResult optimized;
+    std::optional<std::string> invalid;  // the validator's message
+};
+
+Attempt compileAndValidate(const StageProgram& program, const std::string& text,
+                           OptimizationLevel level) {
+    Attempt attempt;
+    attempt.compiled =
+        compileProgram({text, "", program.language, program.stage, program.entryPoint});
+    if (!attempt.compiled.ok) return attempt;
+    attempt.compiled.spirv = splitMatrixExtendedMath(attempt.compiled.spirv);
+    attempt.optimized = optimizeSpirv(attempt.compiled.spirv, level);
+    if (!attempt.optimized.ok) return attempt;
+    attempt.optimized.spirv = markConstantImageOffsets(attempt.optimized.spirv);
+    attempt.invalid = validateSpirv(attempt.optimized.spirv);
+    return attempt;
+}
+
+// Whether glslang refused |program|, or made invalid SPIR-V of it, for a construct Unity's HLSL
+// compilers accept and rewriteHlslForGlslang makes explicit. Only such programs are rewritten,
+// so every program glslang compiles as written compiles exactly as before.
+bool needsHlslRewrite(const StageProgram& program, const Attempt& attempt) {
+    if (program.language == shaderlab::ProgramLanguage::Glsl) return false;
+    if (attempt.invalid) {
+        return attempt.invalid->find("OpTypeStruct must not contain an opaque type") !=
+               std::string::npos;
+    }
+    const std::string& log = attempt.compiled.log;
+    return !attempt.compiled.ok &&
+           (log.find("condition must be a scalar integer expression") != std::string::npos ||
+            log.find("can't modify a uniform") != std::string::npos ||
+            log.find("Missing functionality: matrix swizzle") != std::string::npos ||
+            log.find("hexadecimal literal too big") != std::string::npos ||
+            log.find("'member type' : Expected") != std::string::npos ||
+            log.find("unknown variable") != std::string::npos ||
+            log.find("no matching overloaded function found") != std::string::npos);
+}
+
+// The names glslang quoted before |message| in |log|, each once: for
+// "' : no matching overloaded function found", "ERROR: 3:85: 'Linear01Depth' : no matching
+// overloaded function found" -> {"Linear01Depth"}.
+std::vector<std::string> quotedNames(const std::string& log, std::string_view message) {
+    std::vector<std::string> names;
+    for (size_t at = log.find(message); at != std::string::npos; at = log.find(message, at + 1)) {
+        size_t open = log.rfind('\'', at - 1);
+        if (open == std::string::npos) continue;
+        std::string name = log.substr(open + 1, at - open - 1);
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    return names;
+}
+
+// Appends the names in |more| that |names| does not hold yet.
+void appendNew(std::vector<std::string>& names, const std::vector<std::string>& more) {
+    for (const std::string& name : more) {
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+}
+
+// At most this many rewrites of one program (each one a glslang compile).
+constexpr int kMaxRewriteRounds = 4;
+
+// The functions glslang found no overload for, and the variables it did not know.
+std::vector<std::string> unmatchedCalls(const std::string& log) {
+    return quotedNames(log, "' : no matching overloaded function found");
+}
+std::vector<std::string> unknownVariables(const std::string& log) {
+    return quotedNames(log, "' : unknown variable");
+}
+
+}  // namespace
+
+CompiledSource compileStageProgram(const StageProgram& program, const BuildOptions& options,
+                                   const ProgramCache* cache, const includes::SourceMap& sourceMap,
+                                   const std::function<void(const Status&)>& onCacheFailure) {
+    const bool vertex = program.stage == Stage::Vertex;
+    CompiledSource result;
+    auto fail = [&](std::string message) {
+        result.diagnostics.push_back({Severity::Error, program.origin, std::move(message), {}});
+        return result;
+    };
+    // Reflection needs the debug names; what ships goes without them unless
+    // BuildOptions::debugNames. The cache keeps both forms.
+    std::optional<ProgramCacheKey> key;
+    if (cache) {
+        key = cache->keyOf({options.optimization, program.language, program.stage,
+                            program.entryPoint, program.text});
+        if (std::optional<CachedProgram> hit = cache->load(*key)) {
+            if (auto reflection = reflectSpirv(hit->spirv, hit->semantics, vertex)) {
+                result.ok = result.fromCache = true;
+                result.diagnostics = parseGlslangLog(hit->log, sourceMap);
+                result.spirv = std::move(options.debugNames ? hit->spirv : hit->stripped);
+                result.reflection = std::move(*reflection);
+                return result;
+            }
+        }
+    }
+    if (program.language != shaderlab::ProgramLanguage::Glsl) {
+        // glslang's HLSL front end crashes on an unnamed entry-point parameter
+        // (KhronosGroup/glslang#4389); report it the way glslang reports errors instead.
+        if (auto unnamed = frontend::findUnnamedEntryParameter(program.text, program.entryPoint)) {
+            std::string written = joinWords(splitWords(unnamed->text));
+            result.diagnostics = parseGlslangLog(
+                "ERROR: " + std::to_string(unnamed->file) + ":" + std::to_string(unnamed->line) +
+                    ": '" + std::string(program.entryPoint) + "' : entry-point parameter " +
+                    std::to_string(unnamed->index) + " ('" + written +
+                    "') has no name; give it one (glslang cannot compile it)\n",
+                sourceMap);
+            return result;
+        }
+    }
+    std::string text = program.language == shaderlab::ProgramLanguage::Glsl
+                           ? std::string(program.text)
+                           : frontend::fixFrontFaceParameterTypes(program.text);
+    Attempt attempt = compileAndValidate(program, text, options.optimization);
+    // glslang's HLSL parser stops at the first error, so what one rewrite fixes may uncover the
+    // next (a call needing a cast, then a loop variable used after its loop): each round
+    // rewrites the original text with everything the logs so far asked for. Either way the last
+    // program's outcome is the one to report: its errors are the ones left once the constructs
+    // Unity accepts are accepted.
+    std::vector<std::string> calls, unknownNames;
+    std::string previous = text;
+    for (int round = 0; round < kMaxRewriteRounds && needsHlslRewrite(program, attempt); ++round) {
+        appendNew(calls, unmatchedCalls(attempt.compiled.log));
+        appendNew(unknownNames, unknownVariables(attempt.compiled.log));
+        std::string rewritten = frontend::hoistLoopVariables(
+            frontend::rewriteHlslForGlslang(text, calls), unknownNames);
+        if (rewritten == previous) break;
+        attempt = compileAndValidate(program, rewritten, options.optimization);
+        previous = std::move(rewritten);
+    }
+    CompileOutput& compiled = attempt.compiled;
+    result.diagnostics = parseGlslangLog(compiled.log, sourceMap);
+    // glslang's link and "missing functionality" messages name no line: they belong to the
+    // program, so they point at its block (and get the stage and keywords note like the rest).
+    for (Diagnostic& diagnostic : result.diagnostics) {
+        if (!diagnostic.location.isKnown()) diagnostic.location = program.origin;
+    }
+    if (!compiled.ok) return result;
+    SpirvResult& optimized = attempt.optimized;
+    if (!optimized.ok) return fail("SPIR-V optimisation failed: " + optimized.message);
+    if (attempt.invalid) return fail("generated SPIR-V is invalid: " + *attempt.invalid);
+    std::optional<SemanticsByLocation> semantics = hlslSemantics(compiled.spirv);
+    std::optional<pack::ProgramReflection> reflection;
+    if (semantics) reflection = reflectSpirv(optimized.spirv, *semantics, vertex);
+    if (!reflection) return fail("cannot reflect the generated SPIR-V");
+    SpirvResult stripped = stripDebugInfo(optimized.spirv);
+    if (!stripped.ok) return fail("cannot strip SPIR-V debug names: " + stripped.message);
+    if (cache) {
+        onCacheFailure(cache->store(
+            *key, {optimized.spirv, stripped.spirv, std::move(*semantics), compiled.log}));
+    }
+    result.ok = true;
+    result.spirv = std::move(options.debugNames ? optimized.spirv : stripped.spirv);
+    result.reflection = std::move(*reflection);
+    return result;
+}
+
+double threadCpuSeconds() {
+    timespec now{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
+}
+
+}  // namespace varc::driver::detail
