@@ -103,8 +103,9 @@ void collectPrograms(const frontend::LoadedPass& pass, std::set<ValidatorProgram
         for (const auto& [stage, entry] : stages) {
             driver::DefineContext context{pass.pass->lightMode(), pass.keywords.target,
                                           pass.pass->program->language, stage, keywords};
-            std::string source =
-                driver::dropUnobservedDefines(driver::makePreamble(context), observed);
+            std::vector<driver::PredefinedMacro> macros = driver::predefinedMacros(context);
+            driver::dropUnobservedMacros(macros, observed);
+            std::string source = driver::writePreamble(macros);
             if (glsl) {
                 source =
                     "#version 140\n" + source + driver::legacyGlslPreamble(pass.source.text, stage);

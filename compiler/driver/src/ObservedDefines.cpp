@@ -35,12 +35,6 @@ size_t defineNameOffset(std::string_view line) {
 }
 
 // The macro name of a `#define NAME...` line, or "" for other lines.
-std::string_view definedName(std::string_view line) {
-    size_t i = defineNameOffset(line);
-    if (i == std::string_view::npos) return {};
-    return line.substr(i, identifierEnd(line, i) - i);
-}
-
 // Whether the directive at |hash| (a '#') is `#pragma`.
 bool isPragma(std::string_view text, size_t hash) {
     constexpr std::string_view kPragma = "pragma";
@@ -204,19 +198,11 @@ bool ObservedNames::mayObserve(std::string_view name) const {
     return mPastesTokens && isFormable(name);
 }
 
-std::string dropUnobservedDefines(std::string_view preamble, const ObservedNames& names) {
-    std::string kept;
-    kept.reserve(preamble.size());
-    size_t start = 0;
-    while (start < preamble.size()) {
-        size_t end = preamble.find('\n', start);
-        end = end == std::string_view::npos ? preamble.size() : end + 1;
-        std::string_view line = preamble.substr(start, end - start);
-        std::string_view name = definedName(line);
-        if (name.empty() || names.mayObserve(name)) kept.append(line);
-        start = end;
-    }
-    return kept;
+void dropUnobservedMacros(std::vector<PredefinedMacro>& macros, const ObservedNames& names) {
+    std::erase_if(macros, [&names](const PredefinedMacro& macro) {
+        return macro.kind == PredefinedMacro::Kind::Define &&
+               !names.mayObserve(macro.identifier());
+    });
 }
 
 }  // namespace varc::driver

@@ -10,7 +10,7 @@
 #include "varc/driver/PropertyDefaults.h"
 #include "varc/driver/SpirvOptimizer.h"
 #include "varc/driver/StageInterfaces.h"
-#include "varc/packwriter/RenderStateConversion.h"
+#include "varc/driver/RenderStateConversion.h"
 #include "varc/variants/KeywordList.h"
 
 namespace varc::driver {
@@ -27,7 +27,7 @@ std::vector<pack::DeclaredSet> declaredSets(const variants::PassKeywords& keywor
 std::optional<pack::PackPass> assemblePass(const frontend::LoadedShader& shader,
                                            const CompiledPass& compiled, DiagnosticSink& sink) {
     const frontend::LoadedPass& loaded = shader.passes[compiled.passIndex];
-    packwriter::ConvertedRenderState state = packwriter::fromShaderLab(loaded.pass->state);
+    driver::ConvertedRenderState state = driver::fromShaderLab(loaded.pass->state);
     for (const std::string& error : state.errors) {
         sink.error(loaded.pass->location,
                    error + " in " + frontend::describePass(shader.ast, *loaded.pass, loaded.index));

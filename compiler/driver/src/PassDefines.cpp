@@ -91,10 +91,10 @@ constexpr const char* kGlslangPredefinedExtensions[] = {"GL_ARB_gpu_shader5",
                                                         "GL_ARB_viewport_array",
                                                         "GL_ARB_shader_bit_encoding"};
 
-std::string makePreamble(const DefineContext& context) {
-    std::string text;
-    auto define = [&text](const std::string& name, const std::string& value) {
-        text += "#define " + name + " " + value + "\n";
+std::vector<PredefinedMacro> predefinedMacros(const DefineContext& context) {
+    std::vector<PredefinedMacro> macros;
+    auto define = [&macros](std::string name, std::string value) {
+        macros.push_back({PredefinedMacro::Kind::Define, std::move(name), std::move(value)});
     };
     define("SHADER_API_VULKAN", "1");
     define("SHADER_API_DESKTOP", "1");
@@ -111,11 +111,15 @@ std::string makePreamble(const DefineContext& context) {
         // runtime renders with one sample per pixel (docs/SHADER_ABI.md).
         define("GetRenderTargetSampleCount()", "(1u)");
         for (const char* name : kGlslangPredefinedExtensions) {
-            text += std::string("#undef ") + name + "\n";
+            macros.push_back({PredefinedMacro::Kind::Undef, name, ""});
         }
     }
     for (const std::string& keyword : context.keywords) define(keyword, "1");
-    return text;
+    return macros;
+}
+
+std::string makePreamble(const DefineContext& context) {
+    return writePreamble(predefinedMacros(context));
 }
 
 }  // namespace varc::driver

@@ -67,25 +67,12 @@ UserDefines::UserDefines(std::string_view text) {
     });
 }
 
-std::string UserDefines::adopt(std::string_view preamble) const {
-    if (mReplacements.empty()) return std::string(preamble);
-    std::string result;
-    result.reserve(preamble.size());
-    forEachLine(preamble, [&](std::string_view line) {
-        std::string_view name, replacement;
-        auto own = parseDefine(line, name, replacement) ? mReplacements.find(std::string(name))
-                                                        : mReplacements.end();
-        if (own == mReplacements.end()) {
-            result.append(line);
-            return;
-        }
-        result += "#define ";
-        result.append(name);
-        result += ' ';
-        result += own->second;
-        result += '\n';
-    });
-    return result;
+void UserDefines::adopt(std::vector<PredefinedMacro>& macros) const {
+    for (PredefinedMacro& macro : macros) {
+        if (macro.kind != PredefinedMacro::Kind::Define) continue;
+        auto own = mReplacements.find(macro.name);
+        if (own != mReplacements.end()) macro.value = own->second;
+    }
 }
 
 }  // namespace varc::driver

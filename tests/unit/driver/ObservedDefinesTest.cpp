@@ -70,13 +70,24 @@ TEST(ObservedNames, PastesInContinuedDefinesAndObjectMacrosCount) {
     EXPECT_TRUE(object.mayObserve("POINT"));
 }
 
-TEST(DropUnobservedDefines, KeepsObservedDefinesAndEveryOtherLine) {
+TEST(DropUnobservedMacros, KeepsObservedDefinitionsAndEveryUndef) {
     ObservedNames names("#ifdef POINT\n#endif\n");
-    EXPECT_EQ(dropUnobservedDefines("#define SHADER_STAGE_VERTEX 1\n#define POINT 1\n"
-                                    "#define SPOT 1\n#extension GL_foo : enable\n",
-                                    names),
-              "#define POINT 1\n#extension GL_foo : enable\n");
-    EXPECT_EQ(dropUnobservedDefines("  #  define SPOT 1", names), "");
+    using Kind = PredefinedMacro::Kind;
+    std::vector<PredefinedMacro> macros = {{Kind::Define, "SHADER_STAGE_VERTEX", "1"},
+                                           {Kind::Define, "POINT", "1"},
+                                           {Kind::Define, "SPOT", "1"},
+                                           {Kind::Undef, "GL_core_profile", ""}};
+    dropUnobservedMacros(macros, names);
+    EXPECT_EQ(writePreamble(macros), "#define POINT 1\n#undef GL_core_profile\n");
+}
+
+TEST(DropUnobservedMacros, AFunctionLikeMacroIsObservedByItsName) {
+    using Kind = PredefinedMacro::Kind;
+    std::vector<PredefinedMacro> macros = {{Kind::Define, "GetRenderTargetSampleCount()", "(1u)"}};
+    dropUnobservedMacros(macros, ObservedNames("uint n = GetRenderTargetSampleCount();\n"));
+    EXPECT_EQ(macros.size(), 1u);
+    dropUnobservedMacros(macros, ObservedNames("float4 x;\n"));
+    EXPECT_TRUE(macros.empty());
 }
 
 }  // namespace

@@ -60,10 +60,10 @@ std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex) {
     const auto& [stage, entry] = job.stages[stageIndex];
     DefineContext context{job.pass->pass->lightMode(), job.pass->keywords.target, languageOf(job),
                           stage, job.pass->space->table().namesOf(job.keys[variant])};
-    std::string preamble = job.observed
-                               ? dropUnobservedDefines(makePreamble(context), *job.observed)
-                               : makePreamble(context);
-    if (job.userDefines) preamble = job.userDefines->adopt(preamble);
+    std::vector<PredefinedMacro> macros = predefinedMacros(context);
+    if (job.observed) dropUnobservedMacros(macros, *job.observed);
+    if (job.userDefines) job.userDefines->adopt(macros);
+    std::string preamble = writePreamble(macros);
     if (languageOf(job) == shaderlab::ProgramLanguage::Glsl) {
         preamble += legacyGlslPreamble(job.text, stage);
     }

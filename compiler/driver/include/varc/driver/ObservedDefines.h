@@ -14,6 +14,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "varc/driver/PredefinedMacro.h"
+
 namespace varc::driver {
 
 class ObservedNames {
@@ -54,9 +56,9 @@ private:
     std::shared_ptr<FormedCache> mFormed = std::make_shared<FormedCache>();
 };
 
-// |preamble| without the `#define NAME ...` lines whose NAME |names| cannot observe; every other
-// line is kept as is. Example: with a text that only mentions POINT,
-//   "#define SHADER_STAGE_VERTEX 1\n#define POINT 1\n#define SPOT 1\n" -> "#define POINT 1\n".
-std::string dropUnobservedDefines(std::string_view preamble, const ObservedNames& names);
+// Removes from |macros| the definitions whose name |names| cannot observe; `#undef`s stay.
+// Example: with a text that only mentions POINT, the definitions of SHADER_STAGE_VERTEX, POINT
+// and SPOT become the one of POINT.
+void dropUnobservedMacros(std::vector<PredefinedMacro>& macros, const ObservedNames& names);
 
 }  // namespace varc::driver

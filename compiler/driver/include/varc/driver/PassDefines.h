@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "varc/core/Stage.h"
+#include "varc/driver/PredefinedMacro.h"
 #include "varc/shaderlab/ShaderAst.h"
 
 namespace varc::driver {
@@ -34,8 +35,11 @@ int shaderTargetNumber(std::string_view target);
 // "Meta" -> UNITY_PASS_META, "MotionVectors" -> UNITY_PASS_MOTIONVECTORS.
 std::string passMacro(std::string_view lightMode);
 
-// The `#define` lines for |context|, one per line, in a fixed order (see docs/KEYWORDS.md,
-// "Pass defines"). Example for a ForwardAdd fragment program with POINT:
+// The macros for |context| in a fixed order (see docs/KEYWORDS.md, "Pass defines"): what the
+// driver filters (dropUnobservedMacros) and adjusts (UserDefines::adopt) before writing the text.
+std::vector<PredefinedMacro> predefinedMacros(const DefineContext& context);
+
+// writePreamble(predefinedMacros(|context|)). Example for a ForwardAdd fragment program with POINT:
 //   #define SHADER_API_VULKAN 1
 //   #define SHADER_API_DESKTOP 1
 //   #define SHADER_TARGET 30

@@ -7,6 +7,9 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <vector>
+
+#include "varc/driver/PredefinedMacro.h"
 
 namespace varc::driver {
 
@@ -19,12 +22,12 @@ public:
     // Example: "#define UNITY_PASS_FORWARDBASE\n" defines UNITY_PASS_FORWARDBASE as "".
     explicit UserDefines(std::string_view text);
 
-    // |preamble| with every `#define NAME value` line whose NAME the text defines itself
-    // rewritten to the text's own replacement, so glslang sees the same definition twice (no
-    // error) and the text's `#ifdef NAME` tests behave as they would have. Other lines are kept.
-    // Example: text "#define UNITY_PASS_FORWARDBASE", preamble
-    // "#define UNITY_PASS_FORWARDBASE 1\n" -> "#define UNITY_PASS_FORWARDBASE \n".
-    std::string adopt(std::string_view preamble) const;
+    // Gives every definition in |macros| whose name the text defines itself the text's own
+    // replacement, so glslang sees the same definition twice (no error) and the text's
+    // `#ifdef NAME` tests behave as they would have. Other macros are left as they are.
+    // Example: text "#define UNITY_PASS_FORWARDBASE", macro UNITY_PASS_FORWARDBASE = "1"
+    // -> UNITY_PASS_FORWARDBASE = "" (written "#define UNITY_PASS_FORWARDBASE \n").
+    void adopt(std::vector<PredefinedMacro>& macros) const;
 
     bool empty() const { return mReplacements.empty(); }
 

@@ -8,7 +8,7 @@
 #include "varc/pack/PackRenderState.h"
 #include "varc/shaderlab/RenderState.h"
 
-namespace varc::packwriter {
+namespace varc::driver {
 
 struct ConvertedRenderState {
     pack::PackRenderState state;
@@ -27,4 +27,4 @@ struct ConvertedRenderState {
 // dstColor = dstAlpha = OneMinusSrcAlpha.
 ConvertedRenderState fromShaderLab(const shaderlab::RenderState& state);
 
-}  // namespace varc::packwriter
+}  // namespace varc::driver

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Converts a ShaderLab pass's render state (as written) to the pack's typed render state.
-#include "varc/packwriter/RenderStateConversion.h"
+#include "varc/driver/RenderStateConversion.h"
 
 #include <charconv>
 #include <cstdint>
@@ -8,7 +8,7 @@
 
 #include "varc/core/AsciiCase.h"
 
-namespace varc::packwriter {
+namespace varc::driver {
 
 namespace {
 
@@ -219,4 +219,4 @@ ConvertedRenderState fromShaderLab(const shaderlab::RenderState& state) {
     return result;
 }
 
-}  // namespace varc::packwriter
+}  // namespace varc::driver

@@ -2,19 +2,19 @@
 // fromShaderLab: ShaderLab render state literals and property references to pack render state.
 #include <gtest/gtest.h>
 
-#include "varc/packwriter/RenderStateConversion.h"
+#include "varc/driver/RenderStateConversion.h"
 
 namespace varc {
 namespace {
 
-using packwriter::fromShaderLab;
+using driver::fromShaderLab;
 using shaderlab::StateValue;
 
 StateValue lit(const char* text) { return {text, ""}; }
 StateValue prop(const char* name) { return {"", name}; }
 
 TEST(RenderStateConversion, UnsetStateGivesUnityDefaults) {
-    packwriter::ConvertedRenderState converted = fromShaderLab({});
+    driver::ConvertedRenderState converted = fromShaderLab({});
     EXPECT_TRUE(converted.ok());
     EXPECT_EQ(converted.state, pack::PackRenderState{});
     EXPECT_FALSE(converted.state.blendEnabled);
@@ -32,7 +32,7 @@ TEST(RenderStateConversion, LiteralsAreCaseInsensitive) {
     state.zTest = lit("GEQUAL");
     state.cull = lit("front");
     state.colorMask = lit("rgb");
-    packwriter::ConvertedRenderState converted = fromShaderLab(state);
+    driver::ConvertedRenderState converted = fromShaderLab(state);
     ASSERT_TRUE(converted.ok()) << converted.errors[0];
     const pack::PackRenderState& out = converted.state;
     EXPECT_TRUE(out.blendEnabled);
@@ -54,7 +54,7 @@ TEST(RenderStateConversion, PropertiesAreKeptBesideDefaults) {
         shaderlab::BlendState{false, prop("_SrcBlend"), prop("_DstBlend"), {}, lit("One"), {}, {}};
     state.zWrite = prop("_ZWrite");
     state.cull = prop("_Cull");
-    packwriter::ConvertedRenderState converted = fromShaderLab(state);
+    driver::ConvertedRenderState converted = fromShaderLab(state);
     ASSERT_TRUE(converted.ok());
     const pack::PackRenderState& out = converted.state;
     EXPECT_EQ(out.srcColor.property, "_SrcBlend");
@@ -80,7 +80,7 @@ TEST(RenderStateConversion, BlendOffAndOffsetAndStencil) {
     stencil.back.comp = lit("Always");
     stencil.back.zFail = lit("DecrSat");
     state.stencil = stencil;
-    packwriter::ConvertedRenderState converted = fromShaderLab(state);
+    driver::ConvertedRenderState converted = fromShaderLab(state);
     ASSERT_TRUE(converted.ok()) << converted.errors[0];
     const pack::PackRenderState& out = converted.state;
     EXPECT_FALSE(out.blendEnabled);
@@ -98,7 +98,7 @@ TEST(RenderStateConversion, ZTestOffDisablesTheTestAndColorMaskZero) {
     shaderlab::RenderState state;
     state.zTest = lit("Off");
     state.colorMask = lit("0");
-    packwriter::ConvertedRenderState converted = fromShaderLab(state);
+    driver::ConvertedRenderState converted = fromShaderLab(state);
     EXPECT_EQ(converted.state.zTest.value, pack::CompareFunction::Disabled);
     EXPECT_EQ(converted.state.colorMask.value, 0);
 }
@@ -111,7 +111,7 @@ TEST(RenderStateConversion, UnknownLiteralsAreReported) {
     shaderlab::StencilState stencil;
     stencil.ref = lit("256");
     state.stencil = stencil;
-    packwriter::ConvertedRenderState converted = fromShaderLab(state);
+    driver::ConvertedRenderState converted = fromShaderLab(state);
     ASSERT_EQ(converted.errors.size(), 4u);
     EXPECT_NE(converted.errors[0].find("Blend: unknown blend factor 'Onee'"), std::string::npos);
     EXPECT_NE(converted.errors[1].find("ZTest: unknown comparison 'LEqaul' (expected Less"),
