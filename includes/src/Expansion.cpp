@@ -225,9 +225,10 @@ std::optional<FileId> Expansion::load(const std::string& path) {
     if (!id) {
         std::optional<std::string> text = mFileSystem.read(path);
         if (!text) return std::nullopt;
-        // Most include files saved by Windows editors start with a UTF-8 byte-order mark; it is
-        // not part of the program text (columns of the first line count from after it).
-        if (text->starts_with("\xEF\xBB\xBF")) text->erase(0, 3);
+        // Most include files saved by Windows editors start with a UTF-8 byte-order mark (some
+        // with two, saved by two tools); they are not part of the program text (columns of the
+        // first line count from after them).
+        while (text->starts_with("\xEF\xBB\xBF")) text->erase(0, 3);
         id = mSourceMap.addFile(path, std::move(*text));
     }
     if (!mRootFiles.count(*id) && mDependencyIds.insert(*id).second) {

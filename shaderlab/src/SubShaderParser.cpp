@@ -79,9 +79,22 @@ bool SubShaderParser::parsePassItem(Pass& pass) {
         if (program->isInclude) return parseIncludeBlock(mCursor, mScopes);
         return parseProgram(mCursor.next(), pass);
     }
+    if (token.isKeyword("LOD")) return parseIgnoredPassLod();
     CommandResult result = mStateParser.tryParse(pass.state);
     if (result != CommandResult::NotACommand) return result == CommandResult::Parsed;
     return reportUnexpectedCommand(mCursor, "Pass");
+}
+
+// `LOD` belongs to a SubShader; Unity accepts it inside a Pass and ignores it there. varc reads
+// the number (so a malformed one is still an error) and warns that it has no effect.
+bool SubShaderParser::parseIgnoredPassLod() {
+    Token keyword = mCursor.next();
+    int ignored = 0;
+    if (!parseLod(mCursor, ignored)) return false;
+    mCursor.sink().warning(keyword.location,
+                           "LOD inside a Pass has no effect (it belongs to the SubShader); "
+                           "ignored, as in Unity");
+    return true;
 }
 
 bool SubShaderParser::parseProgram(const Token& keyword, Pass& pass) {

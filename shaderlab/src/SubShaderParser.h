@@ -28,6 +28,7 @@ private:
     bool parseItem(SubShader& subShader, RenderState& state, size_t index);
     bool parsePass(const Token& keyword, SubShader& subShader, size_t index);
     bool parsePassItem(Pass& pass);
+    bool parseIgnoredPassLod();
     bool parseProgram(const Token& keyword, Pass& pass);
     bool parseSurface(const Token& keyword, SubShader& subShader, size_t index);
     bool parseUsePass(const Token& keyword, SubShader& subShader);

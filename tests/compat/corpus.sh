@@ -156,18 +156,20 @@ if [ "$update" = --crashes-only ]; then
     echo "corpus (crashes only, at most $max_variants variants per pass): $built of $total built"
     exit $status
 fi
-# The section "## Property validation" at the end of the page is compat.properties' own
-# (tests/properties/corpus-properties.sh): kept by --update, not compared here.
-properties="## Property validation"
-# The page up to that section, without the blank lines before it.
+# The page's hand-written tail is kept by --update and not compared here: from the section
+# "## Text Unity accepts" (the leniency rules, each naming its test) or, when it is missing,
+# "## Property validation" (compat.properties' own, tests/properties/corpus-properties.sh).
+tail_heading='^## (Text Unity accepts|Property validation)'
+# The page up to that tail, without the blank lines before it.
 docHead() {
-    awk -v h="$properties" 'index($0, h) == 1 { exit } { lines[++n] = $0 }
+    awk -v h="$tail_heading" '$0 ~ h { exit } { lines[++n] = $0 }
         END { while (n > 0 && lines[n] == "") --n; for (i = 1; i <= n; ++i) print lines[i] }' "$doc"
 }
+docTail() { awk -v h="$tail_heading" '$0 ~ h { keep = 1 } keep' "$doc"; }
 if [ "$update" = --update ]; then
     {
         cat "$table"
-        if grep -q "^$properties" "$doc"; then echo; sed -n "/^$properties/,\$p" "$doc"; fi
+        if grep -qE "$tail_heading" "$doc"; then echo; docTail; fi
     } >"$work/doc.md"
     cp "$work/doc.md" "$doc"
     echo "corpus: $built of $total built; $doc updated"

@@ -22,7 +22,10 @@ bool isSpace(char c) {
 
 Lexer::Lexer(std::string_view text, FileId file, DiagnosticSink& sink)
     : mText(text), mSink(sink), mLines(text, file) {
-    if (mText.substr(0, kByteOrderMark.size()) == kByteOrderMark) mPos = kByteOrderMark.size();
+    // Files saved twice by tools that each add a mark start with several: all are skipped.
+    while (mText.substr(mPos, kByteOrderMark.size()) == kByteOrderMark) {
+        mPos += kByteOrderMark.size();
+    }
 }
 
 Token Lexer::next() {

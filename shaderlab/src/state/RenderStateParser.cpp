@@ -208,7 +208,8 @@ bool RenderStateParser::parseCull(RenderState& state) {
 }
 
 bool RenderStateParser::parseAlphaToMask(RenderState& state) {
-    return parseStateValue(mCursor, "AlphaToMask", kOnOff, false, state.alphaToMask);
+    // Unity's ShaderLab reads AlphaToMask as a boolean: True and False mean On and Off.
+    return parseStateValue(mCursor, "AlphaToMask", kTrueFalse, false, state.alphaToMask);
 }
 
 bool RenderStateParser::parseConservative(RenderState& state) {

@@ -77,6 +77,7 @@ bool StencilParser::parseEntry(StencilState& stencil) {
 
 bool StencilParser::parseByteValue(std::string_view name, StateValue& out) {
     const Token& token = mCursor.peek();
+    if (token.is(TokenKind::Number) && name == "Ref") return parseReference(out);
     if (token.is(TokenKind::Number)) {
         std::optional<int> value = integerOf(token);
         if (!value || *value < 0 || *value > kMaxByte) {
@@ -86,6 +87,28 @@ bool StencilParser::parseByteValue(std::string_view name, StateValue& out) {
         }
     }
     return parseStateValue(mCursor, "Stencil " + std::string(name), {}, true, out);
+}
+
+// Unity accepts a reference above 255; the GPU compares only the stencil buffer's 8 bits, so
+// the value in effect is its low byte. varc keeps that byte and warns (`Ref 256` is 0).
+bool StencilParser::parseReference(StateValue& out) {
+    Token token = mCursor.next();
+    std::optional<int> value = integerOf(token);
+    if (!value || *value < 0) {
+        return mCursor.fail(token.location, "invalid Stencil Ref value " + token.describe() +
+                                                "; expected a non-negative integer");
+    }
+    if (*value > kMaxByte) {
+        int lowByte = *value & kMaxByte;
+        mCursor.sink().warning(token.location,
+                               "Stencil Ref " + std::to_string(*value) +
+                                   " is above 255; the stencil buffer holds 8 bits, so it acts "
+                                   "as " + std::to_string(lowByte));
+        out = StateValue{std::to_string(lowByte), {}};
+        return true;
+    }
+    out = StateValue{std::string(token.text), {}};
+    return true;
 }
 
 bool StencilParser::parseFaceEntry(const Token& key, StencilState& stencil) {

@@ -24,6 +24,7 @@ public:
 
 private:
     bool parseEntry(StencilState& stencil);
+    bool parseReference(StateValue& out);
     bool parseByteValue(std::string_view name, StateValue& out);
     bool parseFaceEntry(const Token& key, StencilState& stencil);
 

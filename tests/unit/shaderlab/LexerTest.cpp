@@ -82,6 +82,13 @@ TEST(Lexer, SkipsUtf8ByteOrderMark) {
     EXPECT_EQ(lexed.tokens[0].location.column, 4u);
 }
 
+TEST(Lexer, SkipsEveryLeadingByteOrderMark) {
+    std::string text = "\xEF\xBB\xBF\xEF\xBB\xBFShader";
+    Lexed lexed = lexAll(text);
+    ASSERT_EQ(texts(lexed), (Texts{"Shader", ""}));
+    EXPECT_EQ(lexed.tokens[0].location.column, 7u);
+}
+
 // Unity's upgrader writes `#warning Upgrade NOTE: ...` lines above `Shader`.
 TEST(Lexer, AWarningLineIsReportedAndSkipped) {
     std::string text = "// note\n#warning Upgrade NOTE: unity_Scale was removed\r\nShader";

@@ -115,6 +115,8 @@ TEST(RenderStateParser, ParsesOffsetNumbersAndProperties) {
 TEST(RenderStateParser, ParsesAlphaToMaskConservativeAndZClip) {
     RenderState state = passState("AlphaToMask On Conservative True ZClip False");
     EXPECT_EQ(state.alphaToMask, literal("On"));
+    // Unity reads AlphaToMask as a boolean.
+    EXPECT_EQ(passState("AlphaToMask True").alphaToMask, literal("True"));
     EXPECT_EQ(state.conservative, literal("True"));
     EXPECT_EQ(state.zClip, literal("False"));
 }
@@ -180,10 +182,33 @@ TEST(RenderStateParser, ReportsInvalidValuesAtTheValue) {
     EXPECT_FALSE(mask.shader);
     EXPECT_EQ(mask.firstMessage(),
               "invalid ColorMask value 'RGBX'; expected 0 or channels such as RGB, RGBA, A");
-    auto ref = parsePassBody("Stencil { Ref 256 }");
-    EXPECT_FALSE(ref.shader);
-    EXPECT_EQ(ref.firstMessage(),
-              "invalid Stencil Ref value '256'; expected an integer from 0 to 255");
+    auto mask256 = parsePassBody("Stencil { ReadMask 256 }");
+    EXPECT_FALSE(mask256.shader);
+    EXPECT_EQ(mask256.firstMessage(),
+              "invalid Stencil ReadMask value '256'; expected an integer from 0 to 255");
+    auto negative = parsePassBody("Stencil { Ref -1 }");
+    EXPECT_FALSE(negative.shader);
+    EXPECT_EQ(negative.firstMessage(),
+              "invalid Stencil Ref value '-1'; expected a non-negative integer");
+}
+
+// Unity accepts `Stencil Ref` above 255; the 8-bit stencil buffer sees its low byte.
+TEST(RenderStateParser, AStencilRefAbove255KeepsItsLowByteWithAWarning) {
+    auto ref = parsePassBody("Stencil { Ref 300 }");
+    ASSERT_TRUE(ref.shader);
+    const RenderState& state = ref.shader->subShaders[0].passes[0].state;
+    ASSERT_TRUE(state.stencil);
+    EXPECT_EQ(state.stencil->ref, literal("44"));
+    EXPECT_NE(ref.firstMessage().find("acts as 44"), std::string::npos) << ref.firstMessage();
+}
+
+// LOD belongs to a SubShader; Unity ignores one inside a Pass.
+TEST(RenderStateParser, ALodInsideAPassIsIgnoredWithAWarning) {
+    auto lod = parsePassBody("LOD 200 ZWrite Off");
+    ASSERT_TRUE(lod.shader);
+    EXPECT_EQ(lod.shader->subShaders[0].passes[0].state.zWrite, literal("Off"));
+    EXPECT_NE(lod.firstMessage().find("LOD inside a Pass has no effect"), std::string::npos);
+    EXPECT_FALSE(parsePassBody("LOD high").shader);
 }
 
 TEST(RenderStateParser, ReportsMissingValuesAndMalformedPropertyReferences) {

@@ -2,6 +2,8 @@
 // parsePragmas: directive forms, underscore rules, errors with columns, other pragmas.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "VariantsTestSupport.h"
 #include "varc/variants/PragmaParser.h"
 
@@ -217,10 +219,16 @@ TEST(PragmaParser, UnknownShaderFeatureSuffixIsAnError) {
         << error.message;
 }
 
-TEST(PragmaParser, UnknownShortcutOptionSuggestsTheClosestOption) {
-    Diagnostic error = parseError({"multi_compile_fwdbase nolightmaps"});
-    EXPECT_EQ(error.location.column, 31u);
-    EXPECT_NE(error.message.find("did you mean 'nolightmap'?"), std::string::npos) << error.message;
+TEST(PragmaParser, UnknownShortcutOptionWarnsWithTheClosestOption) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> kw = parse({"multi_compile_fwdbase nolightmaps"}, sink);
+    ASSERT_TRUE(kw.has_value());
+    ASSERT_EQ(sink.diagnostics().size(), 1u);
+    const Diagnostic& warning = sink.diagnostics()[0];
+    EXPECT_EQ(warning.severity, Severity::Warning);
+    EXPECT_EQ(warning.location.column, 31u);
+    EXPECT_NE(warning.message.find("did you mean 'nolightmap'?"), std::string::npos)
+        << warning.message;
 }
 
 TEST(PragmaParser, OptionWithoutEffectOnTheShortcutWarns) {
@@ -316,10 +324,51 @@ TEST(PragmaParser, ShortcutSetsCarryDirectiveAndPragmaLocation) {
     EXPECT_EQ(kw.rules[0].origin, "multi_compile_fwdadd_fullshadows");
 }
 
-TEST(PragmaParser, ShortcutDeclaredTwiceIsOneError) {
-    Diagnostic error = parseError({"multi_compile_fwdbase", "multi_compile_fwdbase"});
-    EXPECT_NE(error.message.find("declared twice"), std::string::npos);
-    EXPECT_EQ(error.location.line, 2u);
+// Unity compiles a shortcut written twice as if written once; varc warns.
+TEST(PragmaParser, AShortcutDeclaredTwiceCountsOnceWithAWarning) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> twice = parse({"multi_compile_fwdbase", "multi_compile_fwdbase"}, sink);
+    ASSERT_TRUE(twice.has_value());
+    std::vector<std::string> warnings = messages(sink, Severity::Warning);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("declared twice"), std::string::npos) << warnings[0];
+    PassKeywords once = parseOk({"multi_compile_fwdbase"});
+    ASSERT_EQ(twice->sets.size(), once.sets.size());
+    EXPECT_EQ(twice->rules.size(), once.rules.size());
+}
+
+// `multi_compile_fwdadd fullshadows`: Unity ignores the word; varc too, with a warning that
+// names the shortcut the user probably meant.
+TEST(PragmaParser, AnUnknownWordAfterAShortcutIsIgnoredWithAWarning) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> kw = parse({"multi_compile_fwdadd fullshadows"}, sink);
+    ASSERT_TRUE(kw.has_value());
+    std::vector<std::string> warnings = messages(sink, Severity::Warning);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("'multi_compile_fwdadd_fullshadows'"), std::string::npos)
+        << warnings[0];
+    PassKeywords plain = parseOk({"multi_compile_fwdadd"});
+    ASSERT_EQ(kw->sets.size(), plain.sets.size());
+    EXPECT_EQ(kw->sets[0].keywords, plain.sets[0].keywords);
+}
+
+// Unity ignores stage suffixes on Vulkan: a suffixed copy of a shortcut's set is the same set,
+// merged, and then defined in the stages of both.
+TEST(PragmaParser, AStageSuffixedCopyOfAShortcutSetIsMerged) {
+    DiagnosticList sink;
+    std::optional<PassKeywords> kw =
+        parse({"multi_compile_fwdbase", "multi_compile_domain _ VERTEXLIGHT_ON"}, sink);
+    ASSERT_TRUE(kw.has_value());
+    EXPECT_FALSE(sink.hasErrors());
+    PassKeywords alone = parseOk({"multi_compile_fwdbase"});
+    ASSERT_EQ(kw->sets.size(), alone.sets.size());
+    for (const KeywordSetDecl& set : kw->sets) {
+        if (std::find(set.keywords.begin(), set.keywords.end(), "VERTEXLIGHT_ON") !=
+            set.keywords.end()) {
+            EXPECT_TRUE(hasStage(set.stages, Stage::Domain));
+            EXPECT_TRUE(hasStage(set.stages, Stage::Vertex));
+        }
+    }
 }
 
 TEST(PragmaParser, ProceduralInstancingAddsAKeywordToTheInstancingSet) {

@@ -63,9 +63,11 @@ void DeclarationChecker::resolveDynamicBranches(std::vector<DeclaredSet>& sets,
     std::erase_if(sets, [](const DeclaredSet& set) { return !hasKeyword(set.decl); });
 }
 
-// Unity accepts a set written again exactly (same keywords in any order, same directive kind,
-// scope and stages), e.g. `multi_compile _ VERTEXLIGHT_ON` beside `multi_compile_fwdbase`, which
+// Unity accepts a set written again exactly (same keywords in any order, same directive kind
+// and scope), e.g. `multi_compile _ VERTEXLIGHT_ON` beside `multi_compile_fwdbase`, which
 // declares that set itself: the variant count does not change. varc merges it with a note.
+// A stage suffix does not make the set another one (`multi_compile_domain _ VERTEXLIGHT_ON`):
+// Unity ignores stage suffixes on Vulkan, so the merged set is defined in the stages of both.
 void DeclarationChecker::mergeIdenticalSets(std::vector<DeclaredSet>& sets) {
     for (size_t i = sets.size(); i-- > 1;) {
         const KeywordSetDecl& later = sets[i].decl;
@@ -73,8 +75,9 @@ void DeclarationChecker::mergeIdenticalSets(std::vector<DeclaredSet>& sets) {
         for (size_t j = 0; j < i; ++j) {
             const KeywordSetDecl& first = sets[j].decl;
             if (first.kind != later.kind || first.local != later.local ||
-                first.stages != later.stages || sortedKeywords(first) != mine)
+                sortedKeywords(first) != mine)
                 continue;
+            sets[j].decl.stages = sets[j].decl.stages | later.stages;
             mSink.report({Severity::Note,
                           sets[i].directiveLocation,
                           "keyword set '" + displaySet(later) + "' is the same as '" +

@@ -188,11 +188,15 @@ void PragmaReader::readShortcut(const DirectiveForm& form, const std::vector<Pra
     std::string directive = shortcut->directive();
     auto [seen, inserted] = mShortcutsSeen.emplace(directive, tokens[0].location);
     if (!inserted) {
-        return error(tokens[0].location, "'" + directive + "' is declared twice",
-                     {{seen->second, "first declared here"}});
+        // Unity compiles a shortcut written twice as if written once.
+        mSink.report({Severity::Warning,
+                      tokens[0].location,
+                      "'" + directive + "' is declared twice; the repeat is ignored, as in Unity",
+                      {{seen->second, "first declared here"}}});
+        return;
     }
     std::vector<const ShortcutOption*> options;
-    if (!readShortcutOptions(tokens, *shortcut, options)) return;
+    readShortcutOptions(tokens, *shortcut, options);
     ShortcutExpansion expansion = expandShortcut(*shortcut, options, mHash);
     for (KeywordSetDecl& decl : expansion.sets) {
         std::vector<SourceLocation> locations(decl.keywords.size(), tokens[0].location);
@@ -202,19 +206,16 @@ void PragmaReader::readShortcut(const DirectiveForm& form, const std::vector<Pra
 }
 
 // Options are validated against the global list; one that names no keyword of this shortcut
-// is accepted with a warning (e.g. `multi_compile_fog novertexlight`).
-bool PragmaReader::readShortcutOptions(const std::vector<PragmaToken>& tokens,
+// is accepted with a warning (e.g. `multi_compile_fog novertexlight`), an unknown word is
+// ignored with one (warnUnknownOption).
+void PragmaReader::readShortcutOptions(const std::vector<PragmaToken>& tokens,
                                        const Shortcut& shortcut,
                                        std::vector<const ShortcutOption*>& options) {
     const std::string directive = shortcut.directive();
-    bool ok = true;
     for (size_t i = 1; i < tokens.size(); ++i) {
         const ShortcutOption* option = findShortcutOption(tokens[i].text);
         if (option == nullptr) {
-            error(tokens[i].location, "unknown option '" + std::string(tokens[i].text) + "' for '" +
-                                          directive + "'" +
-                                          didYouMean(tokens[i].text, optionNames()));
-            ok = false;
+            warnUnknownOption(tokens[i], directive);
             continue;
         }
         bool effective = false;
@@ -229,7 +230,19 @@ bool PragmaReader::readShortcutOptions(const std::vector<PragmaToken>& tokens,
         }
         options.push_back(option);
     }
-    return ok;
+}
+
+// Unity ignores a word after a shortcut that is not one of its options
+// (`multi_compile_fwdadd fullshadows` declares what `multi_compile_fwdadd` does). varc too, and
+// says so: often the word was meant as part of the shortcut's name.
+void PragmaReader::warnUnknownOption(const PragmaToken& option, const std::string& directive) {
+    std::vector<std::string> candidates = optionNames();
+    std::string joined = directive + "_" + std::string(option.text);
+    bool isShortcut = findShortcut(joined.substr(std::string("multi_compile_").size())) != nullptr;
+    std::string hint = isShortcut ? "; did you mean '" + joined + "'?"
+                                  : didYouMean(option.text, candidates);
+    mSink.warning(option.location, "unknown option '" + std::string(option.text) + "' for '" +
+                                       directive + "' is ignored, as in Unity" + hint);
 }
 
 void PragmaReader::readEntry(std::string& entry, const std::vector<PragmaToken>& tokens) {

@@ -32,8 +32,9 @@ private:
     bool readSetKeywords(const std::vector<PragmaToken>& tokens, DeclaredSet& set);
     void readUnknownShortcut(const std::vector<PragmaToken>& tokens);
     void warnUnknownShortcut(const PragmaToken& name);
+    void warnUnknownOption(const PragmaToken& option, const std::string& directive);
     void readShortcut(const DirectiveForm& form, const std::vector<PragmaToken>& tokens);
-    bool readShortcutOptions(const std::vector<PragmaToken>& tokens, const Shortcut& shortcut,
+    void readShortcutOptions(const std::vector<PragmaToken>& tokens, const Shortcut& shortcut,
                              std::vector<const ShortcutOption*>& options);
     void reportUnknownDirective(const PragmaToken& name, const std::vector<std::string>& known);
     void readEntry(std::string& entry, const std::vector<PragmaToken>& tokens);
