@@ -31,6 +31,7 @@
 #include "varc/core/JoinWords.h"
 #include "varc/driver/CompilerException.h"
 #include "varc/driver/GlslLegacyPreamble.h"
+#include "varc/driver/GlslVersionDirective.h"
 #include "varc/driver/GlslangFrontend.h"
 #include "varc/driver/ParallelFor.h"
 #include "varc/driver/ProgramCache.h"
@@ -188,7 +189,7 @@ bool Builder::plan(const std::vector<frontend::LoadedShader>& shaders, Diagnosti
             }
             job.keys = job.pass->space->enumerate();
             job.text = languageOf(job) == shaderlab::ProgramLanguage::Glsl
-                           ? toGlslLineConvention(job.pass->source.text)
+                           ? toGlslLineConvention(hoistGlslVersion(job.pass->source.text))
                            : job.pass->source.text;
             job.sourceIds.assign(job.keys.size() * job.stages.size(), kNoProgram);
             if (mOptions.shareUnobservedDefines) job.observed.emplace(job.text);

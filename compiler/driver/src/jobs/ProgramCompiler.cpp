@@ -8,6 +8,7 @@
 #include <string>
 
 #include "varc/core/JoinWords.h"
+#include "varc/driver/GlslVersionDirective.h"
 #include "varc/driver/GlslangFrontend.h"
 #include "varc/driver/GlslangLogParser.h"
 #include "varc/driver/SpirvImageOffsets.h"
@@ -47,8 +48,12 @@ struct Attempt {
 Attempt compileAndValidate(const StageProgram& program, const std::string& text,
                            OptimizationLevel level) {
     Attempt attempt;
+    // glslang's preprocessed output keeps the lines above `#version`; the compile needs it first.
+    const std::string source = program.language == shaderlab::ProgramLanguage::Glsl
+                                   ? hoistGlslVersion(text)
+                                   : text;
     attempt.compiled =
-        compileProgram({text, "", program.language, program.stage, program.entryPoint});
+        compileProgram({source, "", program.language, program.stage, program.entryPoint});
     if (!attempt.compiled.ok) return attempt;
     attempt.compiled.spirv = splitMatrixExtendedMath(attempt.compiled.spirv);
     attempt.optimized = optimizeSpirv(attempt.compiled.spirv, level);
