@@ -174,11 +174,11 @@ TEST_F(VulkanTest, UniqueHandleMovesOwnershipAndDestroysOnce) {
 }
 
 TEST(CheckVk, NamesTheCallTheResultAndTheSite) {
-    Status ok = vulkan::checkVk(VK_SUCCESS, "vkCreateFence", std::source_location::current());
+    Status ok = vulkan::checkVk(VK_SUCCESS, "vkCreateFence", CallSite::current());
     EXPECT_TRUE(ok.ok());
     EXPECT_TRUE(vulkan::checkVk(VK_INCOMPLETE, "vkEnumeratePhysicalDevices").ok());
-    Status failed = vulkan::checkVk(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory",
-                                    std::source_location::current());
+    Status failed =
+        vulkan::checkVk(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory", CallSite::current());
     ASSERT_FALSE(failed.ok());
     EXPECT_EQ(failed.error().code, ErrorCode::VulkanError);
     EXPECT_NE(failed.error().detail.find("vkAllocateMemory failed: VK_ERROR_OUT_OF_DEVICE_MEMORY"),

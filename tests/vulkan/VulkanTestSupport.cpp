@@ -172,10 +172,9 @@ Result<vulkan::UniqueHandle<VkPipeline>> createPipeline(const vulkan::VulkanCont
     info.layout = desc.layout;
     info.renderPass = desc.renderPass;
     VkPipeline pipeline = VK_NULL_HANDLE;
-    if (Status status =
-            vulkan::checkVk(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE, 1, &info,
-                                                      nullptr, &pipeline),
-                            "vkCreateGraphicsPipelines", std::source_location::current());
+    if (Status status = vulkan::checkVk(vkCreateGraphicsPipelines(context.device(), VK_NULL_HANDLE,
+                                                                  1, &info, nullptr, &pipeline),
+                                        "vkCreateGraphicsPipelines", CallSite::current());
         !status) {
         return status.error();
     }
@@ -195,7 +194,7 @@ Result<vulkan::UniqueHandle<VkPipelineLayout>> createPipelineLayout(
     VkPipelineLayout layout = VK_NULL_HANDLE;
     if (Status status =
             vulkan::checkVk(vkCreatePipelineLayout(context.device(), &info, nullptr, &layout),
-                            "vkCreatePipelineLayout", std::source_location::current());
+                            "vkCreatePipelineLayout", CallSite::current());
         !status) {
         return status.error();
     }
@@ -215,7 +214,7 @@ Result<TextureBinding> bindTexture(const vulkan::VulkanContext& context, VkImage
     VkDescriptorSetLayout layout = VK_NULL_HANDLE;
     if (Status s =
             vulkan::checkVk(vkCreateDescriptorSetLayout(device, &layoutInfo, nullptr, &layout),
-                            "vkCreateDescriptorSetLayout", std::source_location::current());
+                            "vkCreateDescriptorSetLayout", CallSite::current());
         !s) {
         return s.error();
     }
@@ -229,7 +228,7 @@ Result<TextureBinding> bindTexture(const vulkan::VulkanContext& context, VkImage
     poolInfo.pPoolSizes = &size;
     VkDescriptorPool pool = VK_NULL_HANDLE;
     if (Status s = vulkan::checkVk(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool),
-                                   "vkCreateDescriptorPool", std::source_location::current());
+                                   "vkCreateDescriptorPool", CallSite::current());
         !s) {
         return s.error();
     }
@@ -241,7 +240,7 @@ Result<TextureBinding> bindTexture(const vulkan::VulkanContext& context, VkImage
     allocateInfo.descriptorSetCount = 1;
     allocateInfo.pSetLayouts = &layout;
     if (Status s = vulkan::checkVk(vkAllocateDescriptorSets(device, &allocateInfo, &binding.set),
-                                   "vkAllocateDescriptorSets", std::source_location::current());
+                                   "vkAllocateDescriptorSets", CallSite::current());
         !s) {
         return s.error();
     }

@@ -21,7 +21,7 @@ Result<Buffer> Buffer::create(const VulkanContext& context, VkDeviceSize size,
     info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     VkBuffer rawBuffer = VK_NULL_HANDLE;
     if (Status status = checkVk(vkCreateBuffer(device, &info, nullptr, &rawBuffer),
-                                "vkCreateBuffer", std::source_location::current());
+                                "vkCreateBuffer", CallSite::current());
         !status) {
         return status.error();
     }
@@ -42,7 +42,7 @@ Result<Buffer> Buffer::create(const VulkanContext& context, VkDeviceSize size,
     if (!memory) return memory.error();
     buffer.mMemory = std::move(*memory);
     if (Status status = checkVk(vkBindBufferMemory(device, rawBuffer, buffer.mMemory.get(), 0),
-                                "vkBindBufferMemory", std::source_location::current());
+                                "vkBindBufferMemory", CallSite::current());
         !status) {
         return status.error();
     }
@@ -50,7 +50,7 @@ Result<Buffer> Buffer::create(const VulkanContext& context, VkDeviceSize size,
         void* mapped = nullptr;
         if (Status status =
                 checkVk(vkMapMemory(device, buffer.mMemory.get(), 0, VK_WHOLE_SIZE, 0, &mapped),
-                        "vkMapMemory", std::source_location::current());
+                        "vkMapMemory", CallSite::current());
             !status) {
             return status.error();
         }

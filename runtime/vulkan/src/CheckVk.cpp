@@ -46,9 +46,9 @@ const char* vkResultName(VkResult result) {
     }
 }
 
-Status checkVk(VkResult result, const char* call, std::source_location where) {
+Status checkVk(VkResult result, const char* call, CallSite where) {
     if (result >= 0) return Ok{};
-    std::string_view file = where.file_name();
+    std::string_view file = where.fileName();
     if (auto slash = file.find_last_of('/'); slash != std::string_view::npos) {
         file.remove_prefix(slash + 1);
     }

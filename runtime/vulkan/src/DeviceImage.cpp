@@ -22,7 +22,7 @@ Result<UniqueHandle<VkImageView>> createView(const VulkanContext& context, VkIma
     info.subresourceRange = {desc.aspect, 0, desc.mipLevels, 0, desc.cube ? 6u : 1u};
     VkImageView view = VK_NULL_HANDLE;
     if (Status status = checkVk(vkCreateImageView(context.device(), &info, nullptr, &view),
-                                "vkCreateImageView", std::source_location::current());
+                                "vkCreateImageView", CallSite::current());
         !status) {
         return status.error();
     }
@@ -48,7 +48,7 @@ Result<DeviceImage> createDeviceImage(const VulkanContext& context, const Device
     info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
     VkImage rawImage = VK_NULL_HANDLE;
     if (Status status = checkVk(vkCreateImage(context.device(), &info, nullptr, &rawImage),
-                                "vkCreateImage", std::source_location::current());
+                                "vkCreateImage", CallSite::current());
         !status) {
         return status.error();
     }
@@ -64,7 +64,7 @@ Result<DeviceImage> createDeviceImage(const VulkanContext& context, const Device
     result.memory = std::move(*memory);
     if (Status status =
             checkVk(vkBindImageMemory(context.device(), rawImage, result.memory.get(), 0),
-                    "vkBindImageMemory", std::source_location::current());
+                    "vkBindImageMemory", CallSite::current());
         !status) {
         return status.error();
     }

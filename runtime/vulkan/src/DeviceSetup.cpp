@@ -42,13 +42,13 @@ struct Candidate {
 Result<std::vector<Candidate>> graphicsDevices(VkInstance instance, std::string& allNames) {
     uint32_t count = 0;
     if (Status status = checkVk(vkEnumeratePhysicalDevices(instance, &count, nullptr),
-                                "vkEnumeratePhysicalDevices", std::source_location::current());
+                                "vkEnumeratePhysicalDevices", CallSite::current());
         !status) {
         return status.error();
     }
     std::vector<VkPhysicalDevice> devices(count);
     if (Status status = checkVk(vkEnumeratePhysicalDevices(instance, &count, devices.data()),
-                                "vkEnumeratePhysicalDevices", std::source_location::current());
+                                "vkEnumeratePhysicalDevices", CallSite::current());
         !status) {
         return status.error();
     }
@@ -149,7 +149,7 @@ Status createDevice(VulkanContext::State& state) {
     info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     if (Status status = checkVk(vkCreateDevice(state.physicalDevice, &info, nullptr, &state.device),
-                                "vkCreateDevice", std::source_location::current());
+                                "vkCreateDevice", CallSite::current());
         !status) {
         return status;
     }
@@ -161,7 +161,7 @@ Status createDevice(VulkanContext::State& state) {
         VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
     poolInfo.queueFamilyIndex = state.queueFamily;
     return checkVk(vkCreateCommandPool(state.device, &poolInfo, nullptr, &state.commandPool),
-                   "vkCreateCommandPool", std::source_location::current());
+                   "vkCreateCommandPool", CallSite::current());
 }
 
 }  // namespace varc::vulkan

@@ -54,7 +54,7 @@ Status createMessenger(VulkanContext::State& state) {
     }
     VkDebugUtilsMessengerCreateInfoEXT info = state.log.messengerInfo();
     return checkVk(create(state.instance, &info, nullptr, &state.messenger),
-                   "vkCreateDebugUtilsMessengerEXT", std::source_location::current());
+                   "vkCreateDebugUtilsMessengerEXT", CallSite::current());
 }
 
 // Fills |layers| and |extensions| for the instance and sets |state.debugUtils|.
@@ -105,8 +105,7 @@ Status createInstance(VulkanContext::State& state, const std::string& applicatio
     info.ppEnabledExtensionNames = extensions.data();
     VkResult result = vkCreateInstance(&info, nullptr, &state.instance);
     if (result == VK_ERROR_INCOMPATIBLE_DRIVER) return noDriverError(result);
-    if (Status status = checkVk(result, "vkCreateInstance", std::source_location::current());
-        !status) {
+    if (Status status = checkVk(result, "vkCreateInstance", CallSite::current()); !status) {
         return status;
     }
     if (state.debugUtils) {

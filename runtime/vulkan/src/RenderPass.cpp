@@ -19,7 +19,7 @@ Result<UniqueHandle<VkRenderPass>> createOneSubpassPass(
     info.pDependencies = dependencies.data();
     VkRenderPass pass = VK_NULL_HANDLE;
     if (Status status = checkVk(vkCreateRenderPass(device, &info, nullptr, &pass),
-                                "vkCreateRenderPass", std::source_location::current());
+                                "vkCreateRenderPass", CallSite::current());
         !status) {
         return status.error();
     }
@@ -39,7 +39,7 @@ Result<UniqueHandle<VkFramebuffer>> createPassFramebuffer(VkDevice device, VkRen
     info.layers = 1;
     VkFramebuffer framebuffer = VK_NULL_HANDLE;
     if (Status status = checkVk(vkCreateFramebuffer(device, &info, nullptr, &framebuffer),
-                                "vkCreateFramebuffer", std::source_location::current());
+                                "vkCreateFramebuffer", CallSite::current());
         !status) {
         return status.error();
     }

@@ -252,7 +252,7 @@ Status RenderTarget::createDepthSampleView(const VulkanContext& context) {
     info.subresourceRange = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
     VkImageView view = VK_NULL_HANDLE;
     if (Status status = checkVk(vkCreateImageView(context.device(), &info, nullptr, &view),
-                                "vkCreateImageView", std::source_location::current());
+                                "vkCreateImageView", CallSite::current());
         !status) {
         return status;
     }

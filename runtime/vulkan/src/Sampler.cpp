@@ -28,7 +28,7 @@ Result<UniqueHandle<VkSampler>> createSampler(const VulkanContext& context,
     info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
     VkSampler sampler = VK_NULL_HANDLE;
     if (Status status = checkVk(vkCreateSampler(context.device(), &info, nullptr, &sampler),
-                                "vkCreateSampler", std::source_location::current());
+                                "vkCreateSampler", CallSite::current());
         !status) {
         return status.error();
     }

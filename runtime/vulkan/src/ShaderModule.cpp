@@ -38,7 +38,7 @@ Result<UniqueHandle<VkShaderModule>> createShaderModule(const VulkanContext& con
     info.pCode = spirv.data();
     VkShaderModule module = VK_NULL_HANDLE;
     if (Status status = checkVk(vkCreateShaderModule(context.device(), &info, nullptr, &module),
-                                "vkCreateShaderModule", std::source_location::current());
+                                "vkCreateShaderModule", CallSite::current());
         !status) {
         return status.error();
     }

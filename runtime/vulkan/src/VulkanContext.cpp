@@ -26,7 +26,7 @@ Status submitAndWaitForFence(VkDevice device, VkQueue queue, VkCommandBuffer com
     fenceInfo.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
     VkFence rawFence = VK_NULL_HANDLE;
     if (Status status = checkVk(vkCreateFence(device, &fenceInfo, nullptr, &rawFence),
-                                "vkCreateFence", std::source_location::current());
+                                "vkCreateFence", CallSite::current());
         !status) {
         return status;
     }
@@ -36,13 +36,13 @@ Status submitAndWaitForFence(VkDevice device, VkQueue queue, VkCommandBuffer com
     submit.commandBufferCount = 1;
     submit.pCommandBuffers = &commands;
     if (Status status = checkVk(vkQueueSubmit(queue, 1, &submit, fence.get()), "vkQueueSubmit",
-                                std::source_location::current());
+                                CallSite::current());
         !status) {
         return status;
     }
     VkFence fences[] = {fence.get()};
     return checkVk(vkWaitForFences(device, 1, fences, VK_TRUE, UINT64_MAX), "vkWaitForFences",
-                   std::source_location::current());
+                   CallSite::current());
 }
 
 }  // namespace
@@ -125,7 +125,7 @@ Result<UniqueHandle<VkDeviceMemory>> VulkanContext::allocateMemory(
     info.memoryTypeIndex = *type;
     VkDeviceMemory memory = VK_NULL_HANDLE;
     if (Status status = checkVk(vkAllocateMemory(device(), &info, nullptr, &memory),
-                                "vkAllocateMemory", std::source_location::current());
+                                "vkAllocateMemory", CallSite::current());
         !status) {
         return status.error();
     }
@@ -140,7 +140,7 @@ Status VulkanContext::submitAndWait(const std::function<void(VkCommandBuffer)>& 
     allocateInfo.commandBufferCount = 1;
     VkCommandBuffer commands = VK_NULL_HANDLE;
     if (Status status = checkVk(vkAllocateCommandBuffers(device(), &allocateInfo, &commands),
-                                "vkAllocateCommandBuffers", std::source_location::current());
+                                "vkAllocateCommandBuffers", CallSite::current());
         !status) {
         return status;
     }
@@ -156,13 +156,13 @@ Status VulkanContext::submitAndWait(const std::function<void(VkCommandBuffer)>& 
     beginInfo.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
     beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     if (Status status = checkVk(vkBeginCommandBuffer(commands, &beginInfo), "vkBeginCommandBuffer",
-                                std::source_location::current());
+                                CallSite::current());
         !status) {
         return status;
     }
     record(commands);
-    if (Status status = checkVk(vkEndCommandBuffer(commands), "vkEndCommandBuffer",
-                                std::source_location::current());
+    if (Status status =
+            checkVk(vkEndCommandBuffer(commands), "vkEndCommandBuffer", CallSite::current());
         !status) {
         return status;
     }
@@ -170,7 +170,7 @@ Status VulkanContext::submitAndWait(const std::function<void(VkCommandBuffer)>& 
 }
 
 Status VulkanContext::waitIdle() const {
-    return checkVk(vkDeviceWaitIdle(device()), "vkDeviceWaitIdle", std::source_location::current());
+    return checkVk(vkDeviceWaitIdle(device()), "vkDeviceWaitIdle", CallSite::current());
 }
 
 std::size_t VulkanContext::validationMessageCount() const { return mState->log.count(); }

@@ -4,8 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include <source_location>
-
+#include "varc/core/CallSite.h"
 #include "varc/core/Result.h"
 
 namespace varc::vulkan {
@@ -21,8 +20,7 @@ const char* vkResultName(VkResult result);
 //     "vkCreateImage failed: VK_ERROR_OUT_OF_DEVICE_MEMORY (RenderTarget.cpp:87)".
 // Typical use:
 //     checkVk(vkCreateFence(device, &info, nullptr, &fence), "vkCreateFence",
-//             std::source_location::current())
-Status checkVk(VkResult result, const char* call,
-               std::source_location where = std::source_location::current());
+//             CallSite::current())
+Status checkVk(VkResult result, const char* call, CallSite where = CallSite::current());
 
 }  // namespace varc::vulkan
