@@ -30,10 +30,10 @@ struct LookupFlags {
     std::string keywords;
     std::string light;  // "" = no --light
     bool cookie = false;
-    std::string shadows = "none";
+    std::optional<std::string> shadows;  // absent: LightDescription's default
     int vertexLights = 0;
     bool hdr = false;
-    std::string policy = "closest";
+    std::optional<std::string> policy;  // absent: LookupOptions' default
 };
 
 // The light --light and its companions describe, or the usage error.
@@ -43,12 +43,14 @@ Result<variants::LightDescription> lightOf(const LookupFlags& flags) {
     if (!type) {
         return usageError("--light expects directional, point or spot, got '" + flags.light + "'");
     }
-    auto shadows = variants::parseShadowMode(flags.shadows);
-    if (!shadows) {
-        return usageError("--shadows expects none, hard or soft, got '" + flags.shadows + "'");
-    }
     light.type = *type;
-    light.shadows = *shadows;
+    if (flags.shadows) {
+        auto shadows = variants::parseShadowMode(*flags.shadows);
+        if (!shadows) {
+            return usageError("--shadows expects none, hard or soft, got '" + *flags.shadows + "'");
+        }
+        light.shadows = *shadows;
+    }
     light.cookie = flags.cookie;
     light.vertexLightCount = flags.vertexLights;
     light.hdr = flags.hdr;
@@ -58,12 +60,14 @@ Result<variants::LightDescription> lightOf(const LookupFlags& flags) {
 // The lookup options of |flags|, or the usage error.
 Result<CommandOptions> finishLookup(LookupFlags& flags) {
     LookupOptions& options = flags.options;
-    auto policy = variants::parseSelectionPolicy(flags.policy);
-    if (!policy) {
-        return usageError("--policy expects exact, closest, first or strict, got '" + flags.policy +
-                          "'");
+    if (flags.policy) {
+        auto policy = variants::parseSelectionPolicy(*flags.policy);
+        if (!policy) {
+            return usageError("--policy expects exact, closest, first or strict, got '" +
+                              *flags.policy + "'");
+        }
+        options.policy = *policy;
     }
-    options.policy = *policy;
     options.keywords = splitWords(flags.keywords);
     if (!flags.light.empty()) {
         Result<variants::LightDescription> light = lightOf(flags);
