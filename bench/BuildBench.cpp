@@ -13,11 +13,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "BenchInputs.h"
+#include "varc/cache/CacheSpec.h"
 #include "varc/core/Diagnostic.h"
 #include "varc/driver/CompileDriver.h"
 #include "varc/driver/GlslLegacyPreamble.h"
@@ -102,9 +104,11 @@ void BM_VarcBuildWarmCache(benchmark::State& state) {
     if (!in.ok) return state.SkipWithError("inputs failed to load");
     driver::BuildOptions options;
     options.jobs = static_cast<unsigned>(state.range(0));
-    options.cacheDirectory = std::filesystem::temp_directory_path() /
-                             ("varc-bench-cache-" + std::to_string(::getpid()));
-    std::filesystem::remove_all(options.cacheDirectory);
+    const std::filesystem::path cacheDirectory =
+        std::filesystem::temp_directory_path() / ("varc-bench-cache-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(cacheDirectory);
+    options.cache = std::make_shared<cache::CacheChain>(
+        cache::CacheChain::open({cache::directoryCacheSpec(cacheDirectory.string())}));
     DiagnosticList fill;
     if (!driver::buildPrograms(in.shaders, in.sourceMap, options, fill))
         return state.SkipWithError("build failed");
@@ -114,7 +118,7 @@ void BM_VarcBuildWarmCache(benchmark::State& state) {
         output = driver::buildPrograms(in.shaders, in.sourceMap, options, diagnostics);
         if (!output) return state.SkipWithError("build failed");
     }
-    std::filesystem::remove_all(options.cacheDirectory);
+    std::filesystem::remove_all(cacheDirectory);
     state.counters["distinct"] = static_cast<double>(output->compiledSources);
     state.counters["cached"] = static_cast<double>(output->cachedSources);
     state.counters["preprocessed"] = static_cast<double>(output->preprocessedPrograms);

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
+// `varc cache stats|clear`, and the chain of cache levels `varc build` compiles with.
 #include "varc/cli/CacheCommands.h"
 
 #include <nlohmann/json.hpp>
@@ -10,44 +11,11 @@ namespace varc::cli {
 
 namespace {
 
-// The levels for `varc cache`, or an exit code after printing why there are none.
-std::shared_ptr<cache::CacheChain> levelsOrReport(const Options& options, std::ostream& err,
-                                                  int& exitCode) {
-    Result<std::shared_ptr<cache::CacheChain>> chain = openCacheLevels(options);
-    if (!chain) {
-        err << "varc: error: " << chain.error().detail << "\n";
-        exitCode = kExitUsage;
-        return nullptr;
-    }
-    if (!*chain) {
-        err << "varc: error: no cache named: give --cache URL or set VARC_CACHE\n";
-        exitCode = kExitUsage;
-    }
-    return *chain;
-}
-
-}  // namespace
-
-Result<std::shared_ptr<cache::CacheChain>> openCacheLevels(const Options& options) {
-    std::vector<cache::CacheSpec> specs;
-    std::vector<std::string> urls;
-    if (!options.cacheDirectory.empty()) urls.push_back("file:" + options.cacheDirectory);
-    urls.insert(urls.end(), options.cacheUrls.begin(), options.cacheUrls.end());
-    for (const std::string& url : urls) {
-        Result<cache::CacheSpec> spec = cache::parseCacheSpec(url);
-        if (!spec) return spec.error();
-        specs.push_back(std::move(*spec));
-    }
-    if (specs.empty()) return std::shared_ptr<cache::CacheChain>();
-    return std::make_shared<cache::CacheChain>(cache::CacheChain::open(specs));
-}
-
-int runCacheStats(const Options& options, std::ostream& out, std::ostream& err) {
+int runCacheStats(const CacheOptions& options, cache::CacheChain& chain, std::ostream& out,
+                  std::ostream& err) {
     int exitCode = kExitOk;
-    std::shared_ptr<cache::CacheChain> chain = levelsOrReport(options, err, exitCode);
-    if (!chain) return exitCode;
     nlohmann::ordered_json levels = nlohmann::ordered_json::array();
-    for (const auto& level : chain->levels()) {
+    for (const auto& level : chain.levels()) {
         Result<cache::CacheUsage> usage = level->usage();
         if (!usage) {
             err << "varc: error: " << usage.error().detail << "\n";
@@ -66,11 +34,9 @@ int runCacheStats(const Options& options, std::ostream& out, std::ostream& err) 
     return exitCode;
 }
 
-int runCacheClear(const Options& options, std::ostream& out, std::ostream& err) {
+int runCacheClear(cache::CacheChain& chain, std::ostream& out, std::ostream& err) {
     int exitCode = kExitOk;
-    std::shared_ptr<cache::CacheChain> chain = levelsOrReport(options, err, exitCode);
-    if (!chain) return exitCode;
-    for (const auto& level : chain->levels()) {
+    for (const auto& level : chain.levels()) {
         Result<uint64_t> removed = level->clear();
         if (!removed) {
             err << "varc: error: " << removed.error().detail << "\n";
@@ -80,6 +46,23 @@ int runCacheClear(const Options& options, std::ostream& out, std::ostream& err) 
         out << level->name() << ": removed " << *removed << " entries\n";
     }
     return exitCode;
+}
+
+}  // namespace
+
+std::shared_ptr<cache::CacheChain> openCacheLevels(const std::vector<cache::CacheSpec>& levels) {
+    if (levels.empty()) return nullptr;
+    return std::make_shared<cache::CacheChain>(cache::CacheChain::open(levels));
+}
+
+int runCache(const CacheOptions& options, std::ostream& out, std::ostream& err) {
+    std::shared_ptr<cache::CacheChain> chain = openCacheLevels(options.levels);
+    if (!chain) {
+        err << "varc: error: no cache named: give --cache URL or set VARC_CACHE\n";
+        return kExitUsage;
+    }
+    return options.action == CacheOptions::Action::Stats ? runCacheStats(options, *chain, out, err)
+                                                         : runCacheClear(*chain, out, err);
 }
 
 }  // namespace varc::cli

@@ -16,6 +16,7 @@
 #include "varc/cli/BuildReport.h"
 #include "varc/cli/CacheCommands.h"
 #include "varc/cli/DiagnosticOutput.h"
+#include "varc/cli/DriverOptions.h"
 #include "varc/cli/ExplainReport.h"
 #include "varc/cli/ExplainText.h"
 #include "varc/cli/LockCheck.h"
@@ -42,8 +43,7 @@ namespace {
 // State shared by the commands: the files read, the diagnostics reported so far and where they
 // are written.
 struct Session {
-    explicit Session(const Options& options, std::ostream& err)
-        : output(options.diagnosticsFormat, sourceMap, err) {}
+    Session(DiagnosticsFormat format, std::ostream& err) : output(format, sourceMap, err) {}
 
     includes::DiskFileSystem fileSystem;
     includes::SourceMap sourceMap;
@@ -61,35 +61,23 @@ struct Session {
     }
 };
 
-includes::IncludeOptions includeOptions(const Options& options) {
+includes::IncludeOptions includeOptions(const ShaderInputOptions& input) {
     includes::IncludeOptions result;
-    result.includeDirs = options.includeDirs;
-    result.builtinDir = options.builtinIncludeDir;
-    result.projectRoot = options.projectRoot;
+    result.includeDirs = input.includeDirs;
+    result.builtinDir = input.builtinIncludeDir;
+    result.projectRoot = input.projectRoot;
     return result;
 }
 
-// How the pack records source paths: relative to --project-root (default: the current folder),
-// with the --file-prefix-map rules (checked when parsed).
-includes::SourcePathMap sourcePathMap(const Options& options) {
-    std::error_code error;
-    std::filesystem::path root = options.projectRoot.empty()
-                                     ? std::filesystem::current_path(error)
-                                     : std::filesystem::absolute(options.projectRoot, error);
-    includes::SourcePathMap map(error ? std::string() : root.lexically_normal().string());
-    for (const std::string& rule : options.filePrefixMaps) map.addRule(rule);
-    return map;
-}
-
 // Loads every input shader; false when any failed (diagnostics are in |session|).
-bool loadAll(const Options& options, Session& session,
+bool loadAll(const ShaderInputOptions& input, Session& session,
              std::vector<frontend::LoadedShader>& shaders) {
-    std::vector<std::string> files = findShaderFiles(options.inputs, session.diagnostics);
-    includes::IncludeOptions include = includeOptions(options);
+    std::vector<std::string> files = findShaderFiles(input.inputs, session.diagnostics);
+    includes::IncludeOptions include = includeOptions(input);
     // UsePass and Fallback find other shaders among the inputs, then under the include folders.
     DiagnosticList searchErrors;  // an unreadable include folder is reported by the includes
     frontend::ShaderCatalog catalog(session.fileSystem, session.sourceMap, files,
-                                    findShaderFiles(options.includeDirs, searchErrors),
+                                    findShaderFiles(input.includeDirs, searchErrors),
                                     include.builtinDir);
     for (const std::string& file : files) {
         auto shader = frontend::loadShader(file, session.fileSystem, session.sourceMap, include,
@@ -100,23 +88,21 @@ bool loadAll(const Options& options, Session& session,
 }
 
 // --max-variants for every pass of |shaders|: false (errors in |session|) when one has more.
-bool checkVariantLimits(const std::vector<frontend::LoadedShader>& shaders, const Options& options,
+bool checkVariantLimits(const std::vector<frontend::LoadedShader>& shaders, uint64_t maxVariants,
                         Session& session) {
     bool ok = true;
     for (const frontend::LoadedShader& shader : shaders) {
         for (const frontend::LoadedPass& pass : shader.passes) {
-            ok = frontend::checkVariantLimit(shader, pass, options.maxVariants,
-                                             session.diagnostics) &&
-                 ok;
+            ok = frontend::checkVariantLimit(shader, pass, maxVariants, session.diagnostics) && ok;
         }
     }
     return ok;
 }
 
-int runVariants(const Options& options, Session& session, std::ostream& out) {
+int runVariants(const VariantsOptions& options, Session& session, std::ostream& out) {
     std::vector<frontend::LoadedShader> shaders;
-    bool ok = loadAll(options, session, shaders);
-    if (ok && options.list) ok = checkVariantLimits(shaders, options, session);
+    bool ok = loadAll(options.input, session, shaders);
+    if (ok && options.list) ok = checkVariantLimits(shaders, options.maxVariants, session);
     session.printNew(DiagnosticRule::Input);
     if (!ok) return kExitFailure;
     if (options.json) {
@@ -127,11 +113,11 @@ int runVariants(const Options& options, Session& session, std::ostream& out) {
     return kExitOk;
 }
 
-int runLock(const Options& options, Session& session, std::ostream& out) {
+int runLock(const LockOptions& options, Session& session, std::ostream& out) {
     std::vector<frontend::LoadedShader> shaders;
-    bool ok = loadAll(options, session, shaders);
+    bool ok = loadAll(options.input, session, shaders);
     // A lock records what builds: a pass that cannot be built does not belong in one.
-    if (ok) ok = checkVariantLimits(shaders, options, session);
+    if (ok) ok = checkVariantLimits(shaders, options.maxVariants, session);
     session.printNew(DiagnosticRule::Input);
     if (!ok) return kExitFailure;
     std::string lockDir = std::filesystem::path(options.lockPath).parent_path().string();
@@ -159,11 +145,11 @@ std::optional<LockFile> readLock(const std::string& path, Session& session) {
     return std::move(lock).value();
 }
 
-int runCheck(const Options& options, Session& session, std::ostream& out) {
+int runCheck(const CheckOptions& options, Session& session, std::ostream& out) {
     std::optional<LockFile> lock = readLock(options.lockPath, session);
     if (!lock) return kExitUsage;
     std::vector<frontend::LoadedShader> shaders;
-    if (!loadAll(options, session, shaders)) {
+    if (!loadAll(options.input, session, shaders)) {
         session.printNew(DiagnosticRule::Input);
         return kExitUsage;
     }
@@ -231,63 +217,43 @@ std::function<void(size_t, size_t)> progressPrinter(std::ostream& err) {
     };
 }
 
-int runBuild(const Options& options, Session& session, std::ostream& out, std::ostream& err) {
-    auto start = std::chrono::steady_clock::now();
-    std::vector<frontend::LoadedShader> shaders;
-    if (!loadAll(options, session, shaders)) {
-        session.printNew(DiagnosticRule::Input);
-        return kExitFailure;
-    }
-    session.printNew(DiagnosticRule::Input);  // warnings
-    Result<std::shared_ptr<cache::CacheChain>> cacheLevels = openCacheLevels(options);
-    if (!cacheLevels) {
-        session.output.error(cacheLevels.error().detail);
-        return kExitUsage;
-    }
-    driver::BuildOptions buildOptions;
-    buildOptions.cache = *cacheLevels;
-    buildOptions.optimization = *driver::parseOptimizationLevel(options.optimization);
-    buildOptions.jobs = options.jobs;
-    buildOptions.keepGoing = options.keepGoing;
-    buildOptions.maxVariantsPerPass = options.maxVariants;
-    buildOptions.debugNames = options.debugNames;
-    if (!session.output.isDocument()) buildOptions.progress = progressPrinter(err);
-    if (!options.shard.empty()) buildOptions.shard = *driver::parseShardSpec(options.shard);
-    buildOptions.sourcePaths = sourcePathMap(options);
-    auto build =
-        driver::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);
-    session.printNew(DiagnosticRule::Compile);
-    if (!build) {
-        session.output.summary("varc build: failed; " + options.outputPath + " was not written");
-        return kExitFailure;
-    }
-    PackSizes sizes = measureSpirv(*build);
+// The pack of a finished build, assembled (nullopt after the errors are reported). A shard's
+// partial pack records which shard it is and the compression level every part must share.
+std::optional<pack::PackContents> assembleBuiltPack(
+    const BuildCommandOptions& options, const driver::BuildOptions& buildOptions,
+    const std::vector<frontend::LoadedShader>& shaders, const driver::BuildOutput& build,
+    Session& session) {
     std::optional<pack::PackContents> contents;
-    if (driver::checkStageInterfaces(shaders, *build, session.diagnostics)) {
+    if (driver::checkStageInterfaces(shaders, build, session.diagnostics)) {
         // -g changes the SPIR-V, so it is part of what parts of one sharded build must share.
-        std::string fingerprint =
-            "optimization=" + options.optimization + (options.debugNames ? " -g" : "");
-        contents = driver::assemblePack(shaders, *build, session.sourceMap,
-                                        buildOptions.sourcePaths, fingerprint, session.diagnostics);
+        std::string fingerprint = "optimization=" + optimizationFlag(options.compile.optimization) +
+                                  (options.compile.debugNames ? " -g" : "");
+        contents = driver::assemblePack(shaders, build, session.sourceMap, buildOptions.sourcePaths,
+                                        fingerprint, session.diagnostics);
     }
     if (contents && !buildOptions.shard.whole()) {
         contents->toolchain.push_back(
             {std::string(pack::kShardTool),
              buildOptions.shard.text() + " level=" + std::to_string(options.compressionLevel)});
     }
+    session.printNew(DiagnosticRule::Compile);  // errors, or warnings
     if (!contents) {
-        session.printNew(DiagnosticRule::Compile);
         session.output.summary("varc build: failed; " + options.outputPath + " was not written");
-        return kExitFailure;
     }
-    session.printNew(DiagnosticRule::Compile);  // warnings
+    return contents;
+}
+
+// Writes the pack and the --depfile; false after reporting why not.
+bool writeBuildFiles(const BuildCommandOptions& options, const pack::PackContents& contents,
+                     const std::vector<frontend::LoadedShader>& shaders, PackSizes& sizes,
+                     Session& session) {
     packwriter::PackWriteStats stats;
     packwriter::PackWriteOptions writeOptions;
     writeOptions.compressionLevel = options.compressionLevel;
-    Status written = packwriter::writePack(options.outputPath, *contents, writeOptions, &stats);
+    Status written = packwriter::writePack(options.outputPath, contents, writeOptions, &stats);
     if (!written) {
         session.output.error(written.error().detail);
-        return kExitFailure;
+        return false;
     }
     sizes.packBytes = stats.packBytes;
     if (!options.depfilePath.empty()) {
@@ -296,31 +262,63 @@ int runBuild(const Options& options, Session& session, std::ostream& out, std::o
             driver::makeDepfile(options.outputPath, buildDependencies(shaders)));
         if (!depfile) {
             session.output.error(depfile.error().detail);
-            return kExitFailure;
+            return false;
         }
+    }
+    return true;
+}
+
+// The summary of a written build: JSON, or the report for people.
+void printBuildSummary(const BuildCommandOptions& options, const driver::ShardSpec& shard,
+                       const std::vector<frontend::LoadedShader>& shaders,
+                       const driver::BuildOutput& build, const PackSizes& sizes, double seconds,
+                       std::ostream& out) {
+    if (options.json) {
+        nlohmann::ordered_json report = buildReportJson(shaders, build, sizes, seconds);
+        if (!shard.whole()) {
+            report["shard"] = {{"shard", shard.text()},
+                               {"compiled", build.compiledSources},
+                               {"items", build.items - build.otherShardItems},
+                               {"left_to_other_shards", build.otherShardItems}};
+        }
+        out << report.dump() << "\n";
+        return;
+    }
+    printBuildReport(shaders, build, sizes, seconds, out);
+    if (!shard.whole()) {
+        out << "Shard " << shard.text() << ": built " << build.items - build.otherShardItems
+            << " of " << build.items << " variant stages (" << build.compiledSources
+            << " distinct programs); the partial pack holds placeholders for the others "
+            << "(join the parts with `varc merge`)\n";
+    }
+    out << "wrote " << options.outputPath << "\n";
+}
+
+int runBuild(const BuildCommandOptions& options, Session& session, std::ostream& out,
+             std::ostream& err) {
+    auto start = std::chrono::steady_clock::now();
+    std::vector<frontend::LoadedShader> shaders;
+    bool loaded = loadAll(options.input, session, shaders);
+    session.printNew(DiagnosticRule::Input);  // errors, or warnings
+    if (!loaded) return kExitFailure;
+    driver::BuildOptions buildOptions = toBuildOptions(options.compile, options.input);
+    if (!session.output.isDocument()) buildOptions.progress = progressPrinter(err);
+    auto build =
+        driver::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);
+    session.printNew(DiagnosticRule::Compile);
+    if (!build) {
+        session.output.summary("varc build: failed; " + options.outputPath + " was not written");
+        return kExitFailure;
+    }
+    PackSizes sizes = measureSpirv(*build);
+    std::optional<pack::PackContents> contents =
+        assembleBuiltPack(options, buildOptions, shaders, *build, session);
+    if (!contents || !writeBuildFiles(options, *contents, shaders, sizes, session)) {
+        return kExitFailure;
     }
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (options.json) {
-        nlohmann::ordered_json report = buildReportJson(shaders, *build, sizes, seconds);
-        if (!buildOptions.shard.whole()) {
-            report["shard"] = {{"shard", buildOptions.shard.text()},
-                               {"compiled", build->compiledSources},
-                               {"items", build->items - build->otherShardItems},
-                               {"left_to_other_shards", build->otherShardItems}};
-        }
-        out << report.dump() << "\n";
-    } else {
-        printBuildReport(shaders, *build, sizes, seconds, out);
-        if (!buildOptions.shard.whole()) {
-            out << "Shard " << buildOptions.shard.text() << ": built "
-                << build->items - build->otherShardItems << " of " << build->items
-                << " variant stages (" << build->compiledSources
-                << " distinct programs); the partial pack holds placeholders for the others "
-                << "(join the parts with `varc merge`)\n";
-        }
-        out << "wrote " << options.outputPath << "\n";
-    }
+    printBuildSummary(options, buildOptions.shard, shaders, *build, sizes, seconds, out);
     return kExitOk;
 }
 
@@ -356,29 +354,27 @@ std::optional<size_t> explainedVariant(const frontend::LoadedPass& pass,
     return variant;
 }
 
-int runExplain(const Options& options, Session& session, std::ostream& out) {
+int runExplain(const ExplainOptions& options, Session& session, std::ostream& out) {
     std::vector<frontend::LoadedShader> shaders;
-    bool loaded = loadAll(options, session, shaders);
+    bool loaded = loadAll(options.input, session, shaders);
     session.printNew(DiagnosticRule::Input);
     if (!loaded) return kExitFailure;
     auto shader = std::find_if(shaders.begin(), shaders.end(), [&](const auto& candidate) {
-        return candidate.ast.name == options.lookupShader;
+        return candidate.ast.name == options.shader;
     });
     if (shader == shaders.end()) {
-        session.output.error("no shader named \"" + options.lookupShader + "\" in the inputs");
+        session.output.error("no shader named \"" + options.shader + "\" in the inputs");
         return kExitFailure;
     }
-    int passPosition = findLoadedPass(*shader, options.lookupPass);
+    int passPosition = findLoadedPass(*shader, options.pass);
     if (passPosition < 0) {
-        session.output.error("shader \"" + options.lookupShader + "\" has no pass '" +
-                             options.lookupPass + "' with a program");
+        session.output.error("shader \"" + options.shader + "\" has no pass '" + options.pass +
+                             "' with a program");
         return kExitFailure;
     }
     std::vector<frontend::LoadedShader> one;
     one.push_back(std::move(*shader));  // LoadedPass::pass stays valid: the AST moves whole
-    driver::BuildOptions buildOptions;
-    buildOptions.jobs = options.jobs;
-    buildOptions.maxVariantsPerPass = options.maxVariants;
+    driver::BuildOptions buildOptions = toBuildOptions(options.compile, options.input);
     buildOptions.keepPrunedSources = true;
     auto build = driver::buildPrograms(one, session.sourceMap, buildOptions, session.diagnostics);
     session.printNew(DiagnosticRule::Compile);
@@ -387,18 +383,18 @@ int runExplain(const Options& options, Session& session, std::ostream& out) {
         return p.passIndex == static_cast<size_t>(passPosition);
     });
     if (compiled == build->passes.end()) {
-        session.output.error("pass '" + options.lookupPass + "' is not built for Vulkan");
+        session.output.error("pass '" + options.pass + "' is not built for Vulkan");
         return kExitFailure;
     }
     const frontend::LoadedPass& pass = one.front().passes[static_cast<size_t>(passPosition)];
     ExplainRequest request{&one.front(), &pass, &*compiled, &*build, std::nullopt, std::nullopt};
-    if (options.explainVariant) {
-        request.variant = explainedVariant(pass, *compiled, *options.explainVariant, session);
+    if (options.variant) {
+        request.variant = explainedVariant(pass, *compiled, *options.variant, session);
         if (!request.variant) return kExitFailure;
     }
-    if (options.explainDiff.size() == 2) {
-        auto a = explainedVariant(pass, *compiled, options.explainDiff[0], session);
-        auto b = explainedVariant(pass, *compiled, options.explainDiff[1], session);
+    if (options.diff) {
+        auto a = explainedVariant(pass, *compiled, options.diff->first, session);
+        auto b = explainedVariant(pass, *compiled, options.diff->second, session);
         if (!a || !b) return kExitFailure;
         request.diff = std::make_pair(*a, *b);
     }
@@ -411,50 +407,50 @@ int runExplain(const Options& options, Session& session, std::ostream& out) {
     return kExitOk;
 }
 
+// Runs a command that reads shaders, then writes the JSON or SARIF document of its diagnostics,
+// whatever path it took.
+template <typename T, typename Run>
+int runShaderCommand(const T& options, std::ostream& err, Run run) {
+    Session session(options.input.diagnosticsFormat, err);
+    int exitCode = run(options, session);
+    session.output.finish();
+    return exitCode;
+}
+
+int runCommand(const CommandOptions& command, std::ostream& out, std::ostream& err) {
+    auto withSession = [&out](auto run) {
+        return [&out, run](const auto& options, Session& session) {
+            return run(options, session, out);
+        };
+    };
+    if (auto* o = std::get_if<VariantsOptions>(&command))
+        return runShaderCommand(*o, err, withSession(runVariants));
+    if (auto* o = std::get_if<LockOptions>(&command))
+        return runShaderCommand(*o, err, withSession(runLock));
+    if (auto* o = std::get_if<CheckOptions>(&command))
+        return runShaderCommand(*o, err, withSession(runCheck));
+    if (auto* o = std::get_if<BuildCommandOptions>(&command)) {
+        return runShaderCommand(*o, err, [&](const BuildCommandOptions& options, Session& session) {
+            return runBuild(options, session, out, err);
+        });
+    }
+    if (auto* o = std::get_if<ExplainOptions>(&command))
+        return runShaderCommand(*o, err, withSession(runExplain));
+    if (auto* o = std::get_if<MergeOptions>(&command)) return runMerge(*o, out, err);
+    if (auto* o = std::get_if<InfoOptions>(&command)) return runInfo(*o, out, err);
+    if (auto* o = std::get_if<ExtractOptions>(&command)) return runExtract(*o, out, err);
+    if (auto* o = std::get_if<LookupOptions>(&command)) return runLookup(*o, out, err);
+    if (auto* o = std::get_if<RenderOptions>(&command)) return runRender(*o, out, err);
+    if (auto* o = std::get_if<ValidateOptions>(&command)) return runValidate(*o, out, err);
+    return runCache(std::get<CacheOptions>(command), out, err);
+}
+
 }  // namespace
 
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-    Options options;
-    if (auto exitCode = parseOptions(argc, argv, options, out, err)) return *exitCode;
-    Session session(options, err);
-    // The shader commands end by writing the JSON or SARIF document, whatever path they took.
-    auto shaderCommand = [&session](int exitCode) {
-        session.output.finish();
-        return exitCode;
-    };
-    switch (options.command) {
-        case Command::Variants:
-            return shaderCommand(runVariants(options, session, out));
-        case Command::Lock:
-            return shaderCommand(runLock(options, session, out));
-        case Command::Check:
-            return shaderCommand(runCheck(options, session, out));
-        case Command::Build:
-            return shaderCommand(runBuild(options, session, out, err));
-        case Command::Merge:
-            return runMerge(options, out, err);
-        case Command::Info:
-            return runInfo(options, out, err);
-        case Command::Extract:
-            return runExtract(options, out, err);
-        case Command::Lookup:
-            return runLookup(options, out, err);
-        case Command::Render:
-            return runRender(options, out, err);
-        case Command::Validate:
-            return runValidate(options, out, err);
-        case Command::CacheStats:
-            return runCacheStats(options, out, err);
-        case Command::CacheClear:
-            return runCacheClear(options, out, err);
-        case Command::Explain:
-            return shaderCommand(runExplain(options, session, out));
-        case Command::Generate:  // parseOptions wrote it
-        case Command::None:
-            break;
-    }
-    err << "varc: error: no command given\n";
-    return kExitUsage;
+    ParsedCommandLine parsed = parseCommandLine(argc, argv, out, err);
+    if (!parsed.command) return parsed.exitCode;
+    return runCommand(*parsed.command, out, err);
 }
 
 }  // namespace varc::cli

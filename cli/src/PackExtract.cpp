@@ -67,10 +67,10 @@ Status writeProgram(const reader::ProgramView& program, const std::filesystem::p
 
 }  // namespace
 
-int runExtract(const Options& options, std::ostream& out, std::ostream& err) {
+int runExtract(const ExtractOptions& options, std::ostream& out, std::ostream& err) {
     std::optional<reader::Pack> pack = openPackOrReport(options.packPath, err);
     if (!pack) return kExitUsage;
-    std::filesystem::path dir = options.outputPath;
+    std::filesystem::path dir = options.outputDir;
     std::error_code error;
     std::filesystem::create_directories(dir, error);
     if (error) {

@@ -179,7 +179,7 @@ void printInfoText(const Json& info, std::ostream& out) {
 
 }  // namespace
 
-int runInfo(const Options& options, std::ostream& out, std::ostream& err) {
+int runInfo(const InfoOptions& options, std::ostream& out, std::ostream& err) {
     std::optional<reader::Pack> pack = openPackOrReport(options.packPath, err);
     if (!pack) return kExitUsage;
     Json info = infoJson(*pack, options.packPath);

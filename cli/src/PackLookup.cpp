@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <ostream>
-#include <sstream>
 
 #include "OpenPack.h"
 #include "varc/cli/PackCommands.h"
@@ -19,13 +18,6 @@ namespace varc::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::vector<std::string> splitWords(const std::string& text) {
-    std::vector<std::string> words;
-    std::istringstream stream(text);
-    for (std::string word; stream >> word;) words.push_back(word);
-    return words;
-}
 
 bool isNumber(const std::string& text) {
     return !text.empty() &&
@@ -51,30 +43,6 @@ std::string passList(const reader::ShaderView& shader) {
         if (!pass.lightMode().empty()) text += " (" + std::string(pass.lightMode()) + ")";
     }
     return text;
-}
-
-// The light described on the command line; nullopt after printing a usage error.
-std::optional<variants::LightDescription> lightFromOptions(const Options& options,
-                                                           std::ostream& err) {
-    variants::LightDescription light;
-    auto type = variants::parseLightType(options.lookupLight);
-    if (!type) {
-        err << "varc: error: --light expects directional, point or spot, got '"
-            << options.lookupLight << "'\n";
-        return std::nullopt;
-    }
-    auto shadows = variants::parseShadowMode(options.lookupShadows);
-    if (!shadows) {
-        err << "varc: error: --shadows expects none, hard or soft, got '" << options.lookupShadows
-            << "'\n";
-        return std::nullopt;
-    }
-    light.type = *type;
-    light.shadows = *shadows;
-    light.cookie = options.lookupCookie;
-    light.vertexLightCount = options.lookupVertexLights;
-    light.hdr = options.lookupHdr;
-    return light;
 }
 
 Json programJson(const reader::ProgramView& program) {
@@ -114,41 +82,33 @@ void printVariant(const reader::VariantView& variant, const std::vector<std::str
 
 }  // namespace
 
-int runLookup(const Options& options, std::ostream& out, std::ostream& err) {
+int runLookup(const LookupOptions& options, std::ostream& out, std::ostream& err) {
     std::optional<reader::Pack> pack = openPackOrReport(options.packPath, err);
     if (!pack) return kExitUsage;
-    std::optional<reader::ShaderView> shader = pack->findShader(options.lookupShader);
+    std::optional<reader::ShaderView> shader = pack->findShader(options.shader);
     if (!shader) {
-        err << "varc: error: " << options.packPath << ": no shader named \"" << options.lookupShader
+        err << "varc: error: " << options.packPath << ": no shader named \"" << options.shader
             << "\"\n";
         return kExitFailure;
     }
-    std::optional<reader::PassView> pass = findPass(*shader, options.lookupPass);
+    std::optional<reader::PassView> pass = findPass(*shader, options.pass);
     if (!pass) {
-        err << "varc: error: shader \"" << options.lookupShader << "\" has no pass '"
-            << options.lookupPass << "'; its passes: " << passList(*shader) << "\n";
+        err << "varc: error: shader \"" << options.shader << "\" has no pass '" << options.pass
+            << "'; its passes: " << passList(*shader) << "\n";
         return kExitFailure;
     }
-    auto policy = variants::parseSelectionPolicy(options.lookupPolicy);
-    if (!policy) {
-        err << "varc: error: --policy expects exact, closest, first or strict, got '"
-            << options.lookupPolicy << "'\n";
-        return kExitUsage;
-    }
-    std::vector<std::string> keywords = splitWords(options.lookupKeywords);
+    std::vector<std::string> keywords = options.keywords;
     Result<reader::VariantView> variant = makeError(ErrorCode::Internal, "no lookup");
-    if (!options.lookupLight.empty()) {
-        std::optional<variants::LightDescription> light = lightFromOptions(options, err);
-        if (!light) return kExitUsage;
-        variant = pass->lookup(*light, *policy, pass->keyOf(keywords));
+    if (options.light) {
+        variant = pass->lookup(*options.light, options.policy, pass->keyOf(keywords));
         // Report what was asked: the light's keywords for this pass plus the material's.
         if (auto kind = variants::lightPassKindFromLightMode(pass->lightMode())) {
-            for (std::string& keyword : variants::lightKeywords(*light, *kind))
+            for (std::string& keyword : variants::lightKeywords(*options.light, *kind))
                 keywords.push_back(keyword);
             std::sort(keywords.begin(), keywords.end());
         }
     } else {
-        variant = pass->lookup(keywords, *policy);
+        variant = pass->lookup(keywords, options.policy);
     }
     if (!variant) {
         err << "varc: error: " << variant.error().detail << "\n";

@@ -10,11 +10,11 @@
 
 namespace varc::cli {
 
-int runMerge(const Options& options, std::ostream& out, std::ostream& err) {
+int runMerge(const MergeOptions& options, std::ostream& out, std::ostream& err) {
     std::vector<driver::PartialPackInput> parts;
     reader::OpenOptions openOptions;
     openOptions.acceptPartial = true;
-    for (const std::string& path : options.inputs) {
+    for (const std::string& path : options.parts) {
         Result<reader::Pack> pack = reader::Pack::open(path, openOptions);
         if (!pack) {
             err << "varc: error: " << pack.error().detail << "\n";
@@ -47,7 +47,7 @@ int runMerge(const Options& options, std::ostream& out, std::ostream& err) {
         err << "varc: error: " << written.error().detail << "\n";
         return kExitFailure;
     }
-    out << "Merged " << options.inputs.size() << " parts: " << stats.programs << " programs, "
+    out << "Merged " << options.parts.size() << " parts: " << stats.programs << " programs, "
         << stats.packBytes << " bytes\nwrote " << options.outputPath << "\n";
     return kExitOk;
 }

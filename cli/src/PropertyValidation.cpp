@@ -55,8 +55,8 @@ void printFailures(const properties::ShaderReport& report, std::ostream& err) {
 }  // namespace
 
 int runValidateProperties(const std::vector<reader::Pack>& packs, vulkan::VulkanContext& context,
-                          render::Renderer& renderer, const Options& options, std::ostream& out,
-                          std::ostream& err, const std::set<std::string>* only,
+                          render::Renderer& renderer, const ValidateOptions& options,
+                          std::ostream& out, std::ostream& err, const std::set<std::string>* only,
                           std::vector<properties::ShaderReport>* reports) {
     std::vector<const reader::Pack*> pointers;
     for (const reader::Pack& pack : packs) pointers.push_back(&pack);
@@ -65,7 +65,7 @@ int runValidateProperties(const std::vector<reader::Pack>& packs, vulkan::Vulkan
         if (!only || only->count(std::string(shader.name()))) shaders.push_back(shader);
     if (only && shaders.empty()) return kExitOk;
     properties::PropertyOptions propertyOptions;
-    if (!options.outputPath.empty()) propertyOptions.outDir = options.outputPath;
+    propertyOptions.outDir = options.outputDir;
     properties::PropertyRunner runner(renderer, propertyOptions);
     printHeader(out);
     size_t failed = 0;

@@ -24,8 +24,9 @@ namespace varc::cli {
 // shaders named there (plain `varc validate`: materials without a reference model), and none
 // lit is no error. With |reports|, each shader's report is appended there (for --report).
 int runValidateProperties(const std::vector<reader::Pack>& packs, vulkan::VulkanContext& context,
-                          render::Renderer& renderer, const Options& options, std::ostream& out,
-                          std::ostream& err, const std::set<std::string>* only = nullptr,
+                          render::Renderer& renderer, const ValidateOptions& options,
+                          std::ostream& out, std::ostream& err,
+                          const std::set<std::string>* only = nullptr,
                           std::vector<properties::ShaderReport>* reports = nullptr);
 
 }  // namespace varc::cli

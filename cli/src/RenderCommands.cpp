@@ -165,7 +165,7 @@ std::optional<vulkan::VulkanContext> makeContext(std::ostream& err) {
 
 // The --pipeline-cache file, when asked for; a file for another device or driver is reported
 // and replaced, never an error.
-std::optional<render::PipelineCacheFile> openPipelineCache(const Options& options,
+std::optional<render::PipelineCacheFile> openPipelineCache(const RenderSessionOptions& options,
                                                            vulkan::VulkanContext& context,
                                                            std::ostream& err) {
     if (options.pipelineCachePath.empty()) return std::nullopt;
@@ -198,8 +198,8 @@ struct RenderSession {
 
 // Opens the packs, the Vulkan context, the --pipeline-cache file and the renderer; nullptr after
 // printing why, with |exitCode| set (usage errors for packs and the device, failure otherwise).
-std::unique_ptr<RenderSession> openRenderSession(const Options& options, std::ostream& err,
-                                                 int& exitCode) {
+std::unique_ptr<RenderSession> openRenderSession(const RenderSessionOptions& options,
+                                                 std::ostream& err, int& exitCode) {
     auto session = std::make_unique<RenderSession>();
     exitCode = kExitUsage;
     auto packs = openPacks(options.packPaths, err);
@@ -235,9 +235,9 @@ size_t distinctCount(const std::vector<std::string>& names) {
 
 }  // namespace
 
-int runRender(const Options& options, std::ostream& out, std::ostream& err) {
+int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err) {
     int exitCode = kExitOk;
-    std::unique_ptr<RenderSession> session = openRenderSession(options, err, exitCode);
+    std::unique_ptr<RenderSession> session = openRenderSession(options.session, err, exitCode);
     if (!session) return exitCode;
     bool compare = !options.referencePath.empty() || !options.diffPath.empty();
     SceneOutcome outcome = renderScene(*session->renderer, options.scenePath, compare,
@@ -347,7 +347,7 @@ std::vector<std::string> findScenes(const std::string& scenesDir, std::ostream& 
 }
 
 // Writes |report| to --report; false after printing why it could not be written.
-bool writeReport(const ValidationReport& report, const Options& options,
+bool writeReport(const ValidationReport& report, const ValidateOptions& options,
                  const std::set<std::string>& compared, std::ostream& out, std::ostream& err) {
     if (Status written = report.write(options.reportPath, compared); !written) {
         err << "varc: error: report: " << written.error().detail << "\n";
@@ -358,16 +358,17 @@ bool writeReport(const ValidationReport& report, const Options& options,
 }
 
 // `varc validate --properties [--report PAGE]`: the property checks of every lit shader.
-int runValidatePropertiesOnly(const Options& options, std::ostream& out, std::ostream& err) {
+int runValidatePropertiesOnly(const ValidateOptions& options, std::ostream& out,
+                              std::ostream& err) {
     int exitCode = kExitOk;
-    std::unique_ptr<RenderSession> session = openRenderSession(options, err, exitCode);
+    std::unique_ptr<RenderSession> session = openRenderSession(options.session, err, exitCode);
     if (!session) return exitCode;
     std::vector<properties::ShaderReport> reports;
     exitCode = runValidateProperties(session->packs, *session->context, *session->renderer, options,
                                      out, err, nullptr, &reports);
     savePipelineCache(session->cache, err);
     if (!options.reportPath.empty()) {
-        ValidationReport report(session->packs, options.packPaths);
+        ValidationReport report(session->packs, options.session.packPaths);
         report.addProperties(std::move(reports));
         if (!writeReport(report, options, {}, out, err)) return kExitFailure;
     }
@@ -376,10 +377,10 @@ int runValidatePropertiesOnly(const Options& options, std::ostream& out, std::os
 
 }  // namespace
 
-int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
+int runValidate(const ValidateOptions& options, std::ostream& out, std::ostream& err) {
     if (options.properties) return runValidatePropertiesOnly(options, out, err);
-    std::string scenesDir = options.scenesDir.empty() ? "tests/scenes/forward" : options.scenesDir;
-    std::string outDir = options.outputPath.empty() ? "validate-out" : options.outputPath;
+    const std::string& scenesDir = options.scenesDir;
+    const std::string& outDir = options.outputDir;
     std::vector<std::string> scenes = findScenes(scenesDir, err);
     if (scenes.empty()) return kExitUsage;
     std::error_code error;
@@ -389,10 +390,10 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
         return kExitUsage;
     }
     int exitCode = kExitOk;
-    std::unique_ptr<RenderSession> session = openRenderSession(options, err, exitCode);
+    std::unique_ptr<RenderSession> session = openRenderSession(options.session, err, exitCode);
     if (!session) return exitCode;
     std::optional<ValidationReport> report;
-    if (!options.reportPath.empty()) report.emplace(session->packs, options.packPaths);
+    if (!options.reportPath.empty()) report.emplace(session->packs, options.session.packPaths);
     char line[256];
     std::snprintf(line, sizeof line, "%-28s %6s %9s %9s %10s %7s  %s\n", "scene", "draws",
                   "variants", "max LSB", "mean LSB", "time", "result");
@@ -412,7 +413,8 @@ int runValidate(const Options& options, std::ostream& out, std::ostream& err) {
     if (totals.unreferenced)
         out << " (" << totals.unreferenced << " more rendered with no reference model)";
     out << "; PNGs in " << outDir << "\n";
-    printValidationCoverage(session->packs, options.packPaths, totals.compared, options.list, out);
+    printValidationCoverage(session->packs, options.session.packPaths, totals.compared,
+                            options.listUncovered, out);
     if (!totals.unreferencedShaders.empty()) {
         out << "materials without a reference model: their shaders' properties "
                "(docs/PROPERTIES.md)\n";

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <charconv>
 #include <optional>
+#include <utility>
 
 namespace varc::cache {
 
@@ -128,6 +129,13 @@ Result<CacheSpec> parseCacheSpec(std::string_view url) {
         if (std::string reason = applyAttribute(parts[i], spec); !reason.empty())
             return fail(reason);
     }
+    return spec;
+}
+
+CacheSpec directoryCacheSpec(std::string directory) {
+    CacheSpec spec;
+    spec.url = "file:" + directory;
+    spec.directory = std::move(directory);
     return spec;
 }
 

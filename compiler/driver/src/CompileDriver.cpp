@@ -73,11 +73,7 @@ public:
         : mSourceMap(sourceMap),
           mOptions(options),
           mThreads(options.jobs ? options.jobs : defaultThreadCount()) {
-        if (options.cache) {
-            mCache = std::make_unique<ProgramCache>(options.cache);
-        } else if (!options.cacheDirectory.empty()) {
-            mCache = std::make_unique<ProgramCache>(options.cacheDirectory);
-        }
+        if (options.cache) mCache = std::make_unique<ProgramCache>(options.cache);
     }
 
     bool plan(const std::vector<frontend::LoadedShader>& shaders, DiagnosticSink& sink);

@@ -8,7 +8,6 @@
 #include <cerrno>
 #include <cstring>
 
-#include "varc/cache/DirectoryStorage.h"
 #include "varc/core/FileRead.h"
 
 namespace varc::driver {
@@ -132,13 +131,6 @@ std::string ProgramCacheKey::hex() const {
 
 namespace {
 
-std::shared_ptr<cache::CacheChain> directoryChain(const std::string& directory) {
-    std::vector<std::unique_ptr<cache::CacheStorage>> levels;
-    levels.push_back(std::make_unique<cache::DirectoryStorage>(directory, "file:" + directory,
-                                                               /*readOnly=*/false));
-    return std::make_shared<cache::CacheChain>(std::move(levels));
-}
-
 // The payload of a sound entry for |key| (see the layout above), or nullopt.
 std::optional<std::string_view> payloadOf(std::string_view bytes, const ProgramCacheKey& key,
                                           std::string_view magic) {
@@ -193,11 +185,6 @@ std::optional<CachedProgram> parseProgram(std::string_view payload) {
 
 }  // namespace
 
-ProgramCache::ProgramCache(std::string directory)
-    : mDirectory(std::move(directory)),
-      mChain(directoryChain(mDirectory)),
-      mToolchain(executableHash()) {}
-
 ProgramCache::ProgramCache(std::shared_ptr<cache::CacheChain> chain)
     : mChain(std::move(chain)), mToolchain(executableHash()) {}
 
@@ -233,11 +220,6 @@ ProgramCacheKey ProgramCache::sourceKeyOf(const SourceCacheInput& input) const {
 
 std::string ProgramCache::entryName(const ProgramCacheKey& key, std::string_view extension) {
     return key.hex() + std::string(extension);
-}
-
-std::string ProgramCache::pathOf(const ProgramCacheKey& key, std::string_view extension) const {
-    std::string hex = key.hex();
-    return mDirectory + "/" + hex.substr(0, 2) + "/" + entryName(key, extension);
 }
 
 std::vector<std::optional<std::string>> ProgramCache::loadPayloads(

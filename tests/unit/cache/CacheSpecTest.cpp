@@ -87,6 +87,21 @@ TEST(CacheSpecTest, BadUrlsAreErrorsThatQuoteThem) {
     }
 }
 
+TEST(CacheSpecTest, AFolderLevelIsWhatItsFileUrlParsesTo) {
+    CacheSpec built = directoryCacheSpec("/var/cache/varc");
+    CacheSpec parsed = *parseCacheSpec("file:/var/cache/varc");
+    EXPECT_EQ(built.kind, parsed.kind);
+    EXPECT_EQ(built.url, parsed.url);
+    EXPECT_EQ(built.directory, parsed.directory);
+    EXPECT_EQ(built.readOnly, parsed.readOnly);
+    // The folder's name is taken whole: '|' is part of it, not an attribute.
+    CacheSpec piped = directoryCacheSpec("odd|read-only");
+    EXPECT_EQ(piped.kind, CacheSpec::Kind::Directory);
+    EXPECT_EQ(piped.directory, "odd|read-only");
+    EXPECT_FALSE(piped.readOnly);
+    EXPECT_EQ(piped.url, "file:odd|read-only");
+}
+
 TEST(CacheSpecTest, TheEnvironmentListSplitsOnSpaces) {
     EXPECT_EQ(splitCacheList(" file:/a  redis://h:1/2 "),
               (std::vector<std::string>{"file:/a", "redis://h:1/2"}));

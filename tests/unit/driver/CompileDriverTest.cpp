@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <memory>
 #include <set>
 #include <string_view>
 
+#include "varc/cache/CacheSpec.h"
 #include "varc/driver/CompileDriver.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/FileSystem.h"
@@ -375,9 +377,11 @@ TEST_F(CompileDriverTest, APreprocessingErrorSharedByVariantsIsReportedOnce) {
 
 TEST_F(CompileDriverTest, ASecondBuildTakesEveryProgramFromTheCacheWithIdenticalResults) {
     BuildOptions options;
-    options.cacheDirectory =
+    const std::string cacheDirectory =
         ::testing::TempDir() + "varc-driver-cache-" + std::to_string(::getpid());
-    std::filesystem::remove_all(options.cacheDirectory);
+    std::filesystem::remove_all(cacheDirectory);
+    options.cache = std::make_shared<cache::CacheChain>(
+        cache::CacheChain::open({cache::directoryCacheSpec(cacheDirectory)}));
     auto cold = build(kTwoKeywordShader, options);
     ASSERT_TRUE(cold);
     EXPECT_EQ(cold->cachedSources, 0u);
@@ -405,7 +409,7 @@ TEST_F(CompileDriverTest, ASecondBuildTakesEveryProgramFromTheCacheWithIdentical
     auto other = build(kTwoKeywordShader, options);
     ASSERT_TRUE(other);
     EXPECT_EQ(other->cachedSources, 0u);
-    std::filesystem::remove_all(options.cacheDirectory);
+    std::filesystem::remove_all(cacheDirectory);
 }
 
 TEST_F(CompileDriverTest, ShippedSpirvHasNoNamesUnlessAskedButReflectionKeepsThem) {

@@ -8,7 +8,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
+#include <string_view>
 
+#include "varc/cache/CacheChain.h"
+#include "varc/cache/CacheSpec.h"
 #include "varc/driver/ProgramCache.h"
 
 namespace varc::driver {
@@ -25,6 +29,16 @@ protected:
         fs::remove_all(mDir);
     }
     void TearDown() override { fs::remove_all(mDir); }
+
+    // A cache whose one level is the folder mDir, as `--cache-dir` makes it.
+    ProgramCache makeCache() const {
+        return ProgramCache(std::make_shared<cache::CacheChain>(
+            cache::CacheChain::open({cache::directoryCacheSpec(mDir.string())})));
+    }
+    // Where the folder level keeps the entry for |key|: mDir/<2 hex>/<entry name>.
+    std::string pathOf(const ProgramCacheKey& key, std::string_view extension = ".program") const {
+        return (mDir / key.hex().substr(0, 2) / ProgramCache::entryName(key, extension)).string();
+    }
 
     static CachedProgram sample() {
         return {{0x07230203u, 0x00010000u, 0u, 42u, 0u, 7u, 8u, 9u},
@@ -50,7 +64,7 @@ ProgramCacheInput input(std::string_view text) {
 }
 
 TEST_F(ProgramCacheTest, AStoredEntryLoadsBackWhole) {
-    ProgramCache cache(mDir.string());
+    ProgramCache cache = makeCache();
     ProgramCacheKey key = cache.keyOf(input("float4 frag() : SV_Target { return 1; }"));
     EXPECT_FALSE(cache.load(key));
     ASSERT_TRUE(cache.store(key, sample()).ok());
@@ -60,12 +74,11 @@ TEST_F(ProgramCacheTest, AStoredEntryLoadsBackWhole) {
     EXPECT_EQ(loaded->stripped, sample().stripped);
     EXPECT_EQ(loaded->semantics, sample().semantics);
     EXPECT_EQ(loaded->log, sample().log);
-    EXPECT_EQ(fs::path(cache.pathOf(key)).parent_path().filename().string(),
-              key.hex().substr(0, 2));
+    EXPECT_EQ(fs::path(pathOf(key)).parent_path().filename().string(), key.hex().substr(0, 2));
 }
 
 TEST_F(ProgramCacheTest, EveryInputChangesTheKey) {
-    ProgramCache cache(mDir.string());
+    ProgramCache cache = makeCache();
     ProgramCacheInput base = input("text");
     std::vector<ProgramCacheInput> changed(5, base);
     changed[0].optimization = OptimizationLevel::None;
@@ -77,14 +90,14 @@ TEST_F(ProgramCacheTest, EveryInputChangesTheKey) {
     for (const ProgramCacheInput& other : changed) keys.push_back(cache.keyOf(other).hex());
     std::sort(keys.begin(), keys.end());
     EXPECT_EQ(std::unique(keys.begin(), keys.end()), keys.end());
-    EXPECT_EQ(cache.keyOf(base), ProgramCache(mDir.string()).keyOf(base)) << "keys must be stable";
+    EXPECT_EQ(cache.keyOf(base), makeCache().keyOf(base)) << "keys must be stable";
 }
 
 TEST_F(ProgramCacheTest, EveryTruncationAndEveryByteFlipIsRejected) {
-    ProgramCache cache(mDir.string());
+    ProgramCache cache = makeCache();
     ProgramCacheKey key = cache.keyOf(input("x"));
     ASSERT_TRUE(cache.store(key, sample()).ok());
-    const std::string path = cache.pathOf(key);
+    const std::string path = pathOf(key);
     const std::string good = readAll(path);
     for (size_t size = 0; size < good.size(); ++size) {
         writeAll(path, good.substr(0, size));
@@ -101,7 +114,7 @@ TEST_F(ProgramCacheTest, EveryTruncationAndEveryByteFlipIsRejected) {
 }
 
 TEST_F(ProgramCacheTest, PrunedSourcesRoundTripAndDamageIsRejected) {
-    ProgramCache cache(mDir.string());
+    ProgramCache cache = makeCache();
     SourceCacheInput input{ProgramCache::hashText("pass text"),
                            shaderlab::ProgramLanguage::Cg,
                            Stage::Fragment,
@@ -115,7 +128,7 @@ TEST_F(ProgramCacheTest, PrunedSourcesRoundTripAndDamageIsRejected) {
     EXPECT_EQ(cache.loadSource(key), text);
     // A source and a program never answer for each other, even under the same key.
     EXPECT_FALSE(cache.load(key));
-    const std::string path = cache.pathOf(key, ".source");
+    const std::string path = pathOf(key, ".source");
     const std::string good = readAll(path);
     for (size_t at = 0; at < good.size(); at += 7) {
         std::string bad = good;
@@ -139,18 +152,18 @@ TEST_F(ProgramCacheTest, PrunedSourcesRoundTripAndDamageIsRejected) {
 }
 
 TEST_F(ProgramCacheTest, AnEntryCopiedToAnotherKeyIsNotTrusted) {
-    ProgramCache cache(mDir.string());
+    ProgramCache cache = makeCache();
     ProgramCacheKey one = cache.keyOf(input("one")), two = cache.keyOf(input("two"));
     ASSERT_TRUE(cache.store(one, sample()).ok());
-    fs::create_directories(fs::path(cache.pathOf(two)).parent_path());
-    fs::copy_file(cache.pathOf(one), cache.pathOf(two));
+    fs::create_directories(fs::path(pathOf(two)).parent_path());
+    fs::copy_file(pathOf(one), pathOf(two));
     EXPECT_FALSE(cache.load(two));
 }
 
 TEST_F(ProgramCacheTest, AnUnwritableFolderIsAnErrorNamingThePath) {
     fs::create_directories(mDir.parent_path());
     writeAll(mDir.string(), "a file where the cache folder should be");
-    ProgramCache cache(mDir.string());
+    ProgramCache cache = makeCache();
     ProgramCacheKey key = cache.keyOf(input("x"));
     Status stored = cache.store(key, sample());
     ASSERT_FALSE(stored.ok());

@@ -5,9 +5,9 @@
 
 #include <iosfwd>
 #include <memory>
+#include <vector>
 
 #include "varc/cli/Options.h"
-#include "varc/core/Result.h"
 
 namespace varc::cache {
 class CacheChain;
@@ -15,15 +15,13 @@ class CacheChain;
 
 namespace varc::cli {
 
-// The cache levels in order: --cache-dir DIR first (as file:DIR), then every --cache URL (or
-// VARC_CACHE's); nullptr when none is named. A malformed URL is an error quoting it.
-Result<std::shared_ptr<cache::CacheChain>> openCacheLevels(const Options& options);
+// The chain of |levels| in order (the parser already checked them; nothing connects yet);
+// nullptr when there are none.
+std::shared_ptr<cache::CacheChain> openCacheLevels(const std::vector<cache::CacheSpec>& levels);
 
 // `varc cache stats`: per level "URL: N entries, B KiB" (--json: [{"url","entries","bytes"}]).
-// Exit 1 when a level cannot be read (the others are still listed), 2 without a level.
-int runCacheStats(const Options& options, std::ostream& out, std::ostream& err);
-
 // `varc cache clear`: removes every entry varc stored in each level, and nothing else.
-int runCacheClear(const Options& options, std::ostream& out, std::ostream& err);
+// Exit 1 when a level cannot be read or cleared (the others are still done), 2 without a level.
+int runCache(const CacheOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace varc::cli

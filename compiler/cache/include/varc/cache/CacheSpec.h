@@ -37,6 +37,10 @@ struct CacheSpec {
 // parseCacheSpec("redis://h:99999") -> "cache URL 'redis://h:99999': port 99999 is not 1-65535".
 Result<CacheSpec> parseCacheSpec(std::string_view url);
 
+// The local folder level `--cache-dir DIR` names: what parseCacheSpec("file:DIR") gives, built
+// directly, so DIR is taken whole (a '|' in it is part of the folder's name, not an attribute).
+CacheSpec directoryCacheSpec(std::string directory);
+
 // Splits VARC_CACHE's value into URLs (separated by spaces, as ccache's remote_storage).
 std::vector<std::string> splitCacheList(std::string_view list);
 

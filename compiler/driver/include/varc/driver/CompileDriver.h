@@ -35,17 +35,16 @@ struct BuildOptions {
     // variants differing only in them share one preprocessing. Off only to check that it
     // changes no program.
     bool shareUnobservedDefines = true;
-    // A ProgramCache folder: programs found there are not compiled again, programs compiled are
-    // stored there. "" = no cache.
-    std::string cacheDirectory;
     // Preprocess, prune and compile only this shard's share of the variants (ShardPlan.h: units
     // of whole variants, chosen before preprocessing); the other variants' stages name
     // placeholders (varc/pack/PartialPack.h) for `varc merge` to fill from the other parts.
     ShardSpec shard;
     // How the pack records source paths (relative to the project root, prefix maps).
     includes::SourcePathMap sourcePaths;
-    // The cache levels (`--cache`): used instead of cacheDirectory when set. The caller keeps a
-    // reference to read the levels' statistics and warnings after the build.
+    // The program cache's levels (`--cache-dir`, `--cache`; a folder alone is
+    // cache::CacheChain::open({cache::directoryCacheSpec(DIR)})): programs found there are not
+    // compiled again, programs compiled are stored there. nullptr = no cache. BuildOutput reports
+    // the levels' statistics; the driver adds their warnings to the diagnostics.
     std::shared_ptr<cache::CacheChain> cache;
     // A pass with more variants is an error before anything is enumerated (VariantLimit.h).
     uint64_t maxVariantsPerPass = frontend::kDefaultMaxVariantsPerPass;

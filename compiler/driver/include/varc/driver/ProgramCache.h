@@ -71,9 +71,9 @@ struct SourceCacheInput {
 
 class ProgramCache {
 public:
-    // Uses |directory| (created on the first store) as the only level.
-    explicit ProgramCache(std::string directory);
-    // Uses the levels of |chain|, shared with whoever reads its statistics afterwards.
+    // Uses the levels of |chain| (not null), shared with whoever reads its statistics afterwards.
+    // A folder alone: CacheChain::open({cache::directoryCacheSpec(DIR)}), created on the first
+    // store, each entry at DIR/<2 hex>/<entryName>.
     explicit ProgramCache(std::shared_ptr<cache::CacheChain> chain);
 
     ProgramCacheKey keyOf(const ProgramCacheInput& input) const;
@@ -98,10 +98,6 @@ public:
 
     // An entry's name in every level: <32 hex><extension> (".program", ".source").
     static std::string entryName(const ProgramCacheKey& key, std::string_view extension);
-    // With the directory constructor, where an entry lives: <directory>/<2 hex>/<entryName>.
-    std::string pathOf(const ProgramCacheKey& key, std::string_view extension = ".program") const;
-
-    const std::string& directory() const { return mDirectory; }
     cache::CacheChain& chain() const { return *mChain; }
 
 private:
@@ -111,7 +107,6 @@ private:
     Status storePayload(const ProgramCacheKey& key, std::string_view magic,
                         std::string_view extension, std::string_view payload) const;
 
-    std::string mDirectory;  // "" unless built from a directory
     std::shared_ptr<cache::CacheChain> mChain;
     ProgramCacheKey mToolchain;  // hash of the running executable
     mutable std::mutex mPrefetchMutex;
