@@ -11,16 +11,9 @@ namespace varc::cli {
 
 namespace {
 
+// GitHub's command for |severity|: "notice" for a note, else the severity's name.
 const char* commandName(Severity severity) {
-    switch (severity) {
-        case Severity::Note:
-            return "notice";
-        case Severity::Warning:
-            return "warning";
-        case Severity::Error:
-            return "error";
-    }
-    return "error";
+    return severity == Severity::Note ? "notice" : severityName(severity);
 }
 
 // GitHub's escaping of a command's message; properties also escape ':' and ','.

@@ -6,18 +6,13 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "varc/core/KeywordNames.h"
+
 namespace varc::cli {
 
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::vector<std::string> setKeywords(const variants::KeywordSetDecl& set) {
-    std::vector<std::string> keywords;
-    for (const std::string& keyword : set.keywords)
-        keywords.push_back(keyword.empty() ? "_" : keyword);
-    return keywords;
-}
 
 Json passToJson(const LockedPass& pass) {
     Json sets = Json::array();
@@ -60,7 +55,7 @@ LockedPass makeLockedPass(const frontend::LoadedPass& pass) {
     locked.lightMode = pass.pass->lightMode();
     locked.variants = pass.space->count();
     for (const variants::KeywordSetDecl& set : pass.keywords.sets) {
-        locked.sets.push_back({set.directive, setKeywords(set)});
+        locked.sets.push_back({set.directive, displayKeywords(set.keywords)});
     }
     locked.skipped = pass.keywords.skipped;
     std::sort(locked.skipped.begin(), locked.skipped.end());

@@ -10,6 +10,7 @@
 
 #include "OpenPack.h"
 #include "varc/cli/PackCommands.h"
+#include "varc/core/HexText.h"
 #include "varc/reader/PassView.h"
 #include "varc/reader/ProgramView.h"
 #include "varc/reader/ShaderView.h"
@@ -61,12 +62,6 @@ uint64_t spirvBytes(const reader::Pack& pack) {
     uint64_t bytes = 0;
     for (size_t i = 0; i < pack.programCount(); ++i) bytes += pack.program(i).spirvByteSize();
     return bytes;
-}
-
-std::string hex64(uint64_t value) {
-    char text[19];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-    return text;
 }
 
 // |value| as the double whose shortest form equals the float's (0.1f prints as 0.1, not as

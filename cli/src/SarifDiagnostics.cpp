@@ -17,18 +17,6 @@ using Json = nlohmann::ordered_json;
 constexpr DiagnosticRule kRules[] = {DiagnosticRule::Input, DiagnosticRule::Compile,
                                      DiagnosticRule::Lock, DiagnosticRule::Tool};
 
-const char* levelName(Severity severity) {
-    switch (severity) {
-        case Severity::Note:
-            return "note";
-        case Severity::Warning:
-            return "warning";
-        case Severity::Error:
-            return "error";
-    }
-    return "error";
-}
-
 Json driver() {
     Json rules = Json::array();
     for (DiagnosticRule rule : kRules) {
@@ -62,7 +50,7 @@ Json sarifResult(const RuledDiagnostic& ruled, const includes::SourceMap& source
     while (kRules[ruleIndex] != ruled.rule) ++ruleIndex;
     Json result = {{"ruleId", ruleId(ruled.rule)},
                    {"ruleIndex", ruleIndex},
-                   {"level", levelName(diagnostic.severity)},
+                   {"level", severityName(diagnostic.severity)},
                    {"message", {{"text", diagnostic.message}}}};
     if (diagnostic.location.isKnown()) {
         result["locations"] = Json::array({sarifLocation(diagnostic.location, "", sourceMap)});

@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "varc/core/JoinWords.h"
+#include "varc/core/KeywordNames.h"
 #include "varc/core/SaturatingMath.h"
 
 namespace varc::cli {
@@ -12,13 +13,6 @@ namespace varc::cli {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
-std::vector<std::string> displayKeywords(const variants::KeywordSetDecl& set) {
-    std::vector<std::string> keywords;
-    for (const std::string& keyword : set.keywords)
-        keywords.push_back(keyword.empty() ? "_" : keyword);
-    return keywords;
-}
 
 // null for the shader's own passes; {"kind": "fallback"|"usepass", "shader": name} otherwise
 // (the JSON lists "from" for borrowed passes only).
@@ -37,7 +31,7 @@ Json passOriginJson(const shaderlab::PassOrigin& origin) {
 Json passJson(const frontend::LoadedPass& pass, bool withList) {
     Json sets = Json::array();
     for (const variants::KeywordSetDecl& set : pass.keywords.sets)
-        sets.push_back(displayKeywords(set));
+        sets.push_back(displayKeywords(set.keywords));
     Json json = {{"index", pass.index},
                  {"name", pass.pass->name},
                  {"lightmode", pass.pass->lightMode()},
@@ -85,8 +79,8 @@ void printPass(const frontend::LoadedPass& pass, const includes::SourceMap& sour
     if (full != count) out << " (of " << full << " before skip_variants and shortcut rules)";
     out << "\n";
     for (const variants::KeywordSetDecl& set : pass.keywords.sets) {
-        out << "      " << set.directive << ": " << joinWords(displayKeywords(set)) << "  ("
-            << sourceMap.format({set.location.file, set.location.line, 0}) << ")\n";
+        out << "      " << set.directive << ": " << joinWords(displayKeywords(set.keywords))
+            << "  (" << sourceMap.format({set.location.file, set.location.line, 0}) << ")\n";
     }
     if (!pass.keywords.skipped.empty()) {
         out << "      skip_variants: " << joinWords(pass.keywords.skipped) << "\n";

@@ -3,6 +3,7 @@
 #include "Directive.h"
 
 #include "varc/core/Check.h"
+#include "varc/core/Trim.h"
 
 namespace varc::includes {
 
@@ -24,12 +25,8 @@ size_t skipIdentifier(std::string_view code, size_t i) {
     return i;
 }
 
-std::string_view trim(std::string_view text) {
-    size_t begin = skipSpace(text, 0);
-    size_t end = text.size();
-    while (end > begin && isSpace(text[end - 1])) --end;
-    return text.substr(begin, end - begin);
-}
+// The blanks isSpace() accepts (no line break).
+constexpr std::string_view kBlanks = " \t\f\v\r";
 
 // The identifier at |i| after blanks, or "" when there is none.
 std::string_view identifierAt(std::string_view code, size_t i) {
@@ -107,7 +104,7 @@ void classify(Directive& directive, std::string_view keyword, std::string_view r
     using K = DirectiveKind;
     if (keyword == "pragma") {
         directive.kind = K::Pragma;
-        directive.argument = std::string(trim(rest));
+        directive.argument = std::string(trim(rest, kBlanks));
     } else if (keyword == "if") {
         directive.kind = K::If;
         directive.argument = notDefinedMacro(rest);

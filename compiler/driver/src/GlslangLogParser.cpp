@@ -6,17 +6,11 @@
 #include <charconv>
 #include <optional>
 
+#include "varc/core/Trim.h"
+
 namespace varc::driver {
 
 namespace {
-
-std::string_view trim(std::string_view text) {
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
-        text.remove_prefix(1);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-        text.remove_suffix(1);
-    return text;
-}
 
 std::optional<uint32_t> parseNumber(std::string_view text) {
     uint32_t value = 0;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 
+#include "varc/core/HexText.h"
 #include "varc/driver/ShardPlan.h"
 #include "varc/driver/StageInterfaces.h"
 #include "varc/pack/PartialPack.h"
@@ -36,12 +37,6 @@ std::optional<PartMark> takePartMark(pack::PackContents& contents) {
     int level = 0;
     if (!shard || std::sscanf(version.c_str() + space + 7, "%d", &level) != 1) return std::nullopt;
     return PartMark{*shard, level};
-}
-
-std::string hex(uint64_t value) {
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
-    return text;
 }
 
 // Equal in everything but which program a variant's stage slot names (present or not counts).
@@ -123,8 +118,8 @@ Status checkShards(std::vector<PartialPackInput>& parts, std::vector<PartMark>& 
             return makeError(ErrorCode::InvalidInput,
                              parts[i].path + ": built from other inputs or options than " +
                                  parts[0].path + " (inputs hash " +
-                                 hex(parts[i].contents.inputsHash) + " vs " +
-                                 hex(parts[0].contents.inputsHash) + ")");
+                                 hex64(parts[i].contents.inputsHash) + " vs " +
+                                 hex64(parts[0].contents.inputsHash) + ")");
         }
     }
     return Ok{};

@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "varc/core/FileRead.h"
+#include "varc/core/HexText.h"
 
 namespace varc::driver {
 
@@ -120,14 +121,7 @@ ProgramCacheKey executableHash() {
 
 }  // namespace
 
-std::string ProgramCacheKey::hex() const {
-    static const char kDigits[] = "0123456789abcdef";
-    std::string text;
-    for (uint64_t part : {high, low}) {
-        for (int shift = 60; shift >= 0; shift -= 4) text.push_back(kDigits[(part >> shift) & 0xf]);
-    }
-    return text;
-}
+std::string ProgramCacheKey::hex() const { return hex64(high) + hex64(low); }
 
 namespace {
 

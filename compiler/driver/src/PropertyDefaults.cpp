@@ -6,19 +6,13 @@
 #include <string_view>
 #include <vector>
 
+#include "varc/core/Trim.h"
+
 namespace varc::driver {
 
 namespace {
 
 using shaderlab::PropertyType;
-
-std::string_view trim(std::string_view text) {
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
-        text.remove_prefix(1);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-        text.remove_suffix(1);
-    return text;
-}
 
 bool parseNumber(std::string_view text, float& out) {
     text = trim(text);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "varc/core/Trim.h"
+
 namespace varc::frontend {
 
 namespace {
@@ -19,12 +21,8 @@ size_t skipSpaces(std::string_view text, size_t i) {
     return i;
 }
 
-std::string_view trim(std::string_view text) {
-    size_t begin = skipSpaces(text, 0);
-    size_t end = text.size();
-    while (end > begin && isSpace(text[end - 1])) --end;
-    return text.substr(begin, end - begin);
-}
+// The characters isSpace() accepts (no \v), for trim().
+constexpr std::string_view kSpaces = " \t\r\n\f";
 
 // The position of the next whole-word |word| in |text| at or after |from|, or npos.
 size_t findWord(std::string_view text, std::string_view word, size_t from) {
@@ -251,8 +249,9 @@ std::optional<std::vector<std::string>> functionParameters(std::string_view text
     size_t open = definition->first;
     std::string_view list = text.substr(open + 1, matching(text, open) - open - 1);
     std::vector<std::string> parameters;
-    if (trim(list).empty() || trim(list) == "void") return parameters;
-    for (std::string_view part : splitTopLevel(list, ',')) parameters.emplace_back(trim(part));
+    if (trim(list, kSpaces).empty() || trim(list, kSpaces) == "void") return parameters;
+    for (std::string_view part : splitTopLevel(list, ','))
+        parameters.emplace_back(trim(part, kSpaces));
     return parameters;
 }
 
@@ -265,7 +264,8 @@ std::optional<std::vector<std::string>> structMembers(std::string_view text,
     while (start < body->size()) {
         size_t end = std::min(body->find('\n', start), body->size());
         std::string_view line = body->substr(start, end - start);
-        if (trim(line).empty() || trim(line)[0] != '#') code.append(line).push_back('\n');
+        std::string_view trimmed = trim(line, kSpaces);
+        if (trimmed.empty() || trimmed[0] != '#') code.append(line).push_back('\n');
         start = end + 1;
     }
     std::vector<std::string> members;

@@ -7,42 +7,13 @@
 #include <algorithm>
 #include <array>
 
+#include "surface/CodeWriter.h"
+#include "surface/PassPlan.h"
+#include "surface/SurfaceFragmentWriter.h"
+
 namespace varc::frontend {
 
-namespace {
-
-using Alpha = shaderlab::SurfaceOptions::Alpha;
-
-// What one generated pass needs, worked out once from the program, its facts and the pass.
-struct PassPlan {
-    const shaderlab::SurfaceProgram& program;
-    const SurfaceFacts& facts;
-    SurfacePassKind kind;
-    bool tangentSpace;                // the surface function writes o.Normal (tangent space)
-    std::array<bool, 4> texcoords{};  // uv_, uv2_, uv3_, uv4_ members read texcoord0..3
-    bool color;
-    bool screenPos;
-    bool customInput;                 // Input travels whole from the vertex modifier
-    // The fragment program calls the surface function: always in the forward passes; in the
-    // caster only for alphatest or a surface function that clips (else it writes depth only).
-    bool surfaceCall;
-    bool base() const { return kind == SurfacePassKind::ForwardBase; }
-    bool add() const { return kind == SurfacePassKind::ForwardAdd; }
-    bool caster() const { return kind == SurfacePassKind::ShadowCaster; }
-    bool fog() const { return !caster() && !program.options.noFog; }
-};
-
-class Writer {
-public:
-    void line(std::string_view text) {
-        mText.append(text);
-        mText.push_back('\n');
-    }
-    std::string take() { return std::move(mText); }
-
-private:
-    std::string mText;
-};
+namespace surface {
 
 // 0 for `uv_NAME`, 1 for `uv2_NAME`, ... 3 for `uv4_NAME`; -1 for other members. |texture|
 // receives the texture's name: `uv_MainTex` reads texture `_MainTex` (Unity's convention).
@@ -57,6 +28,16 @@ int uvSet(std::string_view member, std::string& texture) {
     }
     return -1;
 }
+
+bool hasMember(const std::vector<std::string>& members, std::string_view name) {
+    return std::find(members.begin(), members.end(), name) != members.end();
+}
+
+}  // namespace surface
+
+namespace {
+
+using namespace surface;
 
 PassPlan makePlan(const shaderlab::SurfaceProgram& program, const SurfaceFacts& facts,
                   SurfacePassKind kind) {
@@ -79,10 +60,6 @@ PassPlan makePlan(const shaderlab::SurfaceProgram& program, const SurfaceFacts& 
     return plan;
 }
 
-bool hasMember(const std::vector<std::string>& members, std::string_view name) {
-    return std::find(members.begin(), members.end(), name) != members.end();
-}
-
 // `v.FIELD` when the vertex input has FIELD, else |fallback|.
 std::string vertexField(const PassPlan& plan, std::string_view field, std::string_view fallback) {
     if (hasMember(plan.facts.vertexInputMembers, field)) return "v." + std::string(field);
@@ -98,7 +75,7 @@ std::string passDefine(SurfacePassKind kind) {
     return "";
 }
 
-void writeKeywordPragmas(const PassPlan& plan, Writer& out) {
+void writeKeywordPragmas(const PassPlan& plan, CodeWriter& out) {
     const shaderlab::SurfaceOptions& options = plan.program.options;
     if (plan.base()) {
         std::string line = "#pragma multi_compile_fwdbase";
@@ -114,7 +91,7 @@ void writeKeywordPragmas(const PassPlan& plan, Writer& out) {
     if (plan.fog()) out.line("#pragma multi_compile_fog");
 }
 
-void writeNormalMacros(const PassPlan& plan, Writer& out) {
+void writeNormalMacros(const PassPlan& plan, CodeWriter& out) {
     if (plan.tangentSpace) {
         out.line("#define INTERNAL_DATA float3 internalSurfaceTtoW0; float3 internalSurfaceTtoW1; "
                  "float3 internalSurfaceTtoW2;");
@@ -131,7 +108,7 @@ void writeNormalMacros(const PassPlan& plan, Writer& out) {
 }
 
 std::string writeBefore(const PassPlan& plan) {
-    Writer out;
+    CodeWriter out;
     out.line("#define " + passDefine(plan.kind));
     if (effectiveAlpha(plan.program) == Alpha::Premultiply) {
         out.line("#define _ALPHAPREMULTIPLY_ON 1");
@@ -148,7 +125,7 @@ std::string writeBefore(const PassPlan& plan) {
 }
 
 // `float4 NAME_ST;` for every uvN_NAME member whose NAME_ST the program does not mention.
-void writeTextureScales(const PassPlan& plan, Writer& out) {
+void writeTextureScales(const PassPlan& plan, CodeWriter& out) {
     std::vector<std::string> declared;
     for (const std::string& member : plan.facts.inputMembers) {
         std::string texture;
@@ -164,7 +141,7 @@ void writeTextureScales(const PassPlan& plan, Writer& out) {
 }
 
 // `fixed PROP;` for `alphatest:PROP` when the program does not name PROP (Unity declares it).
-void writeAlphaTestProperty(const PassPlan& plan, Writer& out) {
+void writeAlphaTestProperty(const PassPlan& plan, CodeWriter& out) {
     const std::string& property = plan.program.options.alphaTestProperty;
     if (!property.empty() && !plan.facts.mentions(property)) out.line("fixed " + property + ";");
 }
@@ -173,7 +150,7 @@ void writeAlphaTestProperty(const PassPlan& plan, Writer& out) {
 // interpolator written and never read is a Vulkan interface warning): VARC_SURF_AMBIENT (the
 // vertex lights: the (s, gi) models read them with light-probe SH only, as UnityGI_Base does;
 // the legacy shapes always) and VARC_SURF_LIGHTMAP_UV (the (s, gi) models under a lightmap).
-void writeBaseSwitches(const PassPlan& plan, Writer& out) {
+void writeBaseSwitches(const PassPlan& plan, CodeWriter& out) {
     if (!plan.base()) return;
     bool gi = plan.facts.lighting == LightingShape::Gi ||
               plan.facts.lighting == LightingShape::GiViewDir;
@@ -189,7 +166,7 @@ void writeBaseSwitches(const PassPlan& plan, Writer& out) {
     }
 }
 
-void writeVaryings(const PassPlan& plan, Writer& out) {
+void writeVaryings(const PassPlan& plan, CodeWriter& out) {
     out.line("struct varc_surf_v2f {");
     out.line(plan.caster() ? "    V2F_SHADOW_CASTER;" : "    float4 pos : SV_POSITION;");
     if (plan.customInput) out.line("    Input custom;");
@@ -225,7 +202,7 @@ void writeVaryings(const PassPlan& plan, Writer& out) {
     out.line("};");
 }
 
-void writeVertexModifier(const PassPlan& plan, Writer& out) {
+void writeVertexModifier(const PassPlan& plan, CodeWriter& out) {
     const std::string& modifier = plan.program.options.vertexFunction;
     if (modifier.empty()) return;
     if (plan.facts.vertexWritesInput) {
@@ -238,7 +215,7 @@ void writeVertexModifier(const PassPlan& plan, Writer& out) {
     }
 }
 
-void writeVertexProgram(const PassPlan& plan, Writer& out) {
+void writeVertexProgram(const PassPlan& plan, CodeWriter& out) {
     out.line("varc_surf_v2f varc_surf_vert(" + plan.facts.vertexInputType + " v) {");
     out.line("    varc_surf_v2f o;");
     out.line("    UNITY_INITIALIZE_OUTPUT(varc_surf_v2f, o);");
@@ -304,179 +281,6 @@ void writeVertexProgram(const PassPlan& plan, Writer& out) {
     out.line("}");
 }
 
-// The Input members varc fills by name (docs/SURFACE_SHADERS.md), from the interpolators.
-void writeInputMembers(const PassPlan& plan, Writer& out) {
-    for (const std::string& member : plan.facts.inputMembers) {
-        std::string texture;
-        int set = uvSet(member, texture);
-        std::string target = "    surfIN." + member + " = ";
-        if (set >= 0) {
-            out.line(target + "TRANSFORM_TEX(i.texcoord" + std::to_string(set) + ", " + texture +
-                     ");");
-        } else if (member == "worldPos") {
-            out.line(target + "worldPos;");
-        } else if (member == "worldNormal") {
-            out.line(target + "worldNormal;");
-        } else if (member == "worldRefl") {
-            out.line(target + (plan.tangentSpace ? "-worldViewDir;"
-                                                 : "reflect(-worldViewDir, worldNormal);"));
-        } else if (member == "viewDir") {
-            out.line(target + (plan.tangentSpace ? "tangentSpace0 * worldViewDir.x + "
-                                                   "tangentSpace1 * worldViewDir.y + "
-                                                   "tangentSpace2 * worldViewDir.z;"
-                                                 : "worldViewDir;"));
-        } else if (member == "screenPos") {
-            out.line(target + "i.screenPos;");
-        } else if (member == "color") {
-            out.line(target + "i.vertexColor;");
-        }
-    }
-    if (plan.tangentSpace && plan.facts.inputHasInternalData) {
-        out.line("    surfIN.internalSurfaceTtoW0 = tangentSpace0;");
-        out.line("    surfIN.internalSurfaceTtoW1 = tangentSpace1;");
-        out.line("    surfIN.internalSurfaceTtoW2 = tangentSpace2;");
-    }
-}
-
-// Declares `o` of the output type with Unity's starting values and calls the surface function.
-void writeSurfaceCall(const PassPlan& plan, Writer& out) {
-    const std::string& type = plan.facts.outputType;
-    const std::vector<std::string>& members = plan.facts.outputMembers;
-    out.line("    " + type + " o;");
-    out.line("    UNITY_INITIALIZE_OUTPUT(" + type + ", o);");
-    if (hasMember(members, "Occlusion")) out.line("    o.Occlusion = 1.0;");
-    if (hasMember(members, "Normal")) {
-        out.line(plan.tangentSpace ? "    o.Normal = float3(0, 0, 1);"
-                                   : "    o.Normal = worldNormal;");
-    }
-    out.line("    " + plan.program.function + "(surfIN, o);");
-    if (!plan.program.options.alphaTestProperty.empty()) {
-        out.line("    clip(o.Alpha - " + plan.program.options.alphaTestProperty + ");");
-    }
-    if (plan.tangentSpace && hasMember(members, "Normal")) {
-        out.line("    worldNormal = normalize(float3(dot(tangentSpace0, o.Normal), "
-                 "dot(tangentSpace1, o.Normal), dot(tangentSpace2, o.Normal)));");
-        out.line("    o.Normal = worldNormal;");
-    }
-}
-
-bool keepsAlpha(const shaderlab::SurfaceProgram& program) {
-    return program.options.keepAlpha || program.options.alpha != Alpha::Off ||
-           program.options.decal == shaderlab::SurfaceOptions::Decal::Blend;
-}
-
-void writeGiLighting(const PassPlan& plan, Writer& out) {
-    const std::string model = "Lighting" + plan.program.lightingModel;
-    bool viewDir = plan.facts.lighting == LightingShape::GiViewDir;
-    out.line("    UnityGI gi;");
-    out.line("    UNITY_INITIALIZE_OUTPUT(UnityGI, gi);");
-    out.line("    gi.indirect.diffuse = 0;");
-    out.line("    gi.indirect.specular = 0;");
-    out.line("    gi.light.color = _LightColor0.rgb;");
-    out.line("    gi.light.dir = lightDir;");
-    if (plan.base()) {
-        out.line("    UnityGIInput giInput;");
-        out.line("    UNITY_INITIALIZE_OUTPUT(UnityGIInput, giInput);");
-        out.line("    giInput.light = gi.light;");
-        out.line("    giInput.worldPos = worldPos;");
-        out.line("    giInput.worldViewDir = worldViewDir;");
-        out.line("    giInput.atten = atten;");
-        out.line("    giInput.ambient = 0;");
-        out.line("#if defined(VARC_SURF_AMBIENT)");
-        out.line("    giInput.ambient = i.vertexLights;");
-        out.line("#endif");
-        out.line("#if defined(VARC_SURF_LIGHTMAP_UV)");
-        out.line("    giInput.lightmapUV = i.lightmapUV;");
-        out.line("#endif");
-        out.line("    giInput.probeHDR[0] = unity_SpecCube0_HDR;");
-        out.line("    giInput.probeHDR[1] = unity_SpecCube1_HDR;");
-        out.line("    giInput.boxMin[0] = unity_SpecCube0_BoxMin;");
-        out.line("    giInput.boxMin[1] = unity_SpecCube1_BoxMin;");
-        out.line("    giInput.boxMax[0] = unity_SpecCube0_BoxMax;");
-        out.line("    giInput.boxMax[1] = unity_SpecCube1_BoxMax;");
-        out.line("    giInput.probePosition[0] = unity_SpecCube0_ProbePosition;");
-        out.line("    giInput.probePosition[1] = unity_SpecCube1_ProbePosition;");
-        if (plan.facts.hasGiFunction) {
-            out.line("    " + model + "_GI(o, giInput, gi);");
-        } else {
-            out.line("    gi = UnityGlobalIllumination(giInput, 1.0, o.Normal);");
-        }
-    } else {
-        out.line("    gi.light.color *= atten;");
-    }
-    out.line("    c += " + model + "(o, " + (viewDir ? "worldViewDir, " : "") + "gi);");
-}
-
-void writeLegacyLighting(const PassPlan& plan, Writer& out) {
-    bool viewDir = plan.facts.lighting == LightingShape::LegacyViewDir;
-    out.line("    c += Lighting" + plan.program.lightingModel + "(o, lightDir, " +
-             (viewDir ? "worldViewDir, " : "") + "atten);");
-    if (plan.base() && !plan.program.options.noAmbient) {
-        out.line("    float3 ambient = i.vertexLights;");  // VARC_SURF_AMBIENT is on
-        out.line("#if UNITY_SHOULD_SAMPLE_SH");
-        out.line("    ambient += max(0, ShadeSH9(float4(o.Normal, 1)));");
-        out.line("#endif");
-        out.line("    c.rgb += o.Albedo * ambient;");
-    }
-}
-
-void writeLitFragmentEnd(const PassPlan& plan, Writer& out) {
-    const shaderlab::SurfaceOptions& options = plan.program.options;
-    if (!keepsAlpha(plan.program) && hasMember(plan.facts.outputMembers, "Alpha")) {
-        out.line("    o.Alpha = 1;");  // opaque: no alpha premultiplication in the lighting
-    }
-    out.line("    float3 lightDir = normalize(UnityWorldSpaceLightDir(worldPos));");
-    out.line("    UNITY_LIGHT_ATTENUATION(atten, i, worldPos);");
-    out.line("    fixed4 c = 0;");
-    bool gi = plan.facts.lighting == LightingShape::Gi ||
-              plan.facts.lighting == LightingShape::GiViewDir;
-    if (gi) writeGiLighting(plan, out);
-    else writeLegacyLighting(plan, out);
-    if (plan.base() && hasMember(plan.facts.outputMembers, "Emission")) {
-        out.line("    c.rgb += o.Emission;");
-    }
-    if (!options.finalColorFunction.empty()) {
-        out.line("    " + options.finalColorFunction + "(surfIN, o, c);");
-    }
-    if (plan.fog()) out.line("    UNITY_APPLY_FOG(i.fogCoord, c);");
-    if (!keepsAlpha(plan.program)) out.line("    c.a = 1;");
-    out.line("    return c;");
-}
-
-void writeFragmentProgram(const PassPlan& plan, Writer& out) {
-    out.line(std::string(plan.caster() ? "float4" : "fixed4") +
-             " varc_surf_frag(varc_surf_v2f i) : SV_Target {");
-    if (!plan.surfaceCall) {
-        out.line("    SHADOW_CASTER_FRAGMENT(i)");
-        out.line("}");
-        return;
-    }
-    out.line("    Input surfIN;");
-    out.line("    UNITY_INITIALIZE_OUTPUT(Input, surfIN);");
-    if (plan.customInput) out.line("    surfIN = i.custom;");
-    out.line("    float3 worldPos = i.worldPos;");
-    out.line("    float3 worldViewDir = normalize(UnityWorldSpaceViewDir(worldPos));");
-    out.line("    float3 worldNormal = normalize(i.worldNormal);");
-    if (plan.tangentSpace) {
-        out.line("    float3 worldTangent = i.worldTangent.xyz;");
-        out.line("    float3 worldBinormal = cross(worldNormal, worldTangent) * i.worldTangent.w;");
-        for (char axis : {'x', 'y', 'z'}) {  // the rows of the tangent-to-world matrix
-            std::string row = std::string("tangentSpace") + char('0' + (axis - 'x'));
-            std::string c(1, axis);
-            out.line("    float3 " + row + " = float3(worldTangent." + c + ", worldBinormal." + c +
-                     ", worldNormal." + c + ");");
-        }
-    }
-    writeInputMembers(plan, out);
-    writeSurfaceCall(plan, out);
-    if (plan.caster()) {
-        out.line("    SHADOW_CASTER_FRAGMENT(i)");
-    } else {
-        writeLitFragmentEnd(plan, out);
-    }
-    out.line("}");
-}
-
 }  // namespace
 
 std::string surfacePassLightMode(SurfacePassKind kind) {
@@ -499,7 +303,7 @@ shaderlab::SurfaceOptions::Alpha effectiveAlpha(const shaderlab::SurfaceProgram&
 shaderlab::GeneratedCode generateSurfaceCode(const shaderlab::SurfaceProgram& program,
                                              const SurfaceFacts& facts, SurfacePassKind kind) {
     PassPlan plan = makePlan(program, facts, kind);
-    Writer after;
+    CodeWriter after;
     writeTextureScales(plan, after);
     writeAlphaTestProperty(plan, after);
     writeBaseSwitches(plan, after);

@@ -214,29 +214,16 @@ Result<GBufferMaterial> resolveGBufferMaterial(const scene::Material& material) 
     return m;
 }
 
-Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
-    if (scene.camera.path != scene::RenderPath::Deferred) {
-        return makeError(ErrorCode::Unsupported,
-                         "renderDeferredReference renders the deferred path only");
-    }
-    if (Status cookies = checkCookies(scene); !cookies) return cookies.error();
-    std::vector<ObjectSurface> surfaces;
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-        auto surface = prepareObject(scene, scene.objects[i]);
-        if (!surface) {
-            return makeError(surface.error().code,
-                             "/objects/" + std::to_string(i) + ": " + surface.error().detail);
-        }
-        surfaces.push_back(std::move(*surface));
-    }
-    LightTextureSet textures;
-    if (Status cookies = textures.loadCookieFiles(scene.lights); !cookies) return cookies.error();
+namespace {
+
+// The shadow maps, screen-space masks and fades of |scene|'s lights; |anyShadowMap| tells
+// whether some light has a map.
+DeferredShadows renderDeferredShadows(const scene::Scene& scene, bool& anyShadowMap) {
     // Every G-buffer object casts (varc/DeferredGBuffer falls back to VertexLit's caster).
     DeferredShadows shadows;
     ShadowCaster opaque;
     opaque.casts = true;
     const std::vector<ShadowCaster> casts(scene.objects.size(), opaque);
-    bool anyShadowMap = false;
     for (const scene::Light& light : scene.lights) {
         shadows.fades.push_back(shadowFadeFor(scene, light));
         const bool mapped = light.shadows != scene::ShadowType::None;
@@ -257,6 +244,30 @@ Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
         shadows.masks.push_back(std::move(mask));
         anyShadowMap = anyShadowMap || mapped;
     }
+    return shadows;
+}
+
+}  // namespace
+
+Result<ReferenceImage> renderDeferredReference(const scene::Scene& scene) {
+    if (scene.camera.path != scene::RenderPath::Deferred) {
+        return makeError(ErrorCode::Unsupported,
+                         "renderDeferredReference renders the deferred path only");
+    }
+    if (Status cookies = checkCookies(scene); !cookies) return cookies.error();
+    std::vector<ObjectSurface> surfaces;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        auto surface = prepareObject(scene, scene.objects[i]);
+        if (!surface) {
+            return makeError(surface.error().code,
+                             "/objects/" + std::to_string(i) + ": " + surface.error().detail);
+        }
+        surfaces.push_back(std::move(*surface));
+    }
+    LightTextureSet textures;
+    if (Status cookies = textures.loadCookieFiles(scene.lights); !cookies) return cookies.error();
+    bool anyShadowMap = false;
+    const DeferredShadows shadows = renderDeferredShadows(scene, anyShadowMap);
     const scene::CameraMatrices camera = scene::cameraMatrices(scene.camera);
     ReferenceImage out;
     out.visibility = rasterizeScene(scene, camera);

@@ -58,6 +58,36 @@ const std::array<uint8_t, 4>& maskColour(PixelClass cls, bool interval) {
     return kMaskBackground;
 }
 
+// The diff image's pixel: the reference's luminance in dark grey, red where the render is
+// brighter and blue where darker (by how much), or saturated for a failing pixel.
+template <typename Pixel>
+std::array<uint8_t, 4> diffPixel(const Pixel& want, float signedError, bool fails) {
+    const uint8_t grey = static_cast<uint8_t>(std::clamp(
+        (want[0] * 0.2126f + want[1] * 0.7152f + want[2] * 0.0722f) * 64.0f, 0.0f, 64.0f));
+    std::array<uint8_t, 4> d = {grey, grey, grey, 255};
+    if (signedError > 0.0f) d[0] = std::max(grey, diffLevel(signedError));
+    if (signedError < 0.0f) d[2] = std::max(grey, diffLevel(signedError));
+    if (fails) {
+        d = {uint8_t(signedError >= 0.0f ? 255 : 0), 255, uint8_t(signedError < 0.0f ? 255 : 0),
+             255};
+    }
+    return d;
+}
+
+// The one-line verdict of |r| over |pixels| pixels: PASS/FAIL, errors and pixel counts.
+std::string summaryOf(const CompareResult& r, const Tolerance& tolerance, uint64_t pixels) {
+    std::ostringstream s;
+    s.precision(3);
+    s << (r.passed ? "PASS" : "FAIL") << ": max error " << r.maxErrorLsb << " LSB, mean signed "
+      << r.meanSignedErrorLsb << " LSB (limit ±" << tolerance.meanLsb << "), mean abs "
+      << r.meanAbsErrorLsb << " LSB, " << r.failingPixels << " failing pixels of " << pixels
+      << " (interior " << r.interiorPixels << ", edge " << r.edgePixels << ", background "
+      << r.backgroundPixels << ")";
+    if (r.intervalPixels > 0) s << ", " << r.intervalPixels << " checked by shadow interval";
+    if (!r.firstFailures.empty()) s << "; first: " << describe(r.firstFailures.front());
+    return s.str();
+}
+
 }  // namespace
 
 CompareResult compareImages(const image::Image& rendered, const image::Image& reference,
@@ -123,14 +153,8 @@ CompareResult compareImages(const image::Image& rendered, const image::Image& re
             r.maxErrorLsb = std::max(r.maxErrorLsb, error);
             // 1e-3 LSB of slack: k/255 values in float do not subtract to exact multiples of 1/255.
             const bool fails = !(error <= limit + 1e-3f);
-            const uint8_t grey = static_cast<uint8_t>(std::clamp(
-                (want[0] * 0.2126f + want[1] * 0.7152f + want[2] * 0.0722f) * 64.0f, 0.0f, 64.0f));
-            std::array<uint8_t, 4> d = {grey, grey, grey, 255};
-            if (signedError > 0.0f) d[0] = std::max(grey, diffLevel(signedError));
-            if (signedError < 0.0f) d[2] = std::max(grey, diffLevel(signedError));
+            const std::array<uint8_t, 4> d = diffPixel(want, signedError, fails);
             if (fails) {
-                d = {uint8_t(signedError >= 0.0f ? 255 : 0), 255,
-                     uint8_t(signedError < 0.0f ? 255 : 0), 255};
                 ++r.failingPixels;
                 if (r.firstFailures.size() < tolerance.maxReported) {
                     r.firstFailures.push_back({x, y, cls, got, want, error});
@@ -146,16 +170,7 @@ CompareResult compareImages(const image::Image& rendered, const image::Image& re
     }
     const bool meanOk = std::abs(r.meanSignedErrorLsb) <= tolerance.meanLsb;
     r.passed = r.failingPixels == 0 && meanOk;
-    std::ostringstream s;
-    s.precision(3);
-    s << (r.passed ? "PASS" : "FAIL") << ": max error " << r.maxErrorLsb << " LSB, mean signed "
-      << r.meanSignedErrorLsb << " LSB (limit ±" << tolerance.meanLsb << "), mean abs "
-      << r.meanAbsErrorLsb << " LSB, " << r.failingPixels << " failing pixels of " << (w * h)
-      << " (interior " << r.interiorPixels << ", edge " << r.edgePixels << ", background "
-      << r.backgroundPixels << ")";
-    if (r.intervalPixels > 0) s << ", " << r.intervalPixels << " checked by shadow interval";
-    if (!r.firstFailures.empty()) s << "; first: " << describe(r.firstFailures.front());
-    r.message = s.str();
+    r.message = summaryOf(r, tolerance, w * h);
     return r;
 }
 

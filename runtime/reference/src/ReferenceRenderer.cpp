@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "MaterialResolver.h"
 #include "varc/reference/Shading.h"
 #include "varc/reference/ShadowReference.h"
 #include "varc/scene/CameraMatrices.h"
@@ -14,24 +15,6 @@
 
 namespace varc::reference {
 namespace {
-
-using scene::PropertyValue;
-
-Status readColorProperty(const PropertyValue& value, const std::string& name, glm::vec4& out) {
-    if (const auto* v = std::get_if<glm::vec4>(&value)) {
-        out = *v;
-        return Ok{};
-    }
-    return makeError(ErrorCode::InvalidInput, "material property " + name + ": expected a colour");
-}
-
-Status readFloatProperty(const PropertyValue& value, const std::string& name, float& out) {
-    if (const auto* v = std::get_if<float>(&value)) {
-        out = *v;
-        return Ok{};
-    }
-    return makeError(ErrorCode::InvalidInput, "material property " + name + ": expected a number");
-}
 
 // The per-vertex and per-pass data of one object's draws.
 struct ObjectDraw {
@@ -51,7 +34,7 @@ struct ObjectDraw {
 // The interpolated inputs of one fragment.
 struct Varyings {
     glm::vec3 p, normal, vertexTerm;
-    glm::vec2 uv;  // uv0 (object mesh), before _MainTex_ST
+    glm::vec2 uv;      // uv0 (object mesh), before _MainTex_ST
     size_t pixel = 0;  // row-major index of the camera pixel (screen-space shadow masks)
     glm::vec3 objectPos{0.0f}, objectNormal{0.0f};  // mesh position and normal, interpolated
 };
@@ -119,8 +102,8 @@ glm::vec4 seed004Diffuse(const ObjectDraw& draw, const Varyings& in, const PassL
     const glm::vec3 l = glm::normalize(glm::vec3(objectLight) - in.objectPos * objectLight.w);
     const float diff = std::clamp(glm::dot(in.objectNormal, l), 0.0f, 1.0f);
     const float atten = lightAttenuation(light, textures, in.p) * shadowTerm(light, in, upper);
-    glm::vec4 tex = base ? (m.mainTexture ? m.mainTexture->sample(in.uv) : m.mainTex)
-                         : mainTexAt(m, in);
+    glm::vec4 tex =
+        base ? (m.mainTexture ? m.mainTexture->sample(in.uv) : m.mainTex) : mainTexAt(m, in);
     tex *= base ? m.color + glm::vec4(in.vertexTerm, 1.0f) : m.color;
     glm::vec3 c = ambient * 2.0f * glm::vec3(tex);
     c += glm::vec3(tex) * light.color * diff * (atten * 2.0f);
@@ -311,118 +294,47 @@ glm::vec4 accumulate(const glm::vec4& base, const std::vector<glm::vec4>& adds, 
     return hdr ? dst : dst / 255.0f;
 }
 
-// Standard's caster (UnityStandardShadow.cginc) under the material's shader_feature keywords:
-// _ALPHATEST_ON clips at _Cutoff; _ALPHABLEND_ON and _ALPHAPREMULTIPLY_ON dither, the latter
-// with alpha raised to 1 - oneMinusReflectivity + alpha * oneMinusReflectivity (linear colour
-// space: oneMinusReflectivity = 0.96 - 0.96 * _Metallic). Without them it is opaque. The
-// three are one shader_feature: InvalidInput when the material names more than one.
-Status applyStandardCasterKeywords(const std::vector<std::string>& keywords, MaterialParams& p) {
-    auto has = [&](const char* k) {
-        return std::find(keywords.begin(), keywords.end(), k) != keywords.end();
-    };
-    const int named = int{has("_ALPHATEST_ON")} + int{has("_ALPHABLEND_ON")} +
-                      int{has("_ALPHAPREMULTIPLY_ON")};
-    if (named > 1) {
-        return makeError(ErrorCode::InvalidInput,
-                         "material keywords: at most one of _ALPHATEST_ON, _ALPHABLEND_ON and "
-                         "_ALPHAPREMULTIPLY_ON (one shader_feature)");
+// The shadow maps of |scene|'s shadowed lights drawn from |casts|, and the screen-space masks of
+// its directional ones.
+ShadowMapSet renderShadowMaps(const scene::Scene& scene, const std::vector<ShadowCaster>& casts,
+                              const ReferenceOptions& options) {
+    ShadowMapSet shadowMaps;
+    shadowMaps.maps.resize(scene.lights.size());
+    shadowMaps.masks.resize(scene.lights.size());
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const scene::Light& light = scene.lights[i];
+        if (light.shadows == scene::ShadowType::None) continue;
+        shadowMaps.maps[i] = std::make_unique<ShadowMapReference>(
+            light.type == scene::LightType::Spot
+                ? ShadowMapReference::renderSpot(scene, light, casts)
+            : light.type == scene::LightType::Point
+                ? ShadowMapReference::renderPoint(scene, light, casts)
+                : ShadowMapReference::renderDirectional(scene, light, casts));
+        if (options.editShadowMap) options.editShadowMap(*shadowMaps.maps[i]);
+        if (light.type == scene::LightType::Directional) {
+            shadowMaps.masks[i] = shadowMaps.maps[i]->screenMask(
+                scene, casts, light.shadows == scene::ShadowType::Soft);
+        }
     }
-    if (has("_ALPHATEST_ON")) {
-        p.casterAlphaTest = true;
-    } else if (has("_ALPHABLEND_ON")) {
-        p.casterDither = true;
-    } else if (has("_ALPHAPREMULTIPLY_ON")) {
-        p.casterDither = true;
-        const float oneMinusReflectivity = 0.96f - 0.96f * p.metallic;
-        p.casterAlphaScale = oneMinusReflectivity;
-        p.casterAlphaBias = 1.0f - oneMinusReflectivity;
-    }
-    return Ok{};
+    return shadowMaps;
 }
 
-// How |m|'s object draws into the shadow maps.
-ShadowCaster casterOf(const MaterialParams& m, const ReferenceOptions& options) {
-    ShadowCaster caster;
-    caster.casts = m.castsShadows;
-    caster.cullOff = m.casterCullOff;
-    caster.alphaTest = m.casterAlphaTest && !options.ignoreCasterCutoff;
-    caster.dither = m.casterDither;
-    caster.alphaScale = m.casterAlphaScale;
-    caster.alphaBias = m.casterAlphaBias;
-    caster.cutoff = m.cutoff;
-    caster.colorAlpha = m.color.a;
-    caster.mainTexAlpha = m.mainTex.a;
-    caster.mainTexture = m.mainTexture;
-    caster.mainTexST = m.mainTexST;
-    return caster;
+// The inputs of the fragment of |draw| at visibility sample |s|, camera pixel |pixel|.
+Varyings interpolate(const ObjectDraw& draw, const SurfaceSample& s, size_t pixel) {
+    Varyings in{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec2(0.0f), pixel};
+    for (int k = 0; k < 3; ++k) {
+        const uint32_t v = draw.mesh->indices[3 * s.triangle + static_cast<uint32_t>(k)];
+        in.p += s.bary[k] * draw.worldPos[v];
+        in.normal += s.bary[k] * draw.worldNormal[v];
+        in.vertexTerm += s.bary[k] * draw.vertexTerm[v];
+        in.uv += s.bary[k] * draw.mesh->uvs[v];
+        in.objectPos += s.bary[k] * draw.mesh->positions[v];
+        in.objectNormal += s.bary[k] * draw.mesh->normals[v];
+    }
+    return in;
 }
 
 }  // namespace
-
-Result<MaterialParams> resolveMaterial(const scene::Material& material) {
-    MaterialParams p;
-    std::string colorName = "_Color";
-    const std::string model = scene::referenceModelOf(material);
-    if (model == "seed000") {
-        colorName = "_Tint";
-        p.smoothness = 0.1f;
-    } else if (model == "varc-forward") {
-        p.model = ShaderModel::ForwardPbs;
-        p.castsShadows = true;
-        p.receivesAddShadows = true;
-    } else if (model == "varc-simple-diffuse") {
-        p.model = ShaderModel::SimpleDiffuse;
-        p.castsShadows = true;
-        p.receivesAddShadows = true;
-        p.receivesBaseShadows = true;
-    } else if (model == "varc-glsl-vertex-lights") {
-        p.model = ShaderModel::GlslBlinnPhong;
-    } else if (model == "seed001") {
-        p.model = ShaderModel::Seed001Phong;
-        p.shininess = 10.0f;
-    } else if (model == "seed004") {
-        p.model = ShaderModel::Seed004Diffuse;
-        p.castsShadows = true;         // Fallback "VertexLit"
-        p.receivesBaseShadows = true;  // multi_compile_fwdbase; its add pass has no shadow keywords
-    } else if (model == "varc-caster" || model == "varc-caster-cutout" ||
-               model == "varc-standard-caster") {
-        p.model = ShaderModel::CasterOnly;
-        p.castsShadows = true;
-        p.casterCullOff = p.casterAlphaTest = model == "varc-caster-cutout";
-    } else {
-        return makeError(ErrorCode::NotFound,
-                         "no reference model for shader '" + material.shader + "'" +
-                             (model.empty() ? std::string() : " (reference '" + model + "')"));
-    }
-    for (const auto& [name, value] : material.properties) {
-        Status status = Ok{};
-        if (name == colorName) {
-            status = readColorProperty(value, name, p.color);
-        } else if (name == "_MainTex") {
-            status = readColorTexture(value, name, p.mainTex, p.mainTexture);
-        } else if (name == "_MainTex_ST") {
-            status = readColorProperty(value, name, p.mainTexST);
-        } else if (name == "_Metallic") {
-            status = readFloatProperty(value, name, p.metallic);
-        } else if (name == "_Smoothness") {
-            status = readFloatProperty(value, name, p.smoothness);
-        } else if (name == "_SpecColor") {
-            glm::vec4 c;
-            status = readColorProperty(value, name, c);
-            p.specColor = glm::vec3(c);
-        } else if (name == "_Shininess") {
-            status = readFloatProperty(value, name, p.shininess);
-        } else if (name == "_Cutoff") {
-            status = readFloatProperty(value, name, p.cutoff);
-        }
-        if (!status) return status.error();
-    }
-    if (model == "varc-standard-caster") {
-        if (Status keywords = applyStandardCasterKeywords(material.keywords, p); !keywords)
-            return keywords.error();
-    }
-    return p;
-}
 
 Result<ReferenceImage> renderReference(const scene::Scene& scene, const ReferenceOptions& options) {
     if (scene.camera.path != scene::RenderPath::Forward) {
@@ -435,22 +347,7 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
         casts.push_back(material ? casterOf(*material, options) : ShadowCaster{});
         drawn.push_back(!material || material->model != ShaderModel::CasterOnly);
     }
-    ShadowMapSet shadowMaps;
-    shadowMaps.maps.resize(scene.lights.size());
-    shadowMaps.masks.resize(scene.lights.size());
-    for (size_t i = 0; i < scene.lights.size(); ++i) {
-        const scene::Light& light = scene.lights[i];
-        if (light.shadows == scene::ShadowType::None) continue;
-        shadowMaps.maps[i] = std::make_unique<ShadowMapReference>(
-            light.type == scene::LightType::Spot    ? ShadowMapReference::renderSpot(scene, light, casts)
-            : light.type == scene::LightType::Point ? ShadowMapReference::renderPoint(scene, light, casts)
-                                                    : ShadowMapReference::renderDirectional(scene, light, casts));
-        if (options.editShadowMap) options.editShadowMap(*shadowMaps.maps[i]);
-        if (light.type == scene::LightType::Directional) {
-            shadowMaps.masks[i] = shadowMaps.maps[i]->screenMask(
-                scene, casts, light.shadows == scene::ShadowType::Soft);
-        }
-    }
+    const ShadowMapSet shadowMaps = renderShadowMaps(scene, casts, options);
     std::vector<ObjectDraw> draws;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         auto draw = prepareObject(scene, scene.objects[i], shadowMaps, options);
@@ -481,18 +378,7 @@ Result<ReferenceImage> renderReference(const scene::Scene& scene, const Referenc
             glm::vec4 c = background, high = background;
             if (s.object >= 0) {
                 const ObjectDraw& draw = draws[static_cast<size_t>(s.object)];
-                Varyings in{glm::vec3(0.0f), glm::vec3(0.0f), glm::vec3(0.0f), glm::vec2(0.0f),
-                            size_t{y} * w + x};
-                for (int k = 0; k < 3; ++k) {
-                    const uint32_t v =
-                        draw.mesh->indices[3 * s.triangle + static_cast<uint32_t>(k)];
-                    in.p += s.bary[k] * draw.worldPos[v];
-                    in.normal += s.bary[k] * draw.worldNormal[v];
-                    in.vertexTerm += s.bary[k] * draw.vertexTerm[v];
-                    in.uv += s.bary[k] * draw.mesh->uvs[v];
-                    in.objectPos += s.bary[k] * draw.mesh->positions[v];
-                    in.objectNormal += s.bary[k] * draw.mesh->normals[v];
-                }
+                const Varyings in = interpolate(draw, s, size_t{y} * w + x);
                 for (bool upper : {false, true}) {
                     if (upper && !anyShadowMap) break;
                     const glm::vec4 base =

@@ -27,10 +27,18 @@ struct ForwardRenderer::State : RendererBase {
     ShadowMaps shadows;
     ScreenShadowMasks screenShadows;  // directional lights' masks (SHADOWS_SCREEN)
 
+    using LightmapBindings = std::map<std::string, TextureBinding, std::less<>>;
+
     Status addObjectDraws(const scene::Scene& scene, size_t index,
                           const vulkan::RenderTarget& target, FrameStorage& storage,
                           const ShaderValues& camera, const scene::CameraMatrices& matrices,
                           std::vector<Draw>& draws, RenderedFrame& frame);
+    // The lightmap textures |object| (named |what| in errors) binds, by shader name.
+    Result<LightmapBindings> lightmapBindings(const scene::Object& object,
+                                              const std::string& what);
+    // The shadow texture |light| (index |lightIndex|; nullptr: none) is drawn with: directional
+    // lights read their screen-space mask, the others their map; nullopt without one.
+    std::optional<TextureBinding> shadowTexture(const scene::Light* light, size_t lightIndex);
 };
 
 ForwardRenderer::ForwardRenderer(std::unique_ptr<State> state) : mState(std::move(state)) {}
@@ -71,6 +79,29 @@ variants::LightDescription forwardLight(const scene::Scene& scene, const scene::
 
 }  // namespace
 
+Result<ForwardRenderer::State::LightmapBindings> ForwardRenderer::State::lightmapBindings(
+    const scene::Object& object, const std::string& what) {
+    LightmapBindings lightmaps;
+    for (const char* name : {"unity_Lightmap", "unity_LightmapInd", "unity_DynamicLightmap",
+                             "unity_DynamicDirectionality", "unity_ShadowMask"}) {
+        auto texture = lightmapTexture(object, name);
+        if (!texture) return makeError(texture.error().code, what + ": " + texture.error().detail);
+        lightmaps.emplace(name, **texture);
+    }
+    return lightmaps;
+}
+
+std::optional<TextureBinding> ForwardRenderer::State::shadowTexture(const scene::Light* light,
+                                                                    size_t lightIndex) {
+    std::optional<TextureBinding> shadowMap;
+    if (light && light->type == scene::LightType::Directional) {
+        shadowMap = screenShadows.mask(lightIndex);
+    } else if (light) {
+        shadowMap = shadows.map(lightIndex);
+    }
+    return shadowMap;
+}
+
 // One object's draws: ForwardBase with the main directional light (if any), then one ForwardAdd
 // per add light.
 Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t index,
@@ -94,13 +125,9 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
         storage.values.emplace_back(objectValues(scene, object, matrices, assignment));
     auto material = objectMaterial(what, object.material, shader->properties(), storage);
     if (!material) return material.error();
-    std::map<std::string, TextureBinding, std::less<>> lightmaps;
-    for (const char* name : {"unity_Lightmap", "unity_LightmapInd", "unity_DynamicLightmap",
-                             "unity_DynamicDirectionality", "unity_ShadowMask"}) {
-        auto texture = lightmapTexture(object, name);
-        if (!texture) return makeError(texture.error().code, what + ": " + texture.error().detail);
-        lightmaps.emplace(name, **texture);
-    }
+    auto lightmapsFound = lightmapBindings(object, what);
+    if (!lightmapsFound) return lightmapsFound.error();
+    const LightmapBindings lightmaps = std::move(*lightmapsFound);
 
     auto addDraw = [&](const char* lightMode, const scene::Light* light) -> Status {
         std::optional<reader::PassView> pass = shader->pass(std::string_view(lightMode));
@@ -108,13 +135,7 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
             return makeError(ErrorCode::NotFound,
                              what + ": the shader has no " + lightMode + " pass");
         const size_t lightIndex = light ? static_cast<size_t>(light - scene.lights.data()) : 0;
-        // Directional lights read their screen-space mask, the others their map.
-        std::optional<TextureBinding> shadowMap;
-        if (light && light->type == scene::LightType::Directional) {
-            shadowMap = screenShadows.mask(lightIndex);
-        } else if (light) {
-            shadowMap = shadows.map(lightIndex);
-        }
+        const std::optional<TextureBinding> shadowMap = shadowTexture(light, lightIndex);
         auto variant = pass->lookup(
             forwardLight(scene, object, light, assignment, shadowMap.has_value()),
                                     variants::SelectionPolicy::Closest);

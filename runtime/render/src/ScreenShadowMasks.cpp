@@ -69,6 +69,60 @@ Status ScreenShadowMasks::prepare(RendererBase& renderer, const scene::Camera& c
     return Ok{};
 }
 
+// Records the camera depth pass, then each light's collector draw into its mask, with the
+// layout transitions between them; the first failure to bind a draw, or Ok.
+Status ScreenShadowMasks::recordMasks(VkCommandBuffer commands, RendererBase& renderer,
+                                      const std::vector<Draw>& depthDraws,
+                                      const std::map<size_t, Draw>& collectorDraws,
+                                      uint32_t& drawCount) {
+    if (mSampledBefore) {
+        vulkan::transitionLayout(commands, mDepth->depthImage(), kDepthStencil,
+                                 {VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
+                                  VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, kDepthStages,
+                                  VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+                                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
+        for (auto& [light, mask] : mMasks) {
+            vulkan::transitionLayout(commands, mask.colorImage(), VK_IMAGE_ASPECT_COLOR_BIT,
+                                     {VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
+                                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT});
+        }
+    }
+    VkViewport viewport = mDepth->viewport();
+    VkRect2D area = mDepth->area();
+    mDepth->begin(commands, vulkan::LoadOp::Clear);
+    vkCmdSetViewport(commands, 0, 1, &viewport);
+    vkCmdSetScissor(commands, 0, 1, &area);
+    Status bound = recordDraws(commands, *renderer.resources, depthDraws, drawCount);
+    mDepth->end(commands);
+    vulkan::transitionLayout(
+        commands, mDepth->depthImage(), kDepthStencil,
+        {VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+         VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, kDepthStages,
+         VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+         VK_ACCESS_SHADER_READ_BIT});
+    for (auto& [light, mask] : mMasks) {
+        mask.begin(commands, vulkan::LoadOp::Clear);
+        vkCmdSetViewport(commands, 0, 1, &viewport);
+        vkCmdSetScissor(commands, 0, 1, &area);
+        if (bound) {
+            bound = recordDraws(commands, *renderer.resources, {collectorDraws.at(light)},
+                                drawCount);
+        }
+        mask.end(commands);
+        vulkan::transitionLayout(
+            commands, mask.colorImage(), VK_IMAGE_ASPECT_COLOR_BIT,
+            {VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+             VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+             VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+             VK_ACCESS_SHADER_READ_BIT});
+    }
+    return bound;
+}
+
 Status ScreenShadowMasks::render(RendererBase& renderer, const scene::Scene& scene,
                                  const ShadowMaps& shadows, const scene::CameraMatrices& matrices,
                                  std::vector<std::string>& drawn) {
@@ -135,51 +189,7 @@ Status ScreenShadowMasks::render(RendererBase& renderer, const scene::Scene& sce
     Status bound = Ok{};
     uint32_t drawCount = 0;
     Status submitted = renderer.context->submitAndWait([&](VkCommandBuffer commands) {
-        if (mSampledBefore) {
-            vulkan::transitionLayout(commands, mDepth->depthImage(), kDepthStencil,
-                                     {VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL,
-                                      VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, kDepthStages,
-                                      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                                          VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT});
-            for (auto& [light, mask] : mMasks) {
-                vulkan::transitionLayout(commands, mask.colorImage(), VK_IMAGE_ASPECT_COLOR_BIT,
-                                         {VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                                          VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
-                                          VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                          VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT});
-            }
-        }
-        VkViewport viewport = mDepth->viewport();
-        VkRect2D area = mDepth->area();
-        mDepth->begin(commands, vulkan::LoadOp::Clear);
-        vkCmdSetViewport(commands, 0, 1, &viewport);
-        vkCmdSetScissor(commands, 0, 1, &area);
-        bound = recordDraws(commands, *renderer.resources, depthDraws, drawCount);
-        mDepth->end(commands);
-        vulkan::transitionLayout(
-            commands, mDepth->depthImage(), kDepthStencil,
-            {VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-             VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL, kDepthStages,
-             VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-             VK_ACCESS_SHADER_READ_BIT});
-        for (auto& [light, mask] : mMasks) {
-            mask.begin(commands, vulkan::LoadOp::Clear);
-            vkCmdSetViewport(commands, 0, 1, &viewport);
-            vkCmdSetScissor(commands, 0, 1, &area);
-            if (bound) {
-                bound = recordDraws(commands, *renderer.resources, {collectorDraws.at(light)},
-                                    drawCount);
-            }
-            mask.end(commands);
-            vulkan::transitionLayout(
-                commands, mask.colorImage(), VK_IMAGE_ASPECT_COLOR_BIT,
-                {VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                 VK_ACCESS_SHADER_READ_BIT});
-        }
+        bound = recordMasks(commands, renderer, depthDraws, collectorDraws, drawCount);
     });
     mSampledBefore = true;
     if (Status reset = renderer.resources->reset(); !reset) return reset.error();

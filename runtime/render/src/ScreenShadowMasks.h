@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "Draw.h"
 #include "GpuMesh.h"
 #include "RendererBase.h"
 #include "ShadowMaps.h"
@@ -31,6 +32,10 @@ public:
     std::optional<TextureBinding> mask(size_t light) const;
 
 private:
+    // The command recording of render(): the depth pass, then the masks.
+    Status recordMasks(VkCommandBuffer commands, RendererBase& renderer,
+                       const std::vector<Draw>& depthDraws,
+                       const std::map<size_t, Draw>& collectorDraws, uint32_t& drawCount);
     Status prepare(RendererBase& renderer, const scene::Camera& camera,
                    const std::vector<size_t>& lights);
 

@@ -4,20 +4,9 @@
 
 #include "ProgramKeyword.h"
 #include "varc/core/Check.h"
+#include "varc/core/Trim.h"
 
 namespace varc::shaderlab {
-namespace {
-
-std::string_view trim(std::string_view text) {
-    constexpr std::string_view kSpace = " \t\r\n\f\v";
-    size_t first = text.find_first_not_of(kSpace);
-    if (first == std::string_view::npos) return {};
-    size_t last = text.find_last_not_of(kSpace);
-    return text.substr(first, last - first + 1);
-}
-
-}  // namespace
-
 const Token& TokenCursor::peek() {
     if (!mHasPeeked) {
         mPeeked = mLexer.next();

@@ -17,5 +17,11 @@ TEST(DiagnosticList, CountsOnlyErrors) {
     EXPECT_EQ(list.diagnostics()[1].location, (SourceLocation{0, 2, 3}));
 }
 
+TEST(Diagnostic, SeverityNamesAsCompilersPrintThem) {
+    EXPECT_STREQ(severityName(Severity::Note), "note");
+    EXPECT_STREQ(severityName(Severity::Warning), "warning");
+    EXPECT_STREQ(severityName(Severity::Error), "error");
+}
+
 }  // namespace
 }  // namespace varc

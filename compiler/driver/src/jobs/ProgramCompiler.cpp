@@ -115,6 +115,29 @@ std::vector<std::string> unknownVariables(const std::string& log) {
     return quotedNames(log, "' : unknown variable");
 }
 
+// Compiles |text|, then, while glslang's log asks for them, the HLSL rewrites of it.
+// glslang's HLSL parser stops at the first error, so what one rewrite fixes may uncover the
+// next (a call needing a cast, then a loop variable used after its loop): each round
+// rewrites the original text with everything the logs so far asked for. Either way the last
+// program's outcome is the one to report: its errors are the ones left once the constructs
+// Unity accepts are accepted.
+Attempt compileWithRewrites(const StageProgram& program, const std::string& text,
+                            const BuildOptions& options) {
+    Attempt attempt = compileAndValidate(program, text, options.optimization);
+    std::vector<std::string> calls, unknownNames;
+    std::string previous = text;
+    for (int round = 0; round < kMaxRewriteRounds && needsHlslRewrite(program, attempt); ++round) {
+        appendNew(calls, unmatchedCalls(attempt.compiled.log));
+        appendNew(unknownNames, unknownVariables(attempt.compiled.log));
+        std::string rewritten = frontend::hoistLoopVariables(
+            frontend::rewriteHlslForGlslang(text, calls), unknownNames);
+        if (rewritten == previous) break;
+        attempt = compileAndValidate(program, rewritten, options.optimization);
+        previous = std::move(rewritten);
+    }
+    return attempt;
+}
+
 }  // namespace
 
 CompiledSource compileStageProgram(const StageProgram& program, const BuildOptions& options,
@@ -159,23 +182,7 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
     std::string text = program.language == shaderlab::ProgramLanguage::Glsl
                            ? std::string(program.text)
                            : frontend::fixFrontFaceParameterTypes(program.text);
-    Attempt attempt = compileAndValidate(program, text, options.optimization);
-    // glslang's HLSL parser stops at the first error, so what one rewrite fixes may uncover the
-    // next (a call needing a cast, then a loop variable used after its loop): each round
-    // rewrites the original text with everything the logs so far asked for. Either way the last
-    // program's outcome is the one to report: its errors are the ones left once the constructs
-    // Unity accepts are accepted.
-    std::vector<std::string> calls, unknownNames;
-    std::string previous = text;
-    for (int round = 0; round < kMaxRewriteRounds && needsHlslRewrite(program, attempt); ++round) {
-        appendNew(calls, unmatchedCalls(attempt.compiled.log));
-        appendNew(unknownNames, unknownVariables(attempt.compiled.log));
-        std::string rewritten = frontend::hoistLoopVariables(
-            frontend::rewriteHlslForGlslang(text, calls), unknownNames);
-        if (rewritten == previous) break;
-        attempt = compileAndValidate(program, rewritten, options.optimization);
-        previous = std::move(rewritten);
-    }
+    Attempt attempt = compileWithRewrites(program, text, options);
     CompileOutput& compiled = attempt.compiled;
     result.diagnostics = parseGlslangLog(compiled.log, sourceMap);
     // glslang's link and "missing functionality" messages name no line: they belong to the

@@ -4,17 +4,9 @@
 
 #include <string_view>
 
+#include "varc/core/Trim.h"
+
 namespace varc::frontend::pruner {
-namespace {
-
-std::string_view trimRight(std::string_view s) {
-    while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) {
-        s.remove_suffix(1);
-    }
-    return s;
-}
-
-}  // namespace
 
 std::string PrunedTextWriter::write(const std::vector<const Declaration*>& kept) {
     mOut.clear();
@@ -35,7 +27,7 @@ std::string PrunedTextWriter::write(const std::vector<const Declaration*>& kept)
         std::string text;
         for (const auto& [begin, end] : pieces[line]) {
             if (!text.empty()) text += ' ';
-            text += trimRight(code.substr(begin, end - begin));
+            text += trimRight(code.substr(begin, end - begin), " \t\r");
         }
         if (!text.empty()) writeCode(line, text);
     }

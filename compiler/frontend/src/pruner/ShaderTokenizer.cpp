@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "varc/core/Trim.h"
+
 namespace varc::frontend::pruner {
 namespace {
 
@@ -16,12 +18,6 @@ bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isIdentChar(char c) { return isIdentStart(c) || isDigit(c); }
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && (isBlank(s.front()) || s.front() == '\n')) s.remove_prefix(1);
-    while (!s.empty() && (isBlank(s.back()) || s.back() == '\n')) s.remove_suffix(1);
-    return s;
-}
 
 }  // namespace
 
