@@ -278,15 +278,27 @@ def closure(sources, name):
 # ---------------------------------------------------------------------------------------------
 # Classification.
 # ---------------------------------------------------------------------------------------------
-SIMPLE_ARG = re.compile(r"[\w.]+|\w+\(\s*[-\d.,\sfh]*\)|-?\d+\.?\d*[fh]?")
+SIMPLE_ARG = re.compile(r"\(?([\w.#]+(\[\w+\])?|\w+\(\s*[-\d.,\sfh]*\)|-?\d+\.?\d*[fh]?)\)?")
 INTRINSICS = {"mul", "dot", "cross", "normalize", "saturate", "float2", "float3", "float4", "half2",
               "half3", "half4", "fixed2", "fixed3", "fixed4", "max", "min", "abs"}
+
+
+def alias_balanced(text):
+    depth = 0
+    for c in text:
+        depth += {"(": 1, ")": -1}.get(c, 0)
+        if depth < 0:
+            return False
+    return depth == 0
 
 
 def alias_target(expr):
     """The callee when |expr| is a constant, a name or one call passing names and literals
     through (an alias): '' for a constant or name, the callee's name for a call, None else."""
     e = " ".join(expr.split())
+    while e.startswith("(") and e.endswith(")") and len(split_top(e[1:-1])) == 1 \
+            and alias_balanced(e[1:-1]):
+        e = e[1:-1].strip()
     if not e or SIMPLE_ARG.fullmatch(e):
         return ""
     m = re.fullmatch(r"([A-Za-z_]\w*)\s*\((.*)\)(\.\w+)?", e)
@@ -439,6 +451,11 @@ def classify(row, sources, tested, triv):
             return "missing", "other parameter list"
         if arity is None and any(name in sources[f].variables for f in files):
             return "implemented", "as a variable"
+        funcs = [d for f in files for d in sources[f].functions.get(name, [])]
+        if arity is None and funcs:  # e.g. a name Unity re-#defines to another function
+            if name in tested or triv.defs(funcs):
+                return "implemented", "as a function"
+            return "declared", "as a function, not value-tested"
         return "missing", ""
     if kind == "function":
         want = tsv_params(sig)
@@ -606,6 +623,9 @@ CALL_PASS = {
     "UnityStandardMeta.cginc": ("Meta", ""),
     "UnityMetaPass.cginc": ("Meta", ""),
     "UnityStandardShadow.cginc": ("ShadowCaster", "#define _ALPHABLEND_ON"),
+    "UnityStandardParticleShadow.cginc": ("ShadowCaster", "#define _ALPHABLEND_ON"),
+    # A surface shader's include: SurfaceOutput comes from the Lighting.cginc it brings.
+    "TerrainSplatmapCommon.cginc": ("", '#include "Lighting.cginc"'),
 }
 
 

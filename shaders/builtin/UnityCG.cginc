@@ -493,6 +493,60 @@ void UnityApplyDitherCrossFade(float2 vpos) {
 #define UNITY_APPLY_DITHER_CROSSFADE(vpos)
 #endif
 
+// ---------------------------------------------------------------------------------------------
+// Helpers added for third-party shaders (issue #27, docs/BUILTIN_API.md).
+// ---------------------------------------------------------------------------------------------
+// True when the project renders in gamma colour space (UNITY_COLORSPACE_GAMMA); varc renders in
+// linear space, so false unless a shader defines that macro itself.
+inline bool IsGammaSpace() {
+#ifdef UNITY_COLORSPACE_GAMMA
+    return true;
+#else
+    return false;
+#endif
+}
+
+// Parallax mapping: the uv offset for a height sample h in [0, 1] of a map scaled by |height|,
+// seen along the tangent-space view direction viewDir. The height is centred on 0
+// (h * height - height / 2) and moved along the view's xy, divided by its z biased by 0.42 so
+// that grazing views stay bounded.
+inline float2 ParallaxOffset(half h, half height, half3 viewDir) {
+    float centred = h * height - height * 0.5;
+    float3 v = normalize(viewDir);
+    return centred * (v.xy / (v.z + 0.42));
+}
+
+// Terrain heightmaps. Vulkan does not guarantee sampling 16-bit unorm textures, so (as Unity
+// does where R16 is not guaranteed) a height h in [0, 1] is stored in two 8-bit channels:
+// r = the low byte, g = the high byte of round(h * 65535).
+#define API_HAS_GUARANTEED_R16_SUPPORT 0
+inline float UnpackHeightmap(float4 height) { return (height.r + height.g * 256.0) / 257.0; }
+inline float4 PackHeightmap(float height) {
+    float value = round(saturate(height) * 65535.0);
+    float high = floor(value / 256.0);
+    return float4((value - high * 256.0) / 255.0, high / 255.0, 0, 0);
+}
+
+// A normal-map texel (plain RGB, UNITY_NO_DXT5nm) to a tangent-space normal whose xy (the bump)
+// is scaled by |scale|; not renormalised.
+inline fixed3 UnpackNormalWithScale(fixed4 packednormal, float scale) {
+    fixed3 normal = packednormal.xyz * 2 - 1;
+    normal.xy *= scale;
+    return normal;
+}
+
+// The caster position of a float3 object-space vertex (w = 1).
+float4 UnityClipSpaceShadowCasterPos(float3 vertex, float3 normal) {
+    return UnityClipSpaceShadowCasterPos(float4(vertex, 1.0), normal);
+}
+
+// Clip-space z to a distance that is 0 at the near plane and grows towards the far plane (the fog
+// coordinate): Vulkan clip z is already 0 at near and not reversed (SHADER_ABI.md §2).
+#define UNITY_Z_0_FAR_FROM_CLIPSPACE(coord) max((coord), 0)
+
+// Single-pass stereo is not supported (see above): the eye's screen-space uv is the uv itself.
+#define TransformStereoScreenSpaceTex(uv, w) (uv)
+
 // Set when V2F_SHADOW_CASTER_NOPOS declares nothing: always, with depth cube maps.
 #define V2F_SHADOW_CASTER_NOPOS_IS_EMPTY
 #define SHADOWS_CUBE_IN_DEPTH_TEX
