@@ -11,9 +11,10 @@
 // api-value-tested: EncodeFloatRG DecodeFloatRG LinearToSRGB SRGBToLinear Gamma22ToLinear
 // api-value-tested: LinearToGamma22 LinearToST2084 ST2084ToLinear UnityMixRealtimeAndBakedShadows
 // api-value-tested: TriangleWave SmoothCurve SmoothTriangleWave TRANSFORM_TEX EncodeViewNormalStereo
-// api-value-tested: DecodeViewNormalStereo
+// api-value-tested: DecodeViewNormalStereo Stripe
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -298,6 +299,14 @@ TEST_F(BuiltinApiValueTest, TransformTexAndViewNormalEncoding) {
         auto n = viewNormal(u, v);
         return Vec4{n[0], n[1], n[2], 0};
     }, 3, 1e-4, 1e-4);
+}
+
+// Terrain-tool previews: an anti-aliased stripe, 1 on the line, 0 at pixelWidth from it.
+TEST_F(BuiltinApiValueTest, TerrainPreviewStripe) {
+    expectFormula("API_STRIPE", [](double u, double v) {
+        return Vec4{std::clamp(1.0 - std::abs(u - 0.5) / 0.2, 0.0, 1.0),
+                    std::clamp(1.0 - std::abs(v - 0.3) / 0.05, 0.0, 1.0), 0, 0};
+    }, 2, 1e-5, 1e-4);
 }
 
 }  // namespace

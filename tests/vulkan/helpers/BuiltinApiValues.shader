@@ -10,7 +10,7 @@ Shader "Test/BuiltinApiValues" {
             #pragma vertex vert
             #pragma fragment frag
             #pragma target 3.0
-            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL
+            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE
             #if defined(API_SHADOW_MIX)
                 // A realtime shadow and a baked shadow mask (no texture is declared for either).
                 #define SHADOWS_SCREEN
@@ -20,6 +20,7 @@ Shader "Test/BuiltinApiValues" {
             #include "UnityShadowLibrary.cginc"
             #include "UnityColorGamut.cginc"
             #include "TerrainEngine.cginc"
+            #include "TerrainPreview.cginc"
 
             struct Interpolators {
                 float4 pos : SV_POSITION;
@@ -72,6 +73,8 @@ Shader "Test/BuiltinApiValues" {
             #elif defined(API_VIEW_NORMAL)
                 float3 n = normalize(float3(u - 0.5, v - 0.5, 0.6));
                 return float4(DecodeViewNormalStereo(float4(EncodeViewNormalStereo(n), 0, 0)), 0);
+            #elif defined(API_STRIPE)
+                return float4(Stripe(u, 0.5, 0.2), Stripe(v, 0.3, 0.05), 0, 0);
             #else // API_TERRAIN_WAVES
                 float4 x = float4(u, v, 4 * u - 1.3, 3 * v + 0.2);
                 return float4(TriangleWave(x).x, SmoothCurve(x * 0.5 + 0.25).y, SmoothTriangleWave(x).z, SmoothTriangleWave(x).w);
