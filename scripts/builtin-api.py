@@ -637,7 +637,7 @@ def render(header, rows, results):
         byfile.setdefault(row["file"], []).append((row, res, note))
     for file, entries in byfile.items():
         c = collections.Counter(r for _, r, _ in entries)
-        w("| [`%s`](#%s) | %d | %d | %d | %d |" % (file, re.sub(r"[^a-z0-9]", "", file.lower()),
+        w("| [`%s`](#%s) | %d | %d | %d | %d |" % (file, re.sub(r"[^a-z0-9_-]", "", file.lower()),
                                                    c["implemented"], c["declared"], c["missing"],
                                                    len(entries)))
     for file, entries in byfile.items():
