@@ -207,8 +207,8 @@ TEST_F(BuiltinApiValueTest, GammaSpaceAndSrgbCurves) {
 TEST_F(BuiltinApiValueTest, ParallaxOffset) {
     expectFormula("API_PARALLAX", [](double u, double v) {
         std::array<double, 3> view{u - 0.5, v - 0.5, 0.3 + u};
-        auto a = parallax(u, 0.02 + 0.1 * v, view);
-        auto b = parallax(v, 0.08, {view[1], view[0], view[2]});
+        auto a = parallax(u, 0.2 + 0.5 * v, view);
+        auto b = parallax(v, 0.4, {view[1], view[0], view[2]});
         return Vec4{a[0], a[1], b[0], b[1]};
     }, 4, 1e-5, 1e-3);
 }

@@ -44,7 +44,7 @@ Shader "Test/BuiltinApiValues" {
                 return float4(GammaToLinearSpace(float3(u, v, u * v)), LinearToGammaSpaceExact(u) + GammaToLinearSpaceExact(v));
             #elif defined(API_PARALLAX)
                 float3 viewDir = float3(u - 0.5, v - 0.5, 0.3 + u);
-                return float4(ParallaxOffset(u, 0.02 + 0.1 * v, viewDir), ParallaxOffset(v, 0.08, viewDir.yxz));
+                return float4(ParallaxOffset(u, 0.2 + 0.5 * v, viewDir), ParallaxOffset(v, 0.4, viewDir.yxz));
             #elif defined(API_HEIGHTMAP)
                 return float4(UnpackHeightmap(float4(u, v, 0.3, 0.7)), UnpackHeightmap(PackHeightmap(u)), PackHeightmap(v).rg);
             #elif defined(API_NORMAL_SCALE)
