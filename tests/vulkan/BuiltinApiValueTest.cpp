@@ -11,7 +11,9 @@
 // api-value-tested: EncodeFloatRG DecodeFloatRG LinearToSRGB SRGBToLinear Gamma22ToLinear
 // api-value-tested: LinearToGamma22 LinearToST2084 ST2084ToLinear UnityMixRealtimeAndBakedShadows
 // api-value-tested: TriangleWave SmoothCurve SmoothTriangleWave TRANSFORM_TEX EncodeViewNormalStereo
-// api-value-tested: DecodeViewNormalStereo Stripe
+// api-value-tested: DecodeViewNormalStereo Stripe Linear01Depth LinearEyeDepth Squash UnityFlipSprite
+// api-value-tested: CustomRenderTextureRotate2D ScreenDitherToAlpha PaintContextUVToBrushUV
+// api-value-tested: PaintContextPixelsToBrushUV
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -117,12 +119,11 @@ protected:
     }
 
     // Draws the variant of |keyword| and returns the float image.
-    image::Image run(const std::string& keyword) {
+    image::Image run(const std::string& keyword, const ShaderValues& values) {
         reader::PassView pass = *mPack->findShader("Test/BuiltinApiValues")->pass(0);
         auto variant = pass.lookup({keyword}, variants::SelectionPolicy::Exact);
         EXPECT_TRUE(variant) << variant.error().detail;
         if (!variant) return {};
-        ShaderValues values;
         auto pipeline = VariantPipeline::create(
             context(), *variant, resolveRenderState(pass.renderState(), values),
             {mTarget->renderPass(vulkan::LoadOp::Clear), true, 1});
@@ -159,8 +160,8 @@ protected:
     // Runs |keyword| and compares the first |channels| channels of every pixel with |formula|
     // within |absolute| + |relative| * |expected|; reports the worst pixel.
     void expectFormula(const std::string& keyword, const Formula& formula, int channels,
-                       double absolute, double relative) {
-        image::Image image = run(keyword);
+                       double absolute, double relative, const ShaderValues& values = {}) {
+        image::Image image = run(keyword, values);
         ASSERT_EQ(image.width(), kSize) << keyword;
         double worst = 0, largest = 0;
         std::string where;
@@ -307,6 +308,66 @@ TEST_F(BuiltinApiValueTest, TerrainPreviewStripe) {
         return Vec4{std::clamp(1.0 - std::abs(u - 0.5) / 0.2, 0.0, 1.0),
                     std::clamp(1.0 - std::abs(v - 0.3) / 0.05, 0.0, 1.0), 0, 0};
     }, 2, 1e-5, 1e-4);
+}
+
+// Depth: with _ZBufferParams as SHADER_ABI.md §4.2 gives it, Linear01Depth(z) = 1 / (x z + y)
+// (eye depth / far) and LinearEyeDepth(z) = 1 / (z' z + w) (eye depth).
+TEST_F(BuiltinApiValueTest, LinearDepth) {
+    const double near = 0.3, far = 100.0;
+    const double x = 1.0 - far / near, y = far / near, z = x / far, w = 1.0 / near;
+    ShaderValues values;
+    values.set("_ZBufferParams", glm::vec4(float(x), float(y), float(z), float(w)));
+    expectFormula("API_DEPTH", [&](double u, double v) {
+        return Vec4{1.0 / (x * u + y), 1.0 / (z * v + w), 0, 0};
+    }, 2, 1e-5, 1e-4, values);
+}
+
+// Squash moves a vertex towards the plane (n, d) by 1 - amount; UnityFlipSprite multiplies xy by
+// the flip.
+TEST_F(BuiltinApiValueTest, SquashAndSpriteFlip) {
+    const double n[3] = {0.0, 0.6, 0.8}, d = -0.2, amount = 0.25;
+    ShaderValues values;
+    values.set("_SquashPlaneNormal", glm::vec4(float(n[0]), float(n[1]), float(n[2]), float(d)));
+    values.set("_SquashAmount", float(amount));
+    expectFormula("API_SQUASH_FLIP", [&](double u, double v) {
+        double p[3] = {u, v, u * v};
+        double distance = p[0] * n[0] + p[1] * n[1] + p[2] * n[2] + d;
+        Vec4 out{};
+        for (int c = 0; c < 3; ++c) {
+            double onPlane = p[c] - distance * n[c];
+            out[static_cast<size_t>(c)] = onPlane + (p[c] - onPlane) * amount;
+        }
+        out[3] = -u;
+        return out;
+    }, 4, 1e-5, 1e-4, values);
+}
+
+// A 2D rotation by angle (counter-clockwise); the LOD dither keeps coverage c0 of each 4 x 4
+// tile: the pixel whose ordered-dither threshold ((rank + 0.5) / 16, Bayer order) is below c0.
+TEST_F(BuiltinApiValueTest, RotationAndDither) {
+    static const int kRank[16] = {0, 8, 2, 10, 12, 4, 14, 6, 3, 11, 1, 9, 15, 7, 13, 5};
+    expectFormula("API_ROTATE_DITHER", [](double u, double v) {
+        double angle = v * 3.0;
+        int px = static_cast<int>(std::floor(u * 32.0)), py = static_cast<int>(std::floor(v * 32.0));
+        double threshold = (kRank[(py % 4) * 4 + px % 4] + 0.5) / 16.0;
+        return Vec4{u * std::cos(angle) - v * std::sin(angle), u * std::sin(angle) + v * std::cos(angle),
+                    u > threshold ? 1.0 : 0.0, 0};
+    }, 3, 1e-5, 1e-4);
+}
+
+// Terrain-tool paint contexts: affine maps set by the tool.
+TEST_F(BuiltinApiValueTest, PaintContextMaps) {
+    ShaderValues values;
+    values.set("_PCUVToBrushUVScales", glm::vec4(2.0f, 0.5f, -0.25f, 1.5f));
+    values.set("_PCUVToBrushUVOffset", glm::vec4(0.1f, -0.2f, 0.0f, 0.0f));
+    values.set("_BrushUV_PCPixelsX", glm::vec4(0.03f, 0.01f, 0.0f, 0.0f));
+    values.set("_BrushUV_PCPixelsY", glm::vec4(-0.02f, 0.04f, 0.0f, 0.0f));
+    values.set("_BrushUV_Offset", glm::vec4(0.5f, 0.25f, 0.0f, 0.0f));
+    expectFormula("API_PAINT", [](double u, double v) {
+        double px = u * 32.0, py = v * 32.0;
+        return Vec4{u * 2.0 + v * -0.25 + 0.1, u * 0.5 + v * 1.5 - 0.2,
+                    px * 0.03 + py * -0.02 + 0.5, px * 0.01 + py * 0.04 + 0.25};
+    }, 4, 1e-5, 1e-4, values);
 }
 
 }  // namespace

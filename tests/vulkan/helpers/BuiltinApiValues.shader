@@ -10,7 +10,7 @@ Shader "Test/BuiltinApiValues" {
             #pragma vertex vert
             #pragma fragment frag
             #pragma target 3.0
-            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE
+            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE API_DEPTH API_SQUASH_FLIP API_ROTATE_DITHER API_PAINT
             #if defined(API_SHADOW_MIX)
                 // A realtime shadow and a baked shadow mask (no texture is declared for either).
                 #define SHADOWS_SCREEN
@@ -21,6 +21,10 @@ Shader "Test/BuiltinApiValues" {
             #include "UnityColorGamut.cginc"
             #include "TerrainEngine.cginc"
             #include "TerrainPreview.cginc"
+            #include "TerrainTool.cginc"
+            #include "UnitySprites.cginc"
+            #include "UnityCustomRenderTexture.cginc"
+            #include "UnityBuiltin3xTreeLibrary.cginc"
 
             struct Interpolators {
                 float4 pos : SV_POSITION;
@@ -75,6 +79,15 @@ Shader "Test/BuiltinApiValues" {
                 return float4(DecodeViewNormalStereo(float4(EncodeViewNormalStereo(n), 0, 0)), 0);
             #elif defined(API_STRIPE)
                 return float4(Stripe(u, 0.5, 0.2), Stripe(v, 0.3, 0.05), 0, 0);
+            #elif defined(API_DEPTH)
+                return float4(Linear01Depth(u), LinearEyeDepth(v), 0, 0);
+            #elif defined(API_SQUASH_FLIP)
+                return float4(Squash(float4(u, v, u * v, 1)).xyz, UnityFlipSprite(float3(u, v, 0.3), fixed2(-1, 1)).x);
+            #elif defined(API_ROTATE_DITHER)
+                float2 pixel = floor(i.uv * 32.0) + 0.5;
+                return float4(CustomRenderTextureRotate2D(float2(u, v), v * 3.0), ScreenDitherToAlpha(pixel.x, pixel.y, u), 0);
+            #elif defined(API_PAINT)
+                return float4(PaintContextUVToBrushUV(float2(u, v)), PaintContextPixelsToBrushUV(float2(u, v) * 32.0));
             #else // API_TERRAIN_WAVES
                 float4 x = float4(u, v, 4 * u - 1.3, 3 * v + 0.2);
                 return float4(TriangleWave(x).x, SmoothCurve(x * 0.5 + 0.25).y, SmoothTriangleWave(x).z, SmoothTriangleWave(x).w);
