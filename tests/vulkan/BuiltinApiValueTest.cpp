@@ -13,7 +13,8 @@
 // api-value-tested: TriangleWave SmoothCurve SmoothTriangleWave TRANSFORM_TEX EncodeViewNormalStereo
 // api-value-tested: DecodeViewNormalStereo Stripe Linear01Depth LinearEyeDepth Squash UnityFlipSprite
 // api-value-tested: CustomRenderTextureRotate2D ScreenDitherToAlpha PaintContextUVToBrushUV
-// api-value-tested: PaintContextPixelsToBrushUV
+// api-value-tested: PaintContextPixelsToBrushUV UnityCalcTriEdgeTessFactors UnityDistanceFromPlane
+// api-value-tested: UnityCalcEdgeTessFactor
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -367,6 +368,23 @@ TEST_F(BuiltinApiValueTest, PaintContextMaps) {
         double px = u * 32.0, py = v * 32.0;
         return Vec4{u * 2.0 + v * -0.25 + 0.1, u * 0.5 + v * 1.5 - 0.2,
                     px * 0.03 + py * -0.02 + 0.5, px * 0.01 + py * 0.04 + 0.25};
+    }, 4, 1e-5, 1e-4, values);
+}
+
+// Tessellation factors: edges the mean of their two vertices' factors, inside the mean of
+// three; the signed distance to a plane; an edge's factor = its length * screen height /
+// (edgeLen * its middle's distance to the camera), at least 1.
+TEST_F(BuiltinApiValueTest, TessellationFactors) {
+    ShaderValues values;
+    values.set("_WorldSpaceCameraPos", glm::vec3(0.5f, 0.25f, -1.0f), 0.0f);
+    values.set("_ScreenParams", glm::vec4(640.0f, 480.0f, 1.0f + 1.0f / 640.0f, 1.0f + 1.0f / 480.0f));
+    expectFormula("API_TESSELLATION", [](double u, double v) {
+        double f0 = u * 8.0, f1 = v * 8.0, f2 = u * v * 8.0;
+        double mid[3] = {u + 0.25 - 0.5, v * 0.5 - 0.25, 2.0 + 1.0};
+        double dist = std::sqrt(mid[0] * mid[0] + mid[1] * mid[1] + mid[2] * mid[2]);
+        double len = std::sqrt(0.25 + v * v);
+        return Vec4{0.5 * (f1 + f2), (f0 + f1 + f2) / 3.0, 0.6 * u + 0.8 * v - 0.5,
+                    std::max(len * 480.0 / (4.0 * dist), 1.0)};
     }, 4, 1e-5, 1e-4, values);
 }
 

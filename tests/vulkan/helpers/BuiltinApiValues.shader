@@ -10,7 +10,7 @@ Shader "Test/BuiltinApiValues" {
             #pragma vertex vert
             #pragma fragment frag
             #pragma target 3.0
-            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE API_DEPTH API_SQUASH_FLIP API_ROTATE_DITHER API_PAINT
+            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE API_DEPTH API_SQUASH_FLIP API_ROTATE_DITHER API_PAINT API_TESSELLATION
             #if defined(API_SHADOW_MIX)
                 // A realtime shadow and a baked shadow mask (no texture is declared for either).
                 #define SHADOWS_SCREEN
@@ -25,6 +25,7 @@ Shader "Test/BuiltinApiValues" {
             #include "UnitySprites.cginc"
             #include "UnityCustomRenderTexture.cginc"
             #include "UnityBuiltin3xTreeLibrary.cginc"
+            #include "Tessellation.cginc"
 
             struct Interpolators {
                 float4 pos : SV_POSITION;
@@ -88,6 +89,10 @@ Shader "Test/BuiltinApiValues" {
                 return float4(CustomRenderTextureRotate2D(float2(u, v), v * 3.0), ScreenDitherToAlpha(pixel.x, pixel.y, u), 0);
             #elif defined(API_PAINT)
                 return float4(PaintContextUVToBrushUV(float2(u, v)), PaintContextPixelsToBrushUV(float2(u, v) * 32.0));
+            #elif defined(API_TESSELLATION)
+                float4 tess = UnityCalcTriEdgeTessFactors(float3(u, v, u * v) * 8.0);
+                return float4(tess.x, tess.w, UnityDistanceFromPlane(float3(u, v, 1), float4(0.6, 0.8, 0, -0.5)),
+                              UnityCalcEdgeTessFactor(float3(u, 0, 2), float3(u + 0.5, v, 2), 4.0));
             #else // API_TERRAIN_WAVES
                 float4 x = float4(u, v, 4 * u - 1.3, 3 * v + 0.2);
                 return float4(TriangleWave(x).x, SmoothCurve(x * 0.5 + 0.25).y, SmoothTriangleWave(x).z, SmoothTriangleWave(x).w);
