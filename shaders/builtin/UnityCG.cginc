@@ -547,6 +547,70 @@ float4 UnityClipSpaceShadowCasterPos(float3 vertex, float3 normal) {
 // Single-pass stereo is not supported (see above): the eye's screen-space uv is the uv itself.
 #define TransformStereoScreenSpaceTex(uv, w) (uv)
 
+// HDR texture decoding with the colour space given (colorspaceIsGamma: alpha^y is skipped, the
+// gamma-space encoding multiplies by alpha directly).
+inline half3 DecodeHDR(half4 data, half4 decodeInstructions, int colorspaceIsGamma) {
+    half alpha = decodeInstructions.w * (data.a - 1.0) + 1.0;
+    if (colorspaceIsGamma)
+        return (decodeInstructions.x * alpha) * data.rgb;
+    return (decodeInstructions.x * pow(abs(alpha), decodeInstructions.y)) * data.rgb;
+}
+
+// Other lightmap encodings (varc's runtime binds full-HDR lightmaps, SHADER_ABI.md; these decode
+// textures a shader holds itself). RGBM: rgb * x * a^y. Double LDR: rgb in [0, 2] stored halved,
+// times x (2 in gamma space, 2^2.2 = unity_ColorSpaceDouble in linear space).
+inline half3 DecodeLightmapRGBM(half4 data, half4 decodeInstructions) {
+    return (decodeInstructions.x * pow(abs(data.a), decodeInstructions.y)) * data.rgb;
+}
+inline half3 DecodeLightmapDoubleLDR(fixed4 color, half4 decodeInstructions) {
+    return decodeInstructions.x * color.rgb;
+}
+inline half3 DecodeLightmapDoubleLDR(fixed4 color) {
+    return unity_ColorSpaceDouble.rgb * color.rgb;
+}
+#define LIGHTMAP_RGBM_SCALE 5.0
+#define EMISSIVE_RGBM_SCALE 97.0
+
+// RGBM encoding of an HDR colour up to maxRGBM: rgb / maxRGBM divided by a multiplier a (the
+// largest channel, at least 1e-6, rounded up to 1/255) stored in alpha; rgb = data.rgb * a * maxRGBM.
+inline half4 UnityEncodeRGBM(half3 color, float maxRGBM) {
+    float3 scaled = color * (1.0 / maxRGBM);
+    float alpha = max(max(scaled.r, scaled.g), max(scaled.b, 1e-6));
+    alpha = ceil(alpha * 255.0) / 255.0;
+    return half4(scaled / alpha, alpha);
+}
+
+// Two-channel normal maps: x in the red channel or (BC5/DXT5nm) in alpha (x = r * a covers both
+// when the unused one is 1), y in green, z reconstructed for a unit vector.
+inline fixed3 UnpackNormalmapRGorAG(fixed4 packednormal) {
+    packednormal.x *= packednormal.w;
+    fixed3 normal;
+    normal.xy = packednormal.xy * 2 - 1;
+    normal.z = sqrt(1 - saturate(dot(normal.xy, normal.xy)));
+    return normal;
+}
+
+// The uv transformed by a matrix (a texture matrix): mul(mat, (uv, 0, 0)).xy.
+inline float2 MultiplyUV(float4x4 mat, float2 inUV) {
+    return mul(mat, float4(inUV, 0, 0)).xy;
+}
+
+// Depth-texture helpers of shaders that render depth themselves. Vulkan has native depth
+// textures, so, as on every such platform, there is nothing to transfer and the colour output is
+// 0 (Unity manual, "Depth textures").
+#define UNITY_TRANSFER_DEPTH(oo)
+#define UNITY_OUTPUT_DEPTH(i) return 0
+#define DECODE_EYEDEPTH(i) LinearEyeDepth(i)
+#define V2F_SCREEN_TYPE float4
+#define UNITY_HALF_MIN 6.103515625e-5
+
+// LOD cross-fade reads the pixel position (UNITY_APPLY_DITHER_CROSSFADE(vpos)); the older macros
+// that passed a dither coordinate through the interpolators declare and transfer nothing.
+#define UNITY_DITHER_CROSSFADE_COORDS
+#define UNITY_DITHER_CROSSFADE_COORDS_IDX(idx)
+#define UNITY_TRANSFER_DITHER_CROSSFADE(o, v)
+#define UNITY_TRANSFER_DITHER_CROSSFADE_HPOS(o, hpos)
+
 // Set when V2F_SHADOW_CASTER_NOPOS declares nothing: always, with depth cube maps.
 #define V2F_SHADOW_CASTER_NOPOS_IS_EMPTY
 #define SHADOWS_CUBE_IN_DEPTH_TEX

@@ -14,7 +14,8 @@
 // api-value-tested: DecodeViewNormalStereo Stripe Linear01Depth LinearEyeDepth Squash UnityFlipSprite
 // api-value-tested: CustomRenderTextureRotate2D ScreenDitherToAlpha PaintContextUVToBrushUV
 // api-value-tested: PaintContextPixelsToBrushUV UnityCalcTriEdgeTessFactors UnityDistanceFromPlane
-// api-value-tested: UnityCalcEdgeTessFactor
+// api-value-tested: UnityCalcEdgeTessFactor UnityEncodeRGBM DecodeLightmapRGBM MultiplyUV DecodeHDR
+// api-value-tested: UnpackNormalmapRGorAG DecodeLightmapDoubleLDR
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -386,6 +387,30 @@ TEST_F(BuiltinApiValueTest, TessellationFactors) {
         return Vec4{0.5 * (f1 + f2), (f0 + f1 + f2) / 3.0, 0.6 * u + 0.8 * v - 0.5,
                     std::max(len * 480.0 / (4.0 * dist), 1.0)};
     }, 4, 1e-5, 1e-4, values);
+}
+
+// RGBM: rgb / max divided by the largest channel rounded up to 1/255, which is stored in alpha;
+// decoding multiplies back (x = max, y = 1).
+TEST_F(BuiltinApiValueTest, RgbmEncoding) {
+    expectFormula("API_RGBM", [](double u, double v) {
+        double c[3] = {u * 4.0, v * 2.0, u * v};
+        double alpha = std::max(std::max(c[0] / 5.0, c[1] / 5.0), std::max(c[2] / 5.0, 1e-6));
+        alpha = std::ceil(alpha * 255.0) / 255.0;
+        return Vec4{c[0], c[1], c[2], alpha};
+    }, 4, 1e-4, 1e-3);
+}
+
+// MultiplyUV = (M (u, v, 0, 0)).xy; DecodeHDR = x * a^y * rgb in linear space and x * a * rgb in
+// gamma space (a = w (alpha - 1) + 1); RG/AG normals: x = r * a, y = g, z = sqrt(1 - x^2 - y^2)
+// after the * 2 - 1; double-LDR lightmaps: x * rgb.
+TEST_F(BuiltinApiValueTest, DecodingHelpers) {
+    expectFormula("API_DECODE_MISC", [](double u, double v) {
+        double gammaR = 3.0 * v * u;
+        double linearG = 3.0 * std::pow(v, 2.2) * v;
+        double nx = u * 2 - 1, ny = v * 2 - 1;
+        double nz = std::sqrt(1 - std::clamp(nx * nx + ny * ny, 0.0, 1.0));
+        return Vec4{2 * u + 0.5 * v, -1 * u + 3 * v, gammaR + linearG, nz + 2 * v};
+    }, 4, 1e-4, 1e-3);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@ Shader "Test/BuiltinApiValues" {
             #pragma vertex vert
             #pragma fragment frag
             #pragma target 3.0
-            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE API_DEPTH API_SQUASH_FLIP API_ROTATE_DITHER API_PAINT API_TESSELLATION
+            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE API_DEPTH API_SQUASH_FLIP API_ROTATE_DITHER API_PAINT API_TESSELLATION API_RGBM API_DECODE_MISC
             #if defined(API_SHADOW_MIX)
                 // A realtime shadow and a baked shadow mask (no texture is declared for either).
                 #define SHADOWS_SCREEN
@@ -93,6 +93,15 @@ Shader "Test/BuiltinApiValues" {
                 float4 tess = UnityCalcTriEdgeTessFactors(float3(u, v, u * v) * 8.0);
                 return float4(tess.x, tess.w, UnityDistanceFromPlane(float3(u, v, 1), float4(0.6, 0.8, 0, -0.5)),
                               UnityCalcEdgeTessFactor(float3(u, 0, 2), float3(u + 0.5, v, 2), 4.0));
+            #elif defined(API_RGBM)
+                half4 rgbm = UnityEncodeRGBM(half3(u * 4.0, v * 2.0, u * v), 5.0);
+                return float4(DecodeLightmapRGBM(rgbm, half4(5.0, 1.0, 0, 0)), rgbm.a);
+            #elif defined(API_DECODE_MISC)
+                float4x4 m = float4x4(2, 0.5, 0, 0.1, -1, 3, 0, 0.2, 0, 0, 1, 0, 0, 0, 0, 1);
+                return float4(MultiplyUV(m, float2(u, v)),
+                              DecodeHDR(half4(u, v, 0.5, v), half4(3.0, 2.2, 0, 1), 1).r
+                                  + DecodeHDR(half4(u, v, 0.5, v), half4(3.0, 2.2, 0, 1), 0).g,
+                              UnpackNormalmapRGorAG(half4(1, v, 0.5, u)).z + DecodeLightmapDoubleLDR(half4(u, v, 0, 1), half4(2, 0, 0, 0)).g);
             #else // API_TERRAIN_WAVES
                 float4 x = float4(u, v, 4 * u - 1.3, 3 * v + 0.2);
                 return float4(TriangleWave(x).x, SmoothCurve(x * 0.5 + 0.25).y, SmoothTriangleWave(x).z, SmoothTriangleWave(x).w);
