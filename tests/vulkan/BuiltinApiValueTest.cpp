@@ -15,7 +15,8 @@
 // api-value-tested: CustomRenderTextureRotate2D ScreenDitherToAlpha PaintContextUVToBrushUV
 // api-value-tested: PaintContextPixelsToBrushUV UnityCalcTriEdgeTessFactors UnityDistanceFromPlane
 // api-value-tested: UnityCalcEdgeTessFactor UnityEncodeRGBM DecodeLightmapRGBM MultiplyUV DecodeHDR
-// api-value-tested: UnpackNormalmapRGorAG DecodeLightmapDoubleLDR
+// api-value-tested: UnpackNormalmapRGorAG DecodeLightmapDoubleLDR UIGammaToLinear UnityGet2DClipping
+// api-value-tested: UnityGetUIDiffuseColor
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -410,6 +411,15 @@ TEST_F(BuiltinApiValueTest, DecodingHelpers) {
         double nx = u * 2 - 1, ny = v * 2 - 1;
         double nz = std::sqrt(1 - std::clamp(nx * nx + ny * ny, 0.0, 1.0));
         return Vec4{2 * u + 0.5 * v, -1 * u + 3 * v, gammaR + linearG, nz + 2 * v};
+    }, 4, 1e-4, 1e-3);
+}
+
+// UI: the sRGB decoding of gamma-space colours, the RectMask2D test (1 inside the rectangle,
+// edges included) and the two-texture diffuse colour (white textures: 1 + the sample add).
+TEST_F(BuiltinApiValueTest, UiHelpers) {
+    expectFormula("API_UI", [](double u, double v) {
+        bool inside = u >= 0.25 && u <= 0.75 && v >= 0.3 && v <= 0.6;
+        return Vec4{linearFromSrgb(u), linearFromSrgb(v), inside ? 1.0 : 0.0, 1.0 + u};
     }, 4, 1e-4, 1e-3);
 }
 
