@@ -16,7 +16,8 @@
 // api-value-tested: PaintContextPixelsToBrushUV UnityCalcTriEdgeTessFactors UnityDistanceFromPlane
 // api-value-tested: UnityCalcEdgeTessFactor UnityEncodeRGBM DecodeLightmapRGBM MultiplyUV DecodeHDR
 // api-value-tested: UnpackNormalmapRGorAG DecodeLightmapDoubleLDR UIGammaToLinear UnityGet2DClipping
-// api-value-tested: UnityGetUIDiffuseColor
+// api-value-tested: UnityGetUIDiffuseColor UnpackScaleNormalDXT5nm CreateTangentToWorldPerVertex
+// api-value-tested: CalculateSurfaceGradient PerturbNormal
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -421,6 +422,20 @@ TEST_F(BuiltinApiValueTest, UiHelpers) {
         bool inside = u >= 0.25 && u <= 0.75 && v >= 0.3 && v <= 0.6;
         return Vec4{linearFromSrgb(u), linearFromSrgb(v), inside ? 1.0 : 0.0, 1.0 + u};
     }, 4, 1e-4, 1e-3);
+}
+
+// DXT5nm normals (x in alpha, y in green) scaled in xy; the tangent frame's binormal
+// cross(n, t) * sign * unity_WorldTransformParams.w (-1 here: a mirroring object); the surface-
+// gradient bump n - (dhdx r1 + dhdy r2) / dot(dpdx, r1), normalised (r1 = dpdy x n, r2 = n x dpdx).
+TEST_F(BuiltinApiValueTest, NormalFrames) {
+    ShaderValues values;
+    values.set("unity_WorldTransformParams", glm::vec4(0.0f, 0.0f, 0.0f, -1.0f));
+    expectFormula("API_NORMAL_FRAME", [](double u, double v) {
+        double x = (u * 2 - 1) * 0.8, y = (v * 2 - 1) * 0.8;
+        double z = std::sqrt(1 - std::clamp(x * x + y * y, 0.0, 1.0));
+        double dhdx = u - 0.5, dhdy = v * 0.3;
+        return Vec4{x, z, v, -dhdx / std::sqrt(dhdx * dhdx + dhdy * dhdy + 1.0)};
+    }, 4, 1e-4, 1e-3, values);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@ Shader "Test/BuiltinApiValues" {
             #pragma vertex vert
             #pragma fragment frag
             #pragma target 3.0
-            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE API_DEPTH API_SQUASH_FLIP API_ROTATE_DITHER API_PAINT API_TESSELLATION API_RGBM API_DECODE_MISC API_UI
+            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE API_DEPTH API_SQUASH_FLIP API_ROTATE_DITHER API_PAINT API_TESSELLATION API_RGBM API_DECODE_MISC API_UI API_NORMAL_FRAME
             #if defined(API_SHADOW_MIX)
                 // A realtime shadow and a baked shadow mask (no texture is declared for either).
                 #define SHADOWS_SCREEN
@@ -27,6 +27,7 @@ Shader "Test/BuiltinApiValues" {
             #include "UnityBuiltin3xTreeLibrary.cginc"
             #include "Tessellation.cginc"
             #include "UnityUI.cginc"
+            #include "UnityStandardUtils.cginc"
 
             sampler2D _ApiMain, _ApiAlpha;  // the test binds white textures
 
@@ -109,6 +110,11 @@ Shader "Test/BuiltinApiValues" {
                 half3 linearColor = UIGammaToLinear(half3(u, v, 0));
                 return float4(linearColor.rg, UnityGet2DClipping(float2(u, v), float4(0.25, 0.3, 0.75, 0.6)),
                               UnityGetUIDiffuseColor(float2(u, v), _ApiMain, _ApiAlpha, fixed4(0.1, 0.2, 0.3, u)).a);
+            #elif defined(API_NORMAL_FRAME)
+                half3 dxt = UnpackScaleNormalDXT5nm(half4(0, v, 0, u), 0.8);
+                half3x3 frame = CreateTangentToWorldPerVertex(half3(0, 0, 1), half3(u, v, 0), 1);
+                half3 bumped = PerturbNormal(half3(0, 0, 1), half3(1, 0, 0), half3(0, 1, 0), u - 0.5, v * 0.3);
+                return float4(dxt.x, dxt.z, frame[1].x, bumped.x);
             #else // API_TERRAIN_WAVES
                 float4 x = float4(u, v, 4 * u - 1.3, 3 * v + 0.2);
                 return float4(TriangleWave(x).x, SmoothCurve(x * 0.5 + 0.25).y, SmoothTriangleWave(x).z, SmoothTriangleWave(x).w);
