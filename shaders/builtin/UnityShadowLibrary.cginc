@@ -122,7 +122,10 @@ inline half UnityMixRealtimeAndBakedShadows(half realtimeShadowAttenuation, half
 #endif
 }
 
-#if defined(SHADOWS_DEPTH) && !defined(SHADOWS_SCREEN)
+// The PCF functions read _ShadowMapTexture and its _TexelSize: the spot-light map declared above,
+// or one a shader (a screen-space shadow collector) declared itself before including this file,
+// saying so with SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED.
+#if (defined(SHADOWS_DEPTH) && !defined(SHADOWS_SCREEN)) || defined(SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED)
 // Percentage-closer filtering of the spot-light map with a tent of width 2 * halfWidth texels
 // (the area of the tent over each texel weights that texel's depth comparison); coord is the
 // shadow coordinate (divided by w here). receiverPlaneDepthBias is accepted and not used: varc's
@@ -146,6 +149,22 @@ inline half VarcSampleShadowmapTent(float4 coord, float halfWidth, int radius) {
 inline half UnitySampleShadowmap_PCF3x3(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 1.5, 2); }
 inline half UnitySampleShadowmap_PCF5x5(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 2.5, 3); }
 inline half UnitySampleShadowmap_PCF7x7(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 3.5, 4); }
+// The same tents under their explicit names, and the 3x3 filter of devices without compare
+// samplers (varc compares in the shader everywhere).
+inline half UnitySampleShadowmap_PCF3x3Tent(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 1.5, 2); }
+inline half UnitySampleShadowmap_PCF5x5Tent(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 2.5, 3); }
+inline half UnitySampleShadowmap_PCF7x7Tent(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 3.5, 4); }
+inline half UnitySampleShadowmap_PCF3x3NoHardwareSupport(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 1.5, 2); }
 #endif
+
+// Receiver-plane depth bias: varc's casters carry the bias (unity_LightShadowBias), so the
+// receiver's plane adds none: (0, 0, 0). A shadow coordinate offset by deltaUV texels' uv then
+// keeps the depth plus the plane's slope times the offset.
+float3 UnityGetReceiverPlaneDepthBias(float3 shadowCoord, float biasMultiply) {
+    return float3(0.0, 0.0, 0.0);
+}
+float3 UnityCombineShadowcoordComponents(float2 baseUV, float2 deltaUV, float depth, float3 receiverPlaneDepthBias) {
+    return float3(baseUV + deltaUV, depth + dot(deltaUV, receiverPlaneDepthBias.xy));
+}
 
 #endif // UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED

@@ -17,7 +17,8 @@
 // api-value-tested: UnityCalcEdgeTessFactor UnityEncodeRGBM DecodeLightmapRGBM MultiplyUV DecodeHDR
 // api-value-tested: UnpackNormalmapRGorAG DecodeLightmapDoubleLDR UIGammaToLinear UnityGet2DClipping
 // api-value-tested: UnityGetUIDiffuseColor UnpackScaleNormalDXT5nm CreateTangentToWorldPerVertex
-// api-value-tested: CalculateSurfaceGradient PerturbNormal
+// api-value-tested: CalculateSurfaceGradient PerturbNormal UnitySampleShadowmap_PCF3x3
+// api-value-tested: UnitySampleShadowmap_PCF5x5Tent UnitySampleShadowmap_PCF7x7 UnityCombineShadowcoordComponents
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -436,6 +437,18 @@ TEST_F(BuiltinApiValueTest, NormalFrames) {
         double dhdx = u - 0.5, dhdy = v * 0.3;
         return Vec4{x, z, v, -dhdx / std::sqrt(dhdx * dhdx + dhdy * dhdy + 1.0)};
     }, 4, 1e-4, 1e-3, values);
+}
+
+// The PCF tents over a map of depth 1 (white): their weights sum to 1, so a receiver in front of
+// it (depth <= 1) is fully lit and one behind it fully shadowed; UnityCombineShadowcoordComponents
+// adds the offset times the receiver plane's slope to the depth.
+TEST_F(BuiltinApiValueTest, ShadowFilters) {
+    ShaderValues values;
+    values.set("_ShadowMapTexture_TexelSize", glm::vec4(1.0f / 64, 1.0f / 64, 64.0f, 64.0f));
+    expectFormula("API_PCF", [](double u, double v) {
+        double lit = 2.0 * u <= 1.0 ? 1.0 : 0.0;  // receiver depth 2u against the map's 1
+        return Vec4{lit, lit, lit, v + 0.5 * 2 + 0.25 * 4};
+    }, 4, 1e-4, 1e-4, values);
 }
 
 }  // namespace

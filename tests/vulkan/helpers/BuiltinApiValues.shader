@@ -10,11 +10,17 @@ Shader "Test/BuiltinApiValues" {
             #pragma vertex vert
             #pragma fragment frag
             #pragma target 3.0
-            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE API_DEPTH API_SQUASH_FLIP API_ROTATE_DITHER API_PAINT API_TESSELLATION API_RGBM API_DECODE_MISC API_UI API_NORMAL_FRAME
+            #pragma multi_compile API_GAMMA API_GAMMA_EXACT API_PARALLAX API_HEIGHTMAP API_NORMAL_SCALE API_NORMAL API_ENCODE_FLOAT API_SRGB API_GAMMA22 API_PQ API_PRIMARIES API_SHADOW_MIX API_TERRAIN_WAVES API_TRANSFORM_TEX API_VIEW_NORMAL API_STRIPE API_DEPTH API_SQUASH_FLIP API_ROTATE_DITHER API_PAINT API_TESSELLATION API_RGBM API_DECODE_MISC API_UI API_NORMAL_FRAME API_PCF
             #if defined(API_SHADOW_MIX)
                 // A realtime shadow and a baked shadow mask (no texture is declared for either).
                 #define SHADOWS_SCREEN
                 #define SHADOWS_SHADOWMASK
+            #endif
+            #if defined(API_PCF)
+                // A collector's own shadow map (the test binds white: depth 1 everywhere).
+                #include "HLSLSupport.cginc"
+                UNITY_DECLARE_SHADOWMAP(_ShadowMapTexture);
+                #define SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED
             #endif
             #include "UnityCG.cginc"
             #include "UnityShadowLibrary.cginc"
@@ -115,6 +121,12 @@ Shader "Test/BuiltinApiValues" {
                 half3x3 frame = CreateTangentToWorldPerVertex(half3(0, 0, 1), half3(u, v, 0), 1);
                 half3 bumped = PerturbNormal(half3(0, 0, 1), half3(1, 0, 0), half3(0, 1, 0), u - 0.5, v * 0.3);
                 return float4(dxt.x, dxt.z, frame[1].x, bumped.x);
+            #elif defined(API_PCF)
+                float4 coord = float4(float2(u, v) * 2.0, u * 4.0, 2.0);  // depth 2u after the divide
+                float3 bias = UnityGetReceiverPlaneDepthBias(coord.xyz, 1.0);
+                return float4(UnitySampleShadowmap_PCF3x3(coord, bias), UnitySampleShadowmap_PCF5x5Tent(coord, bias),
+                              UnitySampleShadowmap_PCF7x7(coord, bias),
+                              UnityCombineShadowcoordComponents(float2(u, v), float2(0.5, 0.25), v, float3(2, 4, 0)).z);
             #else // API_TERRAIN_WAVES
                 float4 x = float4(u, v, 4 * u - 1.3, 3 * v + 0.2);
                 return float4(TriangleWave(x).x, SmoothCurve(x * 0.5 + 0.25).y, SmoothTriangleWave(x).z, SmoothTriangleWave(x).w);
