@@ -198,8 +198,8 @@ class Source:
                 if c == "{":
                     header = "".join(stmt).strip()
                     stmt = []
-                    if re.match(r"(cbuffer|tbuffer)\b", header):
-                        continue
+                    if re.match(r"(cbuffer|tbuffer)\b|uniform\s+\w+$", header):
+                        continue  # a uniform block: its members are globals
                     depth, block = 1, ("block", header, [], cond or line_cond)
                 elif c == "}":
                     stmt = []  # end of a cbuffer
