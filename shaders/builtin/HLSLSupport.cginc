@@ -146,4 +146,71 @@
 // Semi-transparent shadow casters dither against the 3D texture _DitherMaskLOD (SHADER_ABI.md §6).
 #define UNITY_USE_DITHER_MASK_FOR_ALPHABLENDED_SHADOWS 1
 
+// ---------------------------------------------------------------------------------------------
+// More of Unity's texture API (issue #27, docs/BUILTIN_API.md), in the same D3D11 style: texture
+// arrays, cube arrays and 3D textures with and without their own sampler, typed declarations,
+// and the argument-passing macros of each.
+// ---------------------------------------------------------------------------------------------
+#define UNITY_DECLARE_TEX2DARRAY(tex) Texture2DArray tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX2DARRAY_NOSAMPLER(tex) Texture2DArray tex
+#define UNITY_ARGS_TEX2DARRAY(tex) Texture2DArray tex, SamplerState sampler##tex
+#define UNITY_ARGS_TEX2DARRAY_NOSAMPLER(tex) Texture2DArray tex
+#define UNITY_PASS_TEX2DARRAY(tex) tex, sampler##tex
+#define UNITY_PASS_TEX2DARRAY_NOSAMPLER(tex) tex
+#define UNITY_SAMPLE_TEX2DARRAY(tex, coord) tex.Sample(sampler##tex, coord)
+#define UNITY_SAMPLE_TEX2DARRAY_LOD(tex, coord, lod) tex.SampleLevel(sampler##tex, coord, lod)
+#define UNITY_SAMPLE_TEX2DARRAY_SAMPLER(tex, samplertex, coord) tex.Sample(sampler##samplertex, coord)
+#define UNITY_SAMPLE_TEX2DARRAY_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
+
+#define UNITY_DECLARE_TEXCUBEARRAY(tex) TextureCubeArray tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEXCUBEARRAY_NOSAMPLER(tex) TextureCubeArray tex
+#define UNITY_ARGS_TEXCUBEARRAY(tex) TextureCubeArray tex, SamplerState sampler##tex
+#define UNITY_ARGS_TEXCUBEARRAY_NOSAMPLER(tex) TextureCubeArray tex
+#define UNITY_PASS_TEXCUBEARRAY(tex) tex, sampler##tex
+#define UNITY_PASS_TEXCUBEARRAY_NOSAMPLER(tex) tex
+#define UNITY_SAMPLE_TEXCUBEARRAY(tex, coord) tex.Sample(sampler##tex, coord)
+#define UNITY_SAMPLE_TEXCUBEARRAY_LOD(tex, coord, lod) tex.SampleLevel(sampler##tex, coord, lod)
+#define UNITY_SAMPLE_TEXCUBEARRAY_SAMPLER(tex, samplertex, coord) tex.Sample(sampler##samplertex, coord)
+#define UNITY_SAMPLE_TEXCUBEARRAY_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
+
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_HALF(tex) Texture2D<half4> tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_FLOAT(tex) Texture2D<float4> tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_INT(tex) Texture2D<int4> tex
+#define UNITY_DECLARE_TEX2D_NOSAMPLER_UINT(tex) Texture2D<uint4> tex
+#define UNITY_DECLARE_TEX3D_HALF(tex) Texture3D<half4> tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX3D_FLOAT(tex) Texture3D<float4> tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX3D_NOSAMPLER(tex) Texture3D tex
+#define UNITY_SAMPLE_TEX3D_LOD(tex, coord, lod) tex.SampleLevel(sampler##tex, coord, lod)
+#define UNITY_SAMPLE_TEX3D_SAMPLER(tex, samplertex, coord) tex.Sample(sampler##samplertex, coord)
+#define UNITY_SAMPLE_TEX3D_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
+#define UNITY_ARGS_TEXCUBE_NOSAMPLER(tex) TextureCube tex
+#define UNITY_PASS_TEXCUBE_NOSAMPLER(tex) tex
+
+// Texture types of a given precision (half is 32-bit here, like the precision types above).
+#define Texture2D_half Texture2D<half4>
+#define Texture2D_float Texture2D<float4>
+#define Texture2DArray_half Texture2DArray<half4>
+#define Texture2DArray_float Texture2DArray<float4>
+#define Texture2DMS_half Texture2DMS<half4>
+#define Texture2DMS_float Texture2DMS<float4>
+#define Texture3D_half Texture3D<half4>
+#define Texture3D_float Texture3D<float4>
+#define TextureCube_half TextureCube<half4>
+#define TextureCube_float TextureCube<float4>
+#define TextureCubeArray_half TextureCubeArray<half4>
+#define TextureCubeArray_float TextureCubeArray<float4>
+
+// Depth in .r, as SAMPLE_DEPTH_TEXTURE above; cube shadow maps compared like UNITY_SAMPLE_SHADOW
+// (coord.xyz the direction, coord.w the receiver's depth; 1 = lit).
+#define UNITY_SAMPLE_DEPTH(value) ((value).r)
+#define SAMPLE_DEPTH_CUBE_TEXTURE(sampler, uv) (texCUBE(sampler, uv).r)
+#define UNITY_SAMPLE_TEXCUBE_SHADOW(tex, coord) ((((coord).w) <= texCUBElod(tex, float4((coord).xyz, 0)).r) ? 1.0 : 0.0)
+
+// Uniform blocks: Unity's global-block and explicit-binding spellings. Bindings are assigned by
+// varc (docs/SHADER_ABI.md §1), so Set and Binding are ignored.
+#define GLOBAL_CBUFFER_START(name) CBUFFER_START(name)
+#define GLOBAL_CBUFFER_END CBUFFER_END
+#define CBUFFER_START_WITH_BINDING(Name, Set, Binding) CBUFFER_START(Name)
+#define DECL_WITH_BINDING(Type, Name, Set, Binding) Type Name
+
 #endif // HLSL_SUPPORT_INCLUDED

@@ -493,6 +493,124 @@ void UnityApplyDitherCrossFade(float2 vpos) {
 #define UNITY_APPLY_DITHER_CROSSFADE(vpos)
 #endif
 
+// ---------------------------------------------------------------------------------------------
+// Helpers added for third-party shaders (issue #27, docs/BUILTIN_API.md).
+// ---------------------------------------------------------------------------------------------
+// True when the project renders in gamma colour space (UNITY_COLORSPACE_GAMMA); varc renders in
+// linear space, so false unless a shader defines that macro itself.
+inline bool IsGammaSpace() {
+#ifdef UNITY_COLORSPACE_GAMMA
+    return true;
+#else
+    return false;
+#endif
+}
+
+// Parallax mapping: the uv offset for a height sample h in [0, 1] of a map scaled by |height|,
+// seen along the tangent-space view direction viewDir. The height is centred on 0
+// (h * height - height / 2) and moved along the view's xy, divided by its z biased by 0.42 so
+// that grazing views stay bounded.
+inline float2 ParallaxOffset(half h, half height, half3 viewDir) {
+    float centred = h * height - height * 0.5;
+    float3 v = normalize(viewDir);
+    return centred * (v.xy / (v.z + 0.42));
+}
+
+// Terrain heightmaps. Vulkan does not guarantee sampling 16-bit unorm textures, so (as Unity
+// does where R16 is not guaranteed) a height h in [0, 1] is stored in two 8-bit channels:
+// r = the low byte, g = the high byte of round(h * 65535).
+#define API_HAS_GUARANTEED_R16_SUPPORT 0
+inline float UnpackHeightmap(float4 height) { return (height.r + height.g * 256.0) / 257.0; }
+inline float4 PackHeightmap(float height) {
+    float value = round(saturate(height) * 65535.0);
+    float high = floor(value / 256.0);
+    return float4((value - high * 256.0) / 255.0, high / 255.0, 0, 0);
+}
+
+// A normal-map texel (plain RGB, UNITY_NO_DXT5nm) to a tangent-space normal whose xy (the bump)
+// is scaled by |scale|; not renormalised.
+inline fixed3 UnpackNormalWithScale(fixed4 packednormal, float scale) {
+    fixed3 normal = packednormal.xyz * 2 - 1;
+    normal.xy *= scale;
+    return normal;
+}
+
+// The caster position of a float3 object-space vertex (w = 1).
+float4 UnityClipSpaceShadowCasterPos(float3 vertex, float3 normal) {
+    return UnityClipSpaceShadowCasterPos(float4(vertex, 1.0), normal);
+}
+
+// Clip-space z to a distance that is 0 at the near plane and grows towards the far plane (the fog
+// coordinate): Vulkan clip z is already 0 at near and not reversed (SHADER_ABI.md §2).
+#define UNITY_Z_0_FAR_FROM_CLIPSPACE(coord) max((coord), 0)
+
+// Single-pass stereo is not supported (see above): the eye's screen-space uv is the uv itself.
+#define TransformStereoScreenSpaceTex(uv, w) (uv)
+
+// HDR texture decoding with the colour space given (colorspaceIsGamma: alpha^y is skipped, the
+// gamma-space encoding multiplies by alpha directly).
+inline half3 DecodeHDR(half4 data, half4 decodeInstructions, int colorspaceIsGamma) {
+    half alpha = decodeInstructions.w * (data.a - 1.0) + 1.0;
+    if (colorspaceIsGamma)
+        return (decodeInstructions.x * alpha) * data.rgb;
+    return (decodeInstructions.x * pow(abs(alpha), decodeInstructions.y)) * data.rgb;
+}
+
+// Other lightmap encodings (varc's runtime binds full-HDR lightmaps, SHADER_ABI.md; these decode
+// textures a shader holds itself). RGBM: rgb * x * a^y. Double LDR: rgb in [0, 2] stored halved,
+// times x (2 in gamma space, 2^2.2 = unity_ColorSpaceDouble in linear space).
+inline half3 DecodeLightmapRGBM(half4 data, half4 decodeInstructions) {
+    return (decodeInstructions.x * pow(abs(data.a), decodeInstructions.y)) * data.rgb;
+}
+inline half3 DecodeLightmapDoubleLDR(fixed4 color, half4 decodeInstructions) {
+    return decodeInstructions.x * color.rgb;
+}
+inline half3 DecodeLightmapDoubleLDR(fixed4 color) {
+    return unity_ColorSpaceDouble.rgb * color.rgb;
+}
+#define LIGHTMAP_RGBM_SCALE 5.0
+#define EMISSIVE_RGBM_SCALE 97.0
+
+// RGBM encoding of an HDR colour up to maxRGBM: rgb / maxRGBM divided by a multiplier a (the
+// largest channel, at least 1e-6, rounded up to 1/255) stored in alpha; rgb = data.rgb * a * maxRGBM.
+inline half4 UnityEncodeRGBM(half3 color, float maxRGBM) {
+    float3 scaled = color * (1.0 / maxRGBM);
+    float alpha = max(max(scaled.r, scaled.g), max(scaled.b, 1e-6));
+    alpha = ceil(alpha * 255.0) / 255.0;
+    return half4(scaled / alpha, alpha);
+}
+
+// Two-channel normal maps: x in the red channel or (BC5/DXT5nm) in alpha (x = r * a covers both
+// when the unused one is 1), y in green, z reconstructed for a unit vector.
+inline fixed3 UnpackNormalmapRGorAG(fixed4 packednormal) {
+    packednormal.x *= packednormal.w;
+    fixed3 normal;
+    normal.xy = packednormal.xy * 2 - 1;
+    normal.z = sqrt(1 - saturate(dot(normal.xy, normal.xy)));
+    return normal;
+}
+
+// The uv transformed by a matrix (a texture matrix): mul(mat, (uv, 0, 0)).xy.
+inline float2 MultiplyUV(float4x4 mat, float2 inUV) {
+    return mul(mat, float4(inUV, 0, 0)).xy;
+}
+
+// Depth-texture helpers of shaders that render depth themselves. Vulkan has native depth
+// textures, so, as on every such platform, there is nothing to transfer and the colour output is
+// 0 (Unity manual, "Depth textures").
+#define UNITY_TRANSFER_DEPTH(oo)
+#define UNITY_OUTPUT_DEPTH(i) return 0
+#define DECODE_EYEDEPTH(i) LinearEyeDepth(i)
+#define V2F_SCREEN_TYPE float4
+#define UNITY_HALF_MIN 6.103515625e-5
+
+// LOD cross-fade reads the pixel position (UNITY_APPLY_DITHER_CROSSFADE(vpos)); the older macros
+// that passed a dither coordinate through the interpolators declare and transfer nothing.
+#define UNITY_DITHER_CROSSFADE_COORDS
+#define UNITY_DITHER_CROSSFADE_COORDS_IDX(idx)
+#define UNITY_TRANSFER_DITHER_CROSSFADE(o, v)
+#define UNITY_TRANSFER_DITHER_CROSSFADE_HPOS(o, hpos)
+
 // Set when V2F_SHADOW_CASTER_NOPOS declares nothing: always, with depth cube maps.
 #define V2F_SHADOW_CASTER_NOPOS_IS_EMPTY
 #define SHADOWS_CUBE_IN_DEPTH_TEX

@@ -18,6 +18,13 @@
     UNITY_INSTANCING_BUFFER_END(unity_Builtins0)
     #define unity_ObjectToWorld UNITY_ACCESS_INSTANCED_PROP(unity_Builtins0, unity_ObjectToWorld)
     #define unity_WorldToObject UNITY_ACCESS_INSTANCED_PROP(unity_Builtins0, unity_WorldToObject)
+    // UnityObjectToClipPos (UnityShaderUtilities.cginc) was compiled against the plain matrix
+    // before the lines above: the instanced programs use these, with the instance's matrix.
+    inline float4 UnityObjectToClipPosInstanced(in float3 pos) {
+        return mul(UNITY_MATRIX_VP, mul(unity_ObjectToWorld, float4(pos, 1.0)));
+    }
+    inline float4 UnityObjectToClipPosInstanced(float4 pos) { return UnityObjectToClipPosInstanced(pos.xyz); }
+    #define UnityObjectToClipPos UnityObjectToClipPosInstanced
 #endif
 
 #endif // UNITY_INSTANCING_INCLUDED

@@ -14,6 +14,7 @@
 #include "UnityStandardBRDF.cginc"
 #include "UnityShadowLibrary.cginc"
 #include "UnityGlobalIllumination.cginc" // added for third-party shaders
+#include "UnityGBuffer.cginc"              // the _Deferred lighting functions
 
 // UNITY_BRDF_PBS(diffColor, specColor, oneMinusReflectivity, smoothness, normal, viewDir, light, gi)
 // A shader may #define UNITY_BRDF_PBS itself before including this file. The scalar arguments
@@ -77,6 +78,41 @@ inline void LightingStandard_GI(SurfaceOutputStandard s, UnityGIInput data, inou
 inline void LightingStandardSpecular_GI(SurfaceOutputStandardSpecular s, UnityGIInput data, inout UnityGI gi) {
     Unity_GlossyEnvironmentData g = UnityGlossyEnvironmentSetup(s.Smoothness, data.worldViewDir, s.Normal, s.Specular);
     gi = UnityGlobalIllumination(data, s.Occlusion, s.Normal, g);
+}
+
+// Deferred (G-buffer) forms of the Standard lighting functions: the surface goes to the G-buffer
+// (UnityStandardDataToGbuffer: diffuse colour and occlusion, specular colour and smoothness,
+// normal) and the return value is what the G-buffer pass adds to the emission target: the
+// lighting of |gi| (its light is black in a G-buffer pass, leaving the indirect part) plus
+// s.Emission, alpha 1.
+inline half4 LightingStandard_Deferred(SurfaceOutputStandard s, float3 viewDir, UnityGI gi,
+                                       out half4 outGBuffer0, out half4 outGBuffer1, out half4 outGBuffer2) {
+    half oneMinusReflectivity;
+    half3 specColor;
+    s.Albedo = DiffuseAndSpecularFromMetallic(s.Albedo, s.Metallic, specColor, oneMinusReflectivity);
+    half4 c = UNITY_BRDF_PBS(s.Albedo, specColor, oneMinusReflectivity, s.Smoothness, s.Normal, viewDir, gi.light, gi.indirect);
+    UnityStandardData data;
+    data.diffuseColor = s.Albedo;
+    data.occlusion = s.Occlusion;
+    data.specularColor = specColor;
+    data.smoothness = s.Smoothness;
+    data.normalWorld = s.Normal;
+    UnityStandardDataToGbuffer(data, outGBuffer0, outGBuffer1, outGBuffer2);
+    return half4(c.rgb + s.Emission, 1);
+}
+inline half4 LightingStandardSpecular_Deferred(SurfaceOutputStandardSpecular s, float3 viewDir, UnityGI gi,
+                                               out half4 outGBuffer0, out half4 outGBuffer1, out half4 outGBuffer2) {
+    half oneMinusReflectivity;
+    s.Albedo = EnergyConservationBetweenDiffuseAndSpecular(s.Albedo, s.Specular, oneMinusReflectivity);
+    half4 c = UNITY_BRDF_PBS(s.Albedo, s.Specular, oneMinusReflectivity, s.Smoothness, s.Normal, viewDir, gi.light, gi.indirect);
+    UnityStandardData data;
+    data.diffuseColor = s.Albedo;
+    data.occlusion = s.Occlusion;
+    data.specularColor = s.Specular;
+    data.smoothness = s.Smoothness;
+    data.normalWorld = s.Normal;
+    UnityStandardDataToGbuffer(data, outGBuffer0, outGBuffer1, outGBuffer2);
+    return half4(c.rgb + s.Emission, 1);
 }
 
 #endif // UNITY_PBS_LIGHTING_INCLUDED

@@ -104,4 +104,67 @@ half UnityComputeShadowFade(float fadeDist) {
     return saturate(fadeDist * _LightShadowData.z + _LightShadowData.w);
 }
 
+// ---------------------------------------------------------------------------------------------
+// Realtime and baked shadows together (issue #27). realtimeShadowAttenuation: the realtime
+// shadow (1 = lit); bakedShadowAttenuation: the baked shadow mask (1 = lit); fade: the distance
+// fade above (0 = full realtime shadow, 1 = realtime shadow gone). Without a realtime shadow
+// keyword only the baked shadow counts; with a shadow mask (SHADOWS_SHADOWMASK) the faded
+// realtime shadow and the baked one are combined by min; otherwise (varc has no subtractive
+// mixing) the realtime shadow fades out: saturate(realtime + fade).
+// ---------------------------------------------------------------------------------------------
+inline half UnityMixRealtimeAndBakedShadows(half realtimeShadowAttenuation, half bakedShadowAttenuation, half fade) {
+#if !defined(SHADOWS_DEPTH) && !defined(SHADOWS_SCREEN) && !defined(SHADOWS_CUBE)
+    return bakedShadowAttenuation;
+#elif defined(SHADOWS_SHADOWMASK)
+    return min(saturate(realtimeShadowAttenuation + fade), bakedShadowAttenuation);
+#else
+    return saturate(realtimeShadowAttenuation + fade);
+#endif
+}
+
+// The PCF functions read _ShadowMapTexture and its _TexelSize: the spot-light map declared above,
+// or one a shader (a screen-space shadow collector) declared itself before including this file,
+// saying so with SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED.
+#if (defined(SHADOWS_DEPTH) && !defined(SHADOWS_SCREEN)) || defined(SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED)
+// Percentage-closer filtering of the spot-light map with a tent of width 2 * halfWidth texels
+// (the area of the tent over each texel weights that texel's depth comparison); coord is the
+// shadow coordinate (divided by w here). receiverPlaneDepthBias is accepted and not used: varc's
+// casters carry the bias (unity_LightShadowBias). 1 = lit, before the shadow strength.
+inline half VarcSampleShadowmapTent(float4 coord, float halfWidth, int radius) {
+    float3 c = coord.xyz / coord.w;
+    float2 position = c.xy * _ShadowMapTexture_TexelSize.zw;
+    float2 centre = floor(position + 0.5);
+    float2 offset = position - centre;
+    half lit = 0.0;
+    for (int j = -radius; j < radius; ++j) {
+        float wy = UnityShadowTentArea(j + 1 - offset.y, halfWidth) - UnityShadowTentArea(j - offset.y, halfWidth);
+        for (int i = -radius; i < radius; ++i) {
+            float wx = UnityShadowTentArea(i + 1 - offset.x, halfWidth) - UnityShadowTentArea(i - offset.x, halfWidth);
+            float2 uv = (centre + float2(i, j) + 0.5) * _ShadowMapTexture_TexelSize.xy;
+            lit += wx * wy * UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(uv, c.z));
+        }
+    }
+    return lit;
+}
+inline half UnitySampleShadowmap_PCF3x3(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 1.5, 2); }
+inline half UnitySampleShadowmap_PCF5x5(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 2.5, 3); }
+inline half UnitySampleShadowmap_PCF7x7(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 3.5, 4); }
+// The same tents under their explicit names, and the 3x3 filter of devices without compare
+// samplers (varc compares in the shader everywhere).
+inline half UnitySampleShadowmap_PCF3x3Tent(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 1.5, 2); }
+inline half UnitySampleShadowmap_PCF5x5Tent(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 2.5, 3); }
+inline half UnitySampleShadowmap_PCF7x7Tent(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 3.5, 4); }
+inline half UnitySampleShadowmap_PCF3x3NoHardwareSupport(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 1.5, 2); }
+#endif
+
+// Receiver-plane depth bias: varc's casters carry the bias (unity_LightShadowBias), so the
+// receiver's plane adds none: (0, 0, 0). A shadow coordinate offset by deltaUV texels' uv then
+// keeps the depth plus the plane's slope times the offset.
+float3 UnityGetReceiverPlaneDepthBias(float3 shadowCoord, float biasMultiply) {
+    return float3(0.0, 0.0, 0.0);
+}
+float3 UnityCombineShadowcoordComponents(float2 baseUV, float2 deltaUV, float depth, float3 receiverPlaneDepthBias) {
+    return float3(baseUV + deltaUV, depth + dot(deltaUV, receiverPlaneDepthBias.xy));
+}
+
 #endif // UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED

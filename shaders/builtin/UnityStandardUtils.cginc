@@ -98,4 +98,43 @@ inline float2 ParallaxOffset1Step(half h, half height, half3 viewDir) {
     return h * (v.xy / v.z);
 }
 
+// ---------------------------------------------------------------------------------------------
+// More normal helpers (issue #27).
+// ---------------------------------------------------------------------------------------------
+// Two-channel (DXT5nm: x in alpha, y in green) normal with xy scaled by bumpScale, z rebuilt.
+half3 UnpackScaleNormalDXT5nm(half4 packednormal, half bumpScale) {
+    half3 normal;
+    normal.xy = (packednormal.wy * 2 - 1) * bumpScale;
+    normal.z = sqrt(1.0 - saturate(dot(normal.xy, normal.xy)));
+    return normal;
+}
+
+// Rows tangent, binormal, normal of the tangent-to-world rotation; the binormal's sign is the
+// tangent's w times unity_WorldTransformParams.w (negative for mirroring transforms).
+half3x3 CreateTangentToWorldPerVertex(half3 normal, half3 tangent, half tangentSign) {
+    half sign = tangentSign * unity_WorldTransformParams.w;
+    half3 binormal = cross(normal, tangent) * sign;
+    return half3x3(tangent, binormal, normal);
+}
+
+// Bump mapping without tangents (surface gradients, M. Mikkelsen, "Bump Mapping Unparametrized
+// Surfaces on the GPU", 2010): the height's screen-space derivatives dhdx, dhdy and the
+// position's dpdx, dpdy give the surface gradient; the perturbed normal is n minus it.
+half3 CalculateSurfaceGradient(half3 n, half3 dpdx, half3 dpdy, half dhdx, half dhdy) {
+    half3 r1 = cross(dpdy, n);
+    half3 r2 = cross(n, dpdx);
+    return (r1 * dhdx + r2 * dhdy) / dot(dpdx, r1);
+}
+half3 PerturbNormal(half3 n, half3 dpdx, half3 dpdy, half dhdx, half dhdy) {
+    return normalize(n - CalculateSurfaceGradient(n, dpdx, dpdy, dhdx, dhdy));
+}
+// The same from a height gradient in uv space (fragment stage: screen-space derivatives).
+half3 CalculateSurfaceNormal(half3 position, half3 normal, half2 gradient, half2 uv) {
+    half3 dpdx = ddx(position);
+    half3 dpdy = ddy(position);
+    half dhdx = dot(gradient, ddx(uv));
+    half dhdy = dot(gradient, ddy(uv));
+    return PerturbNormal(normal, dpdx, dpdy, dhdx, dhdy);
+}
+
 #endif // UNITY_STANDARD_UTILS_INCLUDED

@@ -12,4 +12,20 @@ inline float UnityGet2DClipping(in float2 position, in float4 clipRect) {
     return inside.x * inside.y;
 }
 
+// sRGB-encoded (gamma) colour to linear, per channel (IEC 61966-2-1): UI shaders convert vertex
+// colours authored in gamma space when the project renders in linear space.
+inline half3 UIGammaToLinear(half3 value) {
+    half3 low = value / 12.92;
+    half3 high = pow((value + 0.055) / 1.055, 2.4);
+    return half3(value.r <= 0.04045 ? low.r : high.r, value.g <= 0.04045 ? low.g : high.g,
+                 value.b <= 0.04045 ? low.b : high.b);
+}
+
+// Colour of a UI texture split in two (ETC1: rgb in mainTexture, alpha in alphaTexture.r), plus
+// the canvas's _TextureSampleAdd.
+inline fixed4 UnityGetUIDiffuseColor(in float2 position, in sampler2D mainTexture, in sampler2D alphaTexture, fixed4 textureSampleAdd) {
+    return fixed4(tex2D(mainTexture, position).rgb + textureSampleAdd.rgb,
+                  tex2D(alphaTexture, position).r + textureSampleAdd.a);
+}
+
 #endif // UNITY_UI_INCLUDED

@@ -3,6 +3,8 @@
 // normals (tests/vulkan/helpers/BuiltinHelpers.shader), against its CPU formula from
 // docs/LIGHTING.md as implemented by varc::reference (docs/LIGHTING.md §9.2): Shade4PointLights,
 // ShadeSH9, UNITY_LIGHT_ATTENUATION per light type, and UNITY_BRDF_PBS.
+// api-value-tested: Shade4PointLights ShadeSH9 UNITY_LIGHT_ATTENUATION UNITY_BRDF_PBS BRDF1_Unity_PBS
+// api-value-tested: DiffuseAndSpecularFromMetallic
 #include <gtest/gtest.h>
 
 #include <cmath>
