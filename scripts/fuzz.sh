@@ -11,11 +11,18 @@ seconds=${VARC_FUZZ_SECONDS:-60}
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(pack_reader shaderlab include front_end scene)
 
-cxx=$(command -v clang++-14 || command -v clang++ || true)
-[ -n "$cxx" ] || { echo "fuzz: clang++ not found (scripts/install-deps.sh installs clang-14)"; exit 1; }
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$cxx" \
-      -DVARC_BUILD_FUZZERS=ON -DVARC_SANITIZE="address;undefined" -DVARC_BUILD_TESTS=OFF \
-      -DVARC_BUILD_BENCH=OFF -DVARC_ENABLE_VULKAN_TESTS=OFF -DVARC_WERROR=OFF >/dev/null
+# VARC_FUZZ_REUSE_BUILD=1: $build is a configured tree with VARC_BUILD_FUZZERS=ON (the sanitizer
+# job's, scripts/test.sh --sanitize); only the fuzz targets are built in it.
+if [ "${VARC_FUZZ_REUSE_BUILD:-}" != 1 ]; then
+    cxx=$(command -v clang++-14 || command -v clang++ || true)
+    [ -n "$cxx" ] || { echo "fuzz: clang++ not found (scripts/install-deps.sh installs clang-14)"; exit 1; }
+    cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+          -DCMAKE_CXX_COMPILER="$cxx" -DVARC_BUILD_FUZZERS=ON -DVARC_SANITIZE="address;undefined" \
+          -DVARC_BUILD_TESTS=OFF -DVARC_BUILD_BENCH=OFF -DVARC_ENABLE_VULKAN_TESTS=OFF \
+          -DVARC_WERROR=OFF >/dev/null
+elif ! grep -q '^VARC_BUILD_FUZZERS:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null; then
+    echo "fuzz: $build is not a tree configured with VARC_BUILD_FUZZERS=ON"; exit 1
+fi
 cmake --build "$build" -j "$(nproc)" --target varc_fuzzers
 
 # UBSan findings are errors, not warnings; glslang's process-wide pools are freed at exit.

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "varc/driver/ParallelFor.h"
@@ -44,13 +46,24 @@ TEST(ParallelFor, HandlesZeroItems) {
 
 // A throwing job (glslang can throw; std::bad_alloc can happen anywhere) reaches the caller as
 // an exception, whichever thread ran it, and later jobs are not started.
+// Jobs after the failing one wait until it has thrown and then take a millisecond, so that
+// "stops the rest" does not depend on how the machine schedules the threads: the pool would
+// have to miss the failure for seconds to run all 10000 (it was flaky when the jobs were
+// instant and a loaded machine let three threads run them all before the failure was seen).
 TEST(ParallelFor, AJobThatThrowsReachesTheCallerAndStopsTheRest) {
     for (unsigned threads : {1u, 4u}) {
         std::atomic<size_t> ran{0};
+        std::atomic<bool> thrown{false};
         try {
             parallelFor(10000, threads, [&](size_t i) {
                 ran.fetch_add(1);
-                if (i == 3) throw std::runtime_error("job 3 failed");
+                if (i == 3) {
+                    thrown.store(true);
+                    throw std::runtime_error("job 3 failed");
+                }
+                if (i < 3) return;
+                while (!thrown.load()) std::this_thread::yield();
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
             });
             ADD_FAILURE() << "no exception with " << threads << " threads";
         } catch (const std::runtime_error& e) {
