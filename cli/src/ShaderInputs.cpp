@@ -3,8 +3,12 @@
 #include "varc/cli/ShaderInputs.h"
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
+#include <fstream>
 #include <set>
+
+#include "varc/pack/PackFormat.h"
 
 namespace varc::cli {
 
@@ -26,6 +30,14 @@ std::vector<std::string> shadersUnder(const fs::path& dir, DiagnosticSink& sink)
     return found;
 }
 
+// Whether |path| starts with a pack's magic: a pack handed to a command that reads shader
+// sources would otherwise be read as text and its bytes quoted as source context.
+bool isPack(const std::string& path) {
+    std::array<char, pack::kMagic.size()> head{};
+    std::ifstream in(path, std::ios::binary);
+    return in.read(head.data(), static_cast<std::streamsize>(head.size())) && head == pack::kMagic;
+}
+
 }  // namespace
 
 std::vector<std::string> findShaderFiles(const std::vector<std::string>& paths,
@@ -41,6 +53,9 @@ std::vector<std::string> findShaderFiles(const std::vector<std::string>& paths,
         std::error_code ec;
         if (fs::is_directory(path, ec)) {
             for (const std::string& file : shadersUnder(path, sink)) add(file);
+        } else if (fs::is_regular_file(path, ec) && isPack(path)) {
+            sink.error({}, "'" + path + "' is a varc pack, not a shader source (varc info " +
+                               "shows what a pack holds)");
         } else if (fs::is_regular_file(path, ec)) {
             add(path);
         } else {

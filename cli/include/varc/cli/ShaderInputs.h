@@ -10,7 +10,8 @@
 namespace varc::cli {
 
 // Files are taken as given; directories are searched recursively for `*.shader` files, sorted
-// by path so output is stable. A missing path is an error. Duplicates are dropped.
+// by path so output is stable. A missing path is an error, and so is a pack given as a file
+// (one sentence naming it, not its bytes quoted as source). Duplicates are dropped.
 std::vector<std::string> findShaderFiles(const std::vector<std::string>& paths,
                                          DiagnosticSink& sink);
 
