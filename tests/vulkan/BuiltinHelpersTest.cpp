@@ -12,7 +12,7 @@
 #include <utility>
 #include <glm/gtc/constants.hpp>
 
-#include "VulkanTestSupport.h"
+#include "QuadDrawTest.h"
 #include "varc/reader/Pack.h"
 #include "varc/reader/PassView.h"
 #include "varc/reader/ShaderView.h"
@@ -46,65 +46,14 @@ glm::vec3 sphereNormal(glm::vec2 uv) {
             std::cos(latitude) * std::sin(longitude)};
 }
 
-// A quad over the whole target whose uv runs 0..1 with the framebuffer's x and y.
-std::vector<MeshVertex> fullQuad() {
-    auto vertex = [](float x, float y) {
-        return MeshVertex{{x, y, 0.5f},
-                          {0, 0, 1},
-                          {1, 0, 0, 1},
-                          {x * 0.5f + 0.5f, y * 0.5f + 0.5f},
-                          {1, 1, 1, 1}};
-    };
-    MeshVertex a = vertex(-1, -1), b = vertex(1, -1), c = vertex(1, 1), d = vertex(-1, 1);
-    return {a, b, c, a, c, d};
-}
-
-class BuiltinHelpersTest : public testing::VulkanTest {
+class BuiltinHelpersTest : public testing::QuadDrawTest {
 protected:
-    void SetUp() override {
-        VulkanTest::SetUp();
-        if (HasFatalFailure()) return;
-        auto pack = reader::Pack::open(VARC_TEST_PACK_DIR "/helpers.svpack");
-        ASSERT_TRUE(pack) << pack.error().detail;
-        mPack.emplace(std::move(*pack));
-        vulkan::RenderTargetDesc desc;
-        desc.width = desc.height = kSize;
-        desc.color = vulkan::ColorFormat::Rgba32Float;
-        auto target = vulkan::RenderTarget::create(context(), desc);
-        ASSERT_TRUE(target) << target.error().detail;
-        mTarget.emplace(std::move(*target));
-        auto textures = BuiltinTextures::create(context());
-        ASSERT_TRUE(textures) << textures.error().detail;
-        mTextures.emplace(std::move(*textures));
-        auto resources = DrawResources::create(context(), 1u << 20, 16);
-        ASSERT_TRUE(resources) << resources.error().detail;
-        mResources.emplace(std::move(*resources));
-        std::vector<MeshVertex> quad = fullQuad();
-        auto vertices = vulkan::Buffer::createWithData(context(), std::as_bytes(std::span(quad)),
-                                                       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-        ASSERT_TRUE(vertices) << vertices.error().detail;
-        mQuad.emplace(std::move(*vertices));
-    }
-    void TearDown() override {
-        mQuad.reset();
-        mResources.reset();
-        mTextures.reset();
-        mTarget.reset();
-        VulkanTest::TearDown();
-    }
+    BuiltinHelpersTest() : QuadDrawTest(kSize) {}
 
     // Draws the variant with |keywords| and returns the float image.
     image::Image run(const std::vector<std::string>& keywords, const ShaderValues& values,
                      const scene::Light* light) {
         reader::PassView pass = *mPack->findShader("Test/BuiltinHelpers")->pass(0);
-        auto variant = pass.lookup(keywords, variants::SelectionPolicy::Exact);
-        EXPECT_TRUE(variant) << variant.error().detail;
-        if (!variant) return {};
-        auto pipeline = VariantPipeline::create(
-            context(), *variant, resolveRenderState(pass.renderState(), values),
-            {mTarget->renderPass(vulkan::LoadOp::Clear), true, 1});
-        EXPECT_TRUE(pipeline) << pipeline.error().detail;
-        if (!pipeline) return {};
         const BuiltinTextures& builtin = *mTextures;
         scene::LightType type = light ? light->type : scene::LightType::Directional;
         bool cookie = light && light->cookie != "none";
@@ -113,28 +62,7 @@ protected:
             if (auto texture = builtin.lightTexture(name, dim, type, cookie, false)) return texture;
             return builtin.named("white", dim);
         };
-        const ShaderValues* layers[] = {&values};
-        Status bound = Ok{};
-        Status submitted = context().submitAndWait([&](VkCommandBuffer commands) {
-            mTarget->begin(commands, vulkan::LoadOp::Clear);
-            VkViewport viewport = mTarget->viewport();
-            VkRect2D area = mTarget->area();
-            vkCmdSetViewport(commands, 0, 1, &viewport);
-            vkCmdSetScissor(commands, 0, 1, &area);
-            vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline->pipeline());
-            bound = mResources->bind(commands, *pipeline, layers, textures);
-            VkBuffer buffer = mQuad->handle();
-            VkDeviceSize offset = 0;
-            vkCmdBindVertexBuffers(commands, 0, 1, &buffer, &offset);
-            if (bound) vkCmdDraw(commands, 6, 1, 0, 0);
-            mTarget->end(commands);
-        });
-        EXPECT_TRUE(bound) << bound.error().detail;
-        EXPECT_TRUE(submitted) << submitted.error().detail;
-        EXPECT_TRUE(mResources->reset());
-        auto image = mTarget->readback(context());
-        EXPECT_TRUE(image) << image.error().detail;
-        return image ? std::move(*image) : image::Image{};
+        return drawQuad(pass, keywords, values, textures);
     }
 
     // Compares every pixel's rgb (or only r when |channels| is 1) with |expected|(uv) within
@@ -177,11 +105,6 @@ protected:
         return values;
     }
 
-    std::optional<reader::Pack> mPack;
-    std::optional<vulkan::RenderTarget> mTarget;
-    std::optional<BuiltinTextures> mTextures;
-    std::optional<DrawResources> mResources;
-    std::optional<vulkan::Buffer> mQuad;
 };
 
 scene::Light makeLight(scene::LightType type, const std::string& cookie) {
