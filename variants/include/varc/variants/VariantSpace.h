@@ -71,6 +71,27 @@ public:
     // declared order (the no-keyword entry is the empty key), skipped options removed.
     const std::vector<std::vector<VariantKey>>& setOptions() const { return mSetOptions; }
 
+    // The option index (into setOptions()) of every set in |key|, or nullopt when |key| is not
+    // one option per set: a bit no set has, two options of one set, or none of a set without
+    // the no-keyword entry. Does not check the rules. Example: {"multi_compile _ A",
+    // "multi_compile B C"}, key {A C} -> {1, 1}; key {A} -> nullopt.
+    std::optional<std::vector<size_t>> optionsOf(const VariantKey& key) const;
+    // Whether forEach() visits |key|. O(sets x options); no enumeration.
+    bool contains(const VariantKey& key) const;
+
+    // Some sets pinned to listed combinations of their options: |sets| are ascending set
+    // indices; each combination holds one option index (into setOptions()) per entry of |sets|.
+    struct Pins {
+        std::vector<size_t> sets;
+        std::vector<std::vector<size_t>> combinations;  // sorted lexicographically, unique
+    };
+    // The number of variants whose options at |sets| are |options| (a one-combination Pins),
+    // counted like count(). Saturates at UINT64_MAX.
+    uint64_t countPinned(const std::vector<size_t>& sets, const std::vector<size_t>& options) const;
+    // forEach() restricted to variants whose options at |pins|.sets form one of its
+    // combinations; same order as forEach(). Visits only the restricted variants' subtrees.
+    void forEachPinned(const Pins& pins, const std::function<bool(const VariantKey&)>& visit) const;
+
 private:
     explicit VariantSpace(KeywordTable table) : mTable(std::move(table)) {}
 
@@ -82,10 +103,16 @@ private:
         bool hasRequirement = false;
         size_t lastSet = 0;
     };
+    using SetOptions = std::vector<std::vector<VariantKey>>;
     bool rulesHold(size_t set, const VariantKey& prefix) const;
-    // Odometer over |sets| (ascending set indices), pruning on rules; false = stopped early.
-    bool walk(const std::vector<size_t>& sets,
+    // Odometer over |sets| (ascending set indices) choosing from |options| (mSetOptions or a
+    // pinned copy), pruning on rules; false = stopped early.
+    bool walk(const SetOptions& options, const std::vector<size_t>& sets,
               const std::function<bool(const VariantKey&)>& visit) const;
+    uint64_t countOver(const SetOptions& options) const;
+    struct PinnedWalk;
+    bool walkPinned(const PinnedWalk& walk, size_t set, const VariantKey& prefix, size_t first,
+                    size_t last) const;
 
     KeywordTable mTable;
     std::vector<std::vector<VariantKey>> mSetOptions;  // per set, declared order, skips removed
