@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include "FeatureProjector.h"
 #include "varc/core/Check.h"
@@ -57,23 +58,19 @@ MaterialSelection MaterialSelection::select(const PassKeywords& keywords,
     for (const KeywordRequest& request : selection.mRequests) {
         selection.mProjections.push_back(projector.project(request.keywords));
     }
-    if (!hasMaterial(selection.mRequests)) {
-        selection.mDefaultAdded = true;
-        selection.mProjections.push_back(projector.project({}));  // popped in addCombinations
-    }
-    selection.addCombinations();
+    std::optional<std::vector<size_t>> allOff;
+    if (!hasMaterial(selection.mRequests)) allOff = projector.project({}).options;
+    selection.addCombinations(allOff);
     return selection;
 }
 
 // Distinct projections, sorted, each with the requests behind it; the pinned spaces they
 // define are disjoint (two projections differ in some set's option), so counts add up.
-void MaterialSelection::addCombinations() {
+void MaterialSelection::addCombinations(const std::optional<std::vector<size_t>>& allOff) {
     std::map<std::vector<size_t>, std::vector<size_t>> requestsOf;
     for (size_t i = 0; i < mRequests.size(); ++i) requestsOf[mProjections[i].options].push_back(i);
-    if (mDefaultAdded) {
-        requestsOf.try_emplace(mProjections.back().options);
-        mProjections.pop_back();
-    }
+    if (allOff) requestsOf.try_emplace(*allOff);
+    mDefaultAdded = allOff.has_value();
     for (auto& [options, requests] : requestsOf) {
         mPins.combinations.push_back(options);
         mRequestsOf.push_back(std::move(requests));

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -94,14 +95,15 @@ public:
     const VariantSpace& space() const { return mSpace; }
     const std::vector<size_t>& featureSets() const { return mFeatureSets; }  // ascending
     const std::vector<KeywordRequest>& requests() const { return mRequests; }
-    const std::vector<RequestProjection>& projections() const { return mProjections; }  // same order
+    // One per request, same order; empty when a shader_feature set has every keyword skipped.
+    const std::vector<RequestProjection>& projections() const { return mProjections; }
     // The distinct shader_feature combinations that ship (sorted); with the default one when
     // no material exists. Each holds one option index per featureSets() entry.
     const std::vector<std::vector<size_t>>& combinations() const { return mPins.combinations; }
 
 private:
     explicit MaterialSelection(VariantSpace space) : mSpace(std::move(space)) {}
-    void addCombinations();
+    void addCombinations(const std::optional<std::vector<size_t>>& allOff);
     std::string missingFeatureText(const std::vector<size_t>& options) const;
 
     VariantSpace mSpace;
