@@ -21,6 +21,10 @@ bool hasMaterial(const std::vector<KeywordRequest>& requests) {
     });
 }
 
+VariantVerdict verdict(bool ships, VerdictReason reason, std::string text) {
+    return {ships, reason, {}, std::move(text)};
+}
+
 std::string describeRequest(const KeywordRequest& request) {
     const char* kind = request.kind == RequestKind::Material ? "material" : "collection variant";
     return std::string(kind) + " '" + request.name + "'";
@@ -37,8 +41,7 @@ std::string describeRequest(const KeywordRequest& request) {
 //    multi_compile keywords change nothing (INFERRED: "acts like a material", §2.5);
 //  * always included: every declared variant ships, shader_feature counted like multi_compile;
 //  * skip_variants and the shortcut rules apply to every combination (they are in the space).
-MaterialSelection MaterialSelection::select(const PassKeywords& keywords,
-                                            const VariantSpace& space,
+MaterialSelection MaterialSelection::select(const PassKeywords& keywords, const VariantSpace& space,
                                             std::vector<KeywordRequest> requests,
                                             bool alwaysIncluded) {
     VARC_CHECK(keywords.sets.size() == space.setOptions().size())
@@ -101,27 +104,27 @@ std::vector<VariantKey> MaterialSelection::enumerate() const {
 VariantVerdict MaterialSelection::explain(const VariantKey& key) const {
     std::optional<std::vector<size_t>> options = mSpace.optionsOf(key);
     if (!options) {
-        return {false, VerdictReason::NotDeclared, {},
-                "not a variant of this pass: its keywords are not one option of every set"};
+        return verdict(false, VerdictReason::NotDeclared,
+                       "not a variant of this pass: its keywords are not one option of every set");
     }
     if (!mSpace.contains(key)) {
-        return {false, VerdictReason::NotDeclared, {}, "a shortcut's validity rule excludes it"};
+        return verdict(false, VerdictReason::NotDeclared, "a shortcut's validity rule excludes it");
     }
     if (mAlwaysIncluded) {
-        return {true, VerdictReason::AlwaysIncluded, {},
-                "the shader is always included: every declared variant ships"};
+        return verdict(true, VerdictReason::AlwaysIncluded,
+                       "the shader is always included: every declared variant ships");
     }
     std::vector<size_t> feature;
     for (size_t set : mFeatureSets) feature.push_back((*options)[set]);
     const auto& combinations = mPins.combinations;
     auto found = std::lower_bound(combinations.begin(), combinations.end(), feature);
     if (found == combinations.end() || *found != feature) {
-        return {false, VerdictReason::NotRequested, {}, missingFeatureText(feature)};
+        return verdict(false, VerdictReason::NotRequested, missingFeatureText(feature));
     }
     const std::vector<size_t>& requests = mRequestsOf[found - combinations.begin()];
     if (requests.empty()) {
-        return {true, VerdictReason::NoMaterialDefault, {},
-                "no material uses the shader: its all-off shader_feature combination ships"};
+        return verdict(true, VerdictReason::NoMaterialDefault,
+                       "no material uses the shader: its all-off shader_feature combination ships");
     }
     std::string text = "enabled by ";
     for (size_t i = 0; i < requests.size(); ++i) {
@@ -149,8 +152,8 @@ std::string MaterialSelection::missingFeatureText(const std::vector<size_t>& opt
                                   [&](const auto& c) { return c[i] == options[i]; });
         if (picked) continue;
         if (!setOptions[options[i]].empty()) {
-            return "no " + noun + " enables " + joinKeywords(mSpace.table().namesOf(
-                                                         setOptions[options[i]]));
+            return "no " + noun + " enables " +
+                   joinKeywords(mSpace.table().namesOf(setOptions[options[i]]));
         }
         VariantKey all;
         for (const VariantKey& option : setOptions) all = all | option;
