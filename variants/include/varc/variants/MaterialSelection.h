@@ -97,8 +97,10 @@ public:
     const std::vector<KeywordRequest>& requests() const { return mRequests; }
     // One per request, same order; empty when a shader_feature set has every keyword skipped.
     const std::vector<RequestProjection>& projections() const { return mProjections; }
-    // The distinct shader_feature combinations that ship (sorted); with the default one when
-    // no material exists. Each holds one option index per featureSets() entry.
+    // The distinct requested shader_feature combinations, sorted, plus the all-off one when no
+    // material exists; one option index per featureSets() entry. A combination whose every
+    // variant breaks a shortcut rule is listed but ships nothing. Also filled when always
+    // included (explain ignores it then).
     const std::vector<std::vector<size_t>>& combinations() const { return mPins.combinations; }
 
 private:
