@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Benchmarks VariantSpace counting (without enumerating) and forEach over large spaces.
+// Benchmarks VariantSpace counting (without enumerating), forEach, and material selection.
 #include <benchmark/benchmark.h>
 
 #include <cstdlib>
@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "varc/core/Diagnostic.h"
+#include "varc/variants/MaterialSelection.h"
 #include "varc/variants/PragmaParser.h"
 #include "varc/variants/VariantSpace.h"
 
@@ -15,15 +16,20 @@ namespace {
 
 // Builds the space of |texts| (one pragma each); aborts on a diagnostic error since the inputs
 // are fixed and valid.
-VariantSpace spaceOf(const std::vector<std::string>& texts) {
+PassKeywords keywordsOf(const std::vector<std::string>& texts) {
     std::vector<PragmaLine> lines;
     for (size_t i = 0; i < texts.size(); ++i) {
         lines.push_back({texts[i], SourceLocation{0, static_cast<uint32_t>(i + 1), 1}});
     }
     DiagnosticList sink;
     std::optional<PassKeywords> keywords = parsePragmas(lines, sink);
-    std::optional<VariantSpace> space =
-        keywords ? VariantSpace::build(*keywords, sink) : std::nullopt;
+    if (!keywords) std::abort();
+    return std::move(*keywords);
+}
+
+VariantSpace spaceOf(const std::vector<std::string>& texts) {
+    DiagnosticList sink;
+    std::optional<VariantSpace> space = VariantSpace::build(keywordsOf(texts), sink);
     if (!space) std::abort();
     return std::move(*space);
 }
@@ -68,6 +74,29 @@ void forEachIndependent18(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(space.count()));
 }
 BENCHMARK(forEachIndependent18)->Unit(benchmark::kMillisecond);
+
+// 40 `shader_feature _ K` sets, fog and `_ M`: 2^43 declared variants. |range(0)| materials,
+// material i enabling K(i mod 40) and K((7 i) mod 40): select, count and enumerate.
+void selectTrillionPass(benchmark::State& state) {
+    std::vector<std::string> texts = {"multi_compile_fog", "multi_compile _ M"};
+    for (int i = 0; i < 40; ++i) texts.push_back("shader_feature _ K" + std::to_string(i));
+    PassKeywords keywords = keywordsOf(texts);
+    VariantSpace space = spaceOf(texts);
+    std::vector<KeywordRequest> requests;
+    for (int64_t i = 0; i < state.range(0); ++i) {
+        requests.push_back({RequestKind::Material,
+                            "M" + std::to_string(i),
+                            {"K" + std::to_string(i % 40), "K" + std::to_string(7 * i % 40)}});
+    }
+    uint64_t shipped = 0;
+    for (auto _ : state) {
+        MaterialSelection selection = MaterialSelection::select(keywords, space, requests, false);
+        shipped = selection.count();
+        benchmark::DoNotOptimize(selection.enumerate().size());
+    }
+    state.counters["shipped"] = static_cast<double>(shipped);
+}
+BENCHMARK(selectTrillionPass)->Arg(5)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace varc::variants

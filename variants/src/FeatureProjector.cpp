@@ -75,8 +75,8 @@ size_t FeatureProjector::pick(size_t position, const std::vector<std::string>& e
         return 0;
     }
     const std::vector<std::string>& declared = mKeywords.sets[set].keywords;
-    auto kept = std::find_first_of(declared.begin(), declared.end(), enabled.begin(),
-                                   enabled.end());
+    auto kept =
+        std::find_first_of(declared.begin(), declared.end(), enabled.begin(), enabled.end());
     VARC_CHECK(kept != declared.end()) << "enabled keyword outside its set";
     if (enabled.size() > 1) {
         FeatureConflict conflict{set, *kept, {}};

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include "FeatureProjector.h"
 #include "varc/core/Check.h"
@@ -18,6 +19,10 @@ bool hasMaterial(const std::vector<KeywordRequest>& requests) {
     return std::any_of(requests.begin(), requests.end(), [](const KeywordRequest& request) {
         return request.kind == RequestKind::Material;
     });
+}
+
+VariantVerdict verdict(bool ships, VerdictReason reason, std::string text) {
+    return {ships, reason, {}, std::move(text)};
 }
 
 std::string describeRequest(const KeywordRequest& request) {
@@ -36,8 +41,7 @@ std::string describeRequest(const KeywordRequest& request) {
 //    multi_compile keywords change nothing (INFERRED: "acts like a material", §2.5);
 //  * always included: every declared variant ships, shader_feature counted like multi_compile;
 //  * skip_variants and the shortcut rules apply to every combination (they are in the space).
-MaterialSelection MaterialSelection::select(const PassKeywords& keywords,
-                                            const VariantSpace& space,
+MaterialSelection MaterialSelection::select(const PassKeywords& keywords, const VariantSpace& space,
                                             std::vector<KeywordRequest> requests,
                                             bool alwaysIncluded) {
     VARC_CHECK(keywords.sets.size() == space.setOptions().size())
@@ -57,23 +61,19 @@ MaterialSelection MaterialSelection::select(const PassKeywords& keywords,
     for (const KeywordRequest& request : selection.mRequests) {
         selection.mProjections.push_back(projector.project(request.keywords));
     }
-    if (!hasMaterial(selection.mRequests)) {
-        selection.mDefaultAdded = true;
-        selection.mProjections.push_back(projector.project({}));  // popped in addCombinations
-    }
-    selection.addCombinations();
+    std::optional<std::vector<size_t>> allOff;
+    if (!hasMaterial(selection.mRequests)) allOff = projector.project({}).options;
+    selection.addCombinations(allOff);
     return selection;
 }
 
 // Distinct projections, sorted, each with the requests behind it; the pinned spaces they
 // define are disjoint (two projections differ in some set's option), so counts add up.
-void MaterialSelection::addCombinations() {
+void MaterialSelection::addCombinations(const std::optional<std::vector<size_t>>& allOff) {
     std::map<std::vector<size_t>, std::vector<size_t>> requestsOf;
     for (size_t i = 0; i < mRequests.size(); ++i) requestsOf[mProjections[i].options].push_back(i);
-    if (mDefaultAdded) {
-        requestsOf.try_emplace(mProjections.back().options);
-        mProjections.pop_back();
-    }
+    if (allOff) requestsOf.try_emplace(*allOff);
+    mDefaultAdded = allOff.has_value();
     for (auto& [options, requests] : requestsOf) {
         mPins.combinations.push_back(options);
         mRequestsOf.push_back(std::move(requests));
@@ -104,27 +104,27 @@ std::vector<VariantKey> MaterialSelection::enumerate() const {
 VariantVerdict MaterialSelection::explain(const VariantKey& key) const {
     std::optional<std::vector<size_t>> options = mSpace.optionsOf(key);
     if (!options) {
-        return {false, VerdictReason::NotDeclared, {},
-                "not a variant of this pass: its keywords are not one option of every set"};
+        return verdict(false, VerdictReason::NotDeclared,
+                       "not a variant of this pass: its keywords are not one option of every set");
     }
     if (!mSpace.contains(key)) {
-        return {false, VerdictReason::NotDeclared, {}, "a shortcut's validity rule excludes it"};
+        return verdict(false, VerdictReason::NotDeclared, "a shortcut's validity rule excludes it");
     }
     if (mAlwaysIncluded) {
-        return {true, VerdictReason::AlwaysIncluded, {},
-                "the shader is always included: every declared variant ships"};
+        return verdict(true, VerdictReason::AlwaysIncluded,
+                       "the shader is always included: every declared variant ships");
     }
     std::vector<size_t> feature;
     for (size_t set : mFeatureSets) feature.push_back((*options)[set]);
     const auto& combinations = mPins.combinations;
     auto found = std::lower_bound(combinations.begin(), combinations.end(), feature);
     if (found == combinations.end() || *found != feature) {
-        return {false, VerdictReason::NotRequested, {}, missingFeatureText(feature)};
+        return verdict(false, VerdictReason::NotRequested, missingFeatureText(feature));
     }
     const std::vector<size_t>& requests = mRequestsOf[found - combinations.begin()];
     if (requests.empty()) {
-        return {true, VerdictReason::NoMaterialDefault, {},
-                "no material uses the shader: its all-off shader_feature combination ships"};
+        return verdict(true, VerdictReason::NoMaterialDefault,
+                       "no material uses the shader: its all-off shader_feature combination ships");
     }
     std::string text = "enabled by ";
     for (size_t i = 0; i < requests.size(); ++i) {
@@ -152,8 +152,8 @@ std::string MaterialSelection::missingFeatureText(const std::vector<size_t>& opt
                                   [&](const auto& c) { return c[i] == options[i]; });
         if (picked) continue;
         if (!setOptions[options[i]].empty()) {
-            return "no " + noun + " enables " + joinKeywords(mSpace.table().namesOf(
-                                                         setOptions[options[i]]));
+            return "no " + noun + " enables " +
+                   joinKeywords(mSpace.table().namesOf(setOptions[options[i]]));
         }
         VariantKey all;
         for (const VariantKey& option : setOptions) all = all | option;

@@ -1,7 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
 // MaterialSelection: Unity's shader_feature rules per pass, with hand-computed counts.
-#include "varc/variants/MaterialSelection.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +7,7 @@
 
 #include "VariantsTestSupport.h"
 #include "varc/core/JoinWords.h"
+#include "varc/variants/MaterialSelection.h"
 
 namespace varc::variants {
 namespace {
@@ -52,13 +51,13 @@ VariantKey keyOf(const MaterialSelection& selection, const Listing& names) {
 }
 
 // Reference §2.3's worked example pass: 3 · 2 · 4 = 24 declared variants.
-const std::vector<std::string> kWorkedExample = {
-    "shader_feature _ _A _B", "shader_feature_local _C", "multi_compile_fog"};
+const std::vector<std::string> kWorkedExample = {"shader_feature _ _A _B",
+                                                 "shader_feature_local _C", "multi_compile_fog"};
 
 TEST(MaterialSelection, NoMaterialShipsTheAllOffFeatureCombination) {
     // multi_compile: 3 options all ship; `_ F` -> _, `G H` (no _) -> G: 3 · 1 · 1 = 3.
-    auto selection = selectionOf({"multi_compile _ A B", "shader_feature F", "shader_feature G H"},
-                                 {});
+    auto selection =
+        selectionOf({"multi_compile _ A B", "shader_feature F", "shader_feature G H"}, {});
     ASSERT_TRUE(selection);
     EXPECT_EQ(selection->counts().declared, 12u);  // 3 · 2 · 2
     EXPECT_EQ(selection->count(), 3u);
@@ -92,8 +91,8 @@ TEST(MaterialSelection, WorkedExampleOfTheReference) {
 
 TEST(MaterialSelection, DuplicateProjectionsShipOnce) {
     // All three project to (_A, _): one combination · 4 fog = 4.
-    auto selection = selectionOf(
-        kWorkedExample, materials({{"_A"}, {"JUNK", "_A"}, {"FOG_LINEAR", "_A", "_A"}}));
+    auto selection = selectionOf(kWorkedExample,
+                                 materials({{"_A"}, {"JUNK", "_A"}, {"FOG_LINEAR", "_A", "_A"}}));
     ASSERT_TRUE(selection);
     EXPECT_EQ(selection->count(), 4u);
     ASSERT_EQ(selection->combinations().size(), 1u);
@@ -123,8 +122,7 @@ TEST(MaterialSelection, SetWithoutUnderscoreDefaultsToItsFirstKeyword) {
     EXPECT_EQ(shipped(*selection), (Listing{"RED", "BLUE"}));
     EXPECT_EQ(selection->projections()[0].defaultedSets, (std::vector<size_t>{0}));
     EXPECT_TRUE(selection->projections()[1].defaultedSets.empty());
-    EXPECT_EQ(selection->explain(keyOf(*selection, {"GREEN"})).text,
-              "no material enables GREEN");
+    EXPECT_EQ(selection->explain(keyOf(*selection, {"GREEN"})).text, "no material enables GREEN");
 }
 
 TEST(MaterialSelection, TwoKeywordsOfOneSetKeepTheFirstDeclared) {
@@ -141,10 +139,9 @@ TEST(MaterialSelection, TwoKeywordsOfOneSetKeepTheFirstDeclared) {
 
 TEST(MaterialSelection, LocalAndStageSuffixedFeatureSetsFollowTheSameRule) {
     // (A,_) and (_,B) ship, M's 2 options all: 2 · 2 = 4 of 2 · 2 · 2 = 8.
-    auto selection =
-        selectionOf({"shader_feature_local_fragment _ A", "shader_feature_vertex B",
-                     "multi_compile_local_fragment _ M"},
-                    materials({{"A"}, {"B", "M"}}));
+    auto selection = selectionOf({"shader_feature_local_fragment _ A", "shader_feature_vertex B",
+                                  "multi_compile_local_fragment _ M"},
+                                 materials({{"A"}, {"B", "M"}}));
     ASSERT_TRUE(selection);
     EXPECT_EQ(selection->counts().declared, 8u);
     EXPECT_EQ(selection->count(), 4u);
@@ -160,7 +157,8 @@ TEST(MaterialSelection, ShortcutSetsShipWhollyWithTheirValidityRules) {
     EXPECT_EQ(selection->counts().declared, 39u);
     EXPECT_EQ(selection->count(), 13u);
     EXPECT_EQ(selection->enumerate().size(), 13u);
-    VariantVerdict invalid = selection->explain(keyOf(*selection, {"POINT", "SHADOWS_DEPTH", "_A"}));
+    VariantVerdict invalid =
+        selection->explain(keyOf(*selection, {"POINT", "SHADOWS_DEPTH", "_A"}));
     EXPECT_FALSE(invalid.ships);
     EXPECT_EQ(invalid.reason, VerdictReason::NotDeclared);
     EXPECT_EQ(invalid.text, "a shortcut's validity rule excludes it");
@@ -168,9 +166,9 @@ TEST(MaterialSelection, ShortcutSetsShipWhollyWithTheirValidityRules) {
 
 TEST(MaterialSelection, SkippedKeywordsAreIgnoredLikeUndeclaredOnes) {
     // MC {_, A, C} (B skipped) = 3; M0 {G} -> G skipped -> _; M1 -> F: 2 · 3 = 6 of 3 · 3 = 9.
-    auto selection = selectionOf(
-        {"multi_compile _ A B C", "shader_feature _ F G H", "skip_variants B G"},
-        materials({{"G"}, {"F"}}));
+    auto selection =
+        selectionOf({"multi_compile _ A B C", "shader_feature _ F G H", "skip_variants B G"},
+                    materials({{"G"}, {"F"}}));
     ASSERT_TRUE(selection);
     EXPECT_EQ(selection->counts().full, 16u);
     EXPECT_EQ(selection->counts().declared, 9u);
@@ -181,9 +179,8 @@ TEST(MaterialSelection, SkippedKeywordsAreIgnoredLikeUndeclaredOnes) {
 
 TEST(MaterialSelection, FeatureSetWithEverythingSkippedShipsNothing) {
     // Both options of `A B` skipped: the space is empty, so 0.
-    auto selection =
-        selectionOf({"shader_feature A B", "multi_compile _ M", "skip_variants A B"},
-                    materials({{"A"}}));
+    auto selection = selectionOf({"shader_feature A B", "multi_compile _ M", "skip_variants A B"},
+                                 materials({{"A"}}));
     ASSERT_TRUE(selection);
     EXPECT_EQ(selection->count(), 0u);
     EXPECT_TRUE(selection->enumerate().empty());
@@ -202,8 +199,8 @@ TEST(MaterialSelection, AlwaysIncludedShipsEveryDeclaredVariant) {
 
 TEST(MaterialSelection, PassWithoutFeatureSetsShipsItsWholeSpace) {
     // multi_compile only: 3 · 2 = 6 with or without materials.
-    auto selection = selectionOf({"multi_compile _ A B", "multi_compile _ C"},
-                                 materials({{"A"}, {"JUNK"}}));
+    auto selection =
+        selectionOf({"multi_compile _ A B", "multi_compile _ C"}, materials({{"A"}, {"JUNK"}}));
     ASSERT_TRUE(selection);
     EXPECT_EQ(selection->count(), 6u);
     EXPECT_EQ(shipped(*selection), (Listing{"", "C", "A", "A C", "B", "B C"}));
@@ -213,9 +210,9 @@ TEST(MaterialSelection, ProjectionIsPerPass) {
     // The caster declares neither _NORMALMAP nor _EMISSION: all 3 materials -> (_): 1 · 2 = 2;
     // the forward pass sees 3 combinations · 4 fog = 12.
     Materials used = {{"_NORMALMAP"}, {"_EMISSION", "_NORMALMAP"}, {}};
-    auto forward = selectionOf(
-        {"shader_feature _NORMALMAP", "shader_feature _EMISSION", "multi_compile_fog"},
-        materials(used));
+    auto forward =
+        selectionOf({"shader_feature _NORMALMAP", "shader_feature _EMISSION", "multi_compile_fog"},
+                    materials(used));
     auto caster = selectionOf({"multi_compile_shadowcaster", "shader_feature _ALPHATEST_ON"},
                               materials(used));
     ASSERT_TRUE(forward && caster);
@@ -266,9 +263,9 @@ TEST(MaterialSelection, CollectionVariantBesideAMaterialAddsOnlyItsCombination) 
 
 TEST(MaterialSelection, ExplainNamesWhatNoMaterialEnables) {
     // M0 -> (_A, _), M1 -> (_B, _C).
-    auto selection = selectionOf(
-        {"shader_feature _ _A _B", "shader_feature _ _C", "shader_feature _ _DETAIL"},
-        materials({{"_A"}, {"_B", "_C"}}));
+    auto selection =
+        selectionOf({"shader_feature _ _A _B", "shader_feature _ _C", "shader_feature _ _DETAIL"},
+                    materials({{"_A"}, {"_B", "_C"}}));
     ASSERT_TRUE(selection);
     EXPECT_EQ(selection->count(), 2u);
     EXPECT_EQ(selection->explain(keyOf(*selection, {"_A", "_DETAIL"})).text,

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "VariantsTestSupport.h"
+#include "varc/core/JoinWords.h"
 #include "varc/variants/VariantSpace.h"
 
 namespace varc::variants {
@@ -165,6 +166,46 @@ TEST(VariantSpace, ExactlyTwoHundredFiftySixKeywordsFit) {
     std::optional<VariantSpace> space = spaceOf(independentSets(256));
     ASSERT_TRUE(space);
     EXPECT_EQ(space->table().size(), 256u);
+}
+
+TEST(VariantSpace, OptionsOfDecodesOneOptionPerSet) {
+    std::optional<VariantSpace> space = spaceOf({"multi_compile _ A", "multi_compile B C"});
+    ASSERT_TRUE(space);
+    const KeywordTable& table = space->table();
+    EXPECT_EQ(space->optionsOf(table.keyOf({"A", "C"})), (std::vector<size_t>{1, 1}));
+    EXPECT_EQ(space->optionsOf(table.keyOf({"B"})), (std::vector<size_t>{0, 0}));
+    EXPECT_EQ(space->optionsOf(table.keyOf({"A"})), std::nullopt);  // `B C` has no `_`
+    EXPECT_EQ(space->optionsOf(table.keyOf({"B", "C"})), std::nullopt);
+}
+
+TEST(VariantSpace, ContainsAppliesTheValidityRules) {
+    std::optional<VariantSpace> space = spaceOf({"multi_compile_fwdadd_fullshadows"});
+    ASSERT_TRUE(space);
+    const KeywordTable& table = space->table();
+    EXPECT_TRUE(space->contains(table.keyOf({"SPOT", "SHADOWS_DEPTH"})));
+    EXPECT_FALSE(space->contains(table.keyOf({"POINT", "SHADOWS_DEPTH"})));
+    size_t contained = 0;
+    space->forEach([&](const VariantKey& key) {
+        contained += space->contains(key) ? 1 : 0;
+        return true;
+    });
+    EXPECT_EQ(contained, 13u);
+}
+
+TEST(VariantSpace, PinnedCombinationsKeepTheSpaceOrder) {
+    // Sets 0 and 2 pinned to (0,1), (1,0), (1,1): 3 combinations · 2 options of set 1 = 6.
+    std::optional<VariantSpace> space =
+        spaceOf({"multi_compile _ A", "multi_compile _ M", "multi_compile _ C"});
+    ASSERT_TRUE(space);
+    VariantSpace::Pins pins{{0, 2}, {{0, 1}, {1, 0}, {1, 1}}};
+    std::vector<std::string> lines;
+    space->forEachPinned(pins, [&](const VariantKey& key) {
+        lines.push_back(joinWords(space->table().namesOf(key)));
+        return true;
+    });
+    EXPECT_EQ(lines, (Listing{"C", "C M", "A", "A C", "A M", "A C M"}));
+    EXPECT_EQ(space->countPinned({0, 2}, {1, 0}), 2u);
+    EXPECT_EQ(space->countPinned({}, {}), 8u);
 }
 
 }  // namespace

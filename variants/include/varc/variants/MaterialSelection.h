@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,14 +38,14 @@ struct FeatureConflict {
 // How one request maps onto the pass: the option it picks in every shader_feature set and what
 // it ignored (for warnings). Keyword lists keep the request's order.
 struct RequestProjection {
-    std::vector<size_t> options;              // per featureSets() entry: index into setOptions()
-    VariantKey key;                           // the shader_feature keywords the options turn on
-    std::vector<std::string> undeclared;      // no set of the pass declares them: ignored
-    std::vector<std::string> skipped;         // removed by skip_variants: ignored as undeclared
-    std::vector<std::string> dynamicBranch;   // dynamic_branch keywords: no variants
-    std::vector<std::string> multiCompile;    // every state ships anyway: no effect
-    std::vector<FeatureConflict> conflicts;   // 2+ keywords of one set on
-    std::vector<size_t> defaultedSets;        // `_`-less sets with none on: first keyword assumed
+    std::vector<size_t> options;             // per featureSets() entry: index into setOptions()
+    VariantKey key;                          // the shader_feature keywords the options turn on
+    std::vector<std::string> undeclared;     // no set of the pass declares them: ignored
+    std::vector<std::string> skipped;        // removed by skip_variants: ignored as undeclared
+    std::vector<std::string> dynamicBranch;  // dynamic_branch keywords: no variants
+    std::vector<std::string> multiCompile;   // every state ships anyway: no effect
+    std::vector<FeatureConflict> conflicts;  // 2+ keywords of one set on
+    std::vector<size_t> defaultedSets;       // `_`-less sets with none on: first keyword assumed
 };
 
 // Counts per stage of Unity's log (reference §1). More stages (settings, user rules) come later.
@@ -94,25 +95,28 @@ public:
     const VariantSpace& space() const { return mSpace; }
     const std::vector<size_t>& featureSets() const { return mFeatureSets; }  // ascending
     const std::vector<KeywordRequest>& requests() const { return mRequests; }
-    const std::vector<RequestProjection>& projections() const { return mProjections; }  // same order
-    // The distinct shader_feature combinations that ship (sorted); with the default one when
-    // no material exists. Each holds one option index per featureSets() entry.
+    // One per request, same order; empty when a shader_feature set has every keyword skipped.
+    const std::vector<RequestProjection>& projections() const { return mProjections; }
+    // The distinct requested shader_feature combinations, sorted, plus the all-off one when no
+    // material exists; one option index per featureSets() entry. A combination whose every
+    // variant breaks a shortcut rule is listed but ships nothing. Also filled when always
+    // included (explain ignores it then).
     const std::vector<std::vector<size_t>>& combinations() const { return mPins.combinations; }
 
 private:
     explicit MaterialSelection(VariantSpace space) : mSpace(std::move(space)) {}
-    void addCombinations();
+    void addCombinations(const std::optional<std::vector<size_t>>& allOff);
     std::string missingFeatureText(const std::vector<size_t>& options) const;
 
     VariantSpace mSpace;
     std::vector<size_t> mFeatureSets;
     std::vector<KeywordRequest> mRequests;
     std::vector<RequestProjection> mProjections;
-    VariantSpace::Pins mPins;                       // sets = mFeatureSets
-    std::vector<std::vector<size_t>> mRequestsOf;   // per combination: requests, ascending
+    VariantSpace::Pins mPins;                      // sets = mFeatureSets
+    std::vector<std::vector<size_t>> mRequestsOf;  // per combination: requests, ascending
     bool mAlwaysIncluded = false;
-    bool mDefaultAdded = false;                     // the no-material combination is in mPins
-    bool mEmpty = false;                            // a shader_feature set has no option left
+    bool mDefaultAdded = false;  // the no-material combination is in mPins
+    bool mEmpty = false;         // a shader_feature set has no option left
     uint64_t mSelected = 0;
 };
 
