@@ -43,15 +43,19 @@ std::string packageName(const fs::path& folder, LoadContext& context) {
 
 std::vector<ProjectPackage> embeddedPackages(const fs::path& packagesFolder, bool includeIgnored,
                                              LoadContext& context) {
-    std::vector<ProjectPackage> packages;
+    std::vector<fs::path> folders;  // sorted first, so warnings come in a stable order
     std::error_code error;
     for (fs::directory_iterator it(packagesFolder, error), end; !error && it != end;
          it.increment(error)) {
         std::error_code typeError;
         std::string name = it->path().filename().string();
         if (!it->is_directory(typeError) || (!includeIgnored && isUnityIgnoredName(name))) continue;
-        packages.push_back(
-            {packageName(it->path(), context), "", PackageSource::Embedded, it->path()});
+        folders.push_back(it->path());
+    }
+    std::sort(folders.begin(), folders.end());
+    std::vector<ProjectPackage> packages;
+    for (const fs::path& folder : folders) {
+        packages.push_back({packageName(folder, context), "", PackageSource::Embedded, folder});
     }
     return packages;
 }

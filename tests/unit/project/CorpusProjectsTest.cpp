@@ -67,6 +67,7 @@ TEST_F(CorpusProjects, MaterialFiguresMatchTheReadme) {
     std::vector<CorpusProject> corpus = loadCorpus(true, diagnostics);
     EXPECT_EQ(corpus.size(), 19u);  // lx2054807 has no project data
     size_t materials = 0, builtin = 0, unknown = 0, project = 0, withSource = 0, invalid = 0;
+    size_t fromSurface = 0;  // shaders supplied by the second source root, compat/surface
     std::map<int64_t, size_t> builtinIds;
     for (const CorpusProject& entry : corpus) {
         for (const Material& material : entry.project.materials) {
@@ -83,8 +84,13 @@ TEST_F(CorpusProjects, MaterialFiguresMatchTheReadme) {
                     ++project;
                     const ProjectShader* shader =
                         entry.project.findShaderByGuid(material.shader.asset.guid);
-                    if (shader && !shader->file.empty() && fs::is_regular_file(shader->file))
+                    if (shader && !shader->file.empty() && fs::is_regular_file(shader->file)) {
                         ++withSource;
+                    }
+                    if (shader &&
+                        shader->file.string().find("/compat/surface/") != std::string::npos) {
+                        ++fromSurface;
+                    }
                     break;
                 }
                 case ShaderReferenceKind::Missing:
@@ -98,6 +104,7 @@ TEST_F(CorpusProjects, MaterialFiguresMatchTheReadme) {
     EXPECT_EQ(unknown, 3u);
     EXPECT_EQ(project, 173u);
     EXPECT_EQ(withSource, 173u);  // every (a) shader is found in the shader source roots
+    EXPECT_EQ(fromSurface, 11u);  // README: (a) in corpus by folder: main 162, surface 11
     EXPECT_EQ(invalid, 4u);
     EXPECT_EQ(builtinIds[46], 31u);
     EXPECT_EQ(builtinIds[10752], 9u);

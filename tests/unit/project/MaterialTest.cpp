@@ -161,6 +161,20 @@ TEST(Material, MalformedYamlIsWarnedWithItsPositionAndTheRestStillLoads) {
                                                   "malformed YAML.*"));
 }
 
+TEST(Material, DeeplyNestedYamlIsWarnedNotACrash) {
+    TempProject project;
+    project.write("Assets/Deep.mat", test::kUnityHeader +
+                                         "--- !u!21 &2100000\nMaterial:\n  m_Name: " +
+                                         std::string(100000, '[') + "\n");
+    DiagnosticList diagnostics;
+    Project loaded = loadProject(project.root(), diagnostics);
+    EXPECT_TRUE(loaded.materials.empty());
+    auto texts = test::warningTexts(loaded, diagnostics);
+    ASSERT_EQ(texts.size(), 1u);
+    EXPECT_THAT(texts[0], HasSubstr("Deep.mat"));
+    EXPECT_THAT(texts[0], HasSubstr("malformed YAML"));
+}
+
 TEST(Material, EveryTruncationOfAMaterialLoadsWithoutThrowing) {
     std::string full = materialYaml("Cut", test::builtinRef(46),
                                     "  m_ValidKeywords:\n  - _A\n  m_InvalidKeywords: [_B]\n"
