@@ -25,17 +25,19 @@ function(varc_target_defaults tgt)
     endif()
 endfunction()
 
-# varc_add_gtest(NAME n SOURCES a.cpp ... LIBS lib ... [LABELS l ...])
-# Builds one GoogleTest executable and registers each TEST with CTest.
+# varc_add_gtest(NAME n SOURCES a.cpp ... LIBS lib ... [LABELS l ...] [PREFIX p])
+# Builds one GoogleTest executable and registers each TEST with CTest (named p<Suite>.<Test> with
+# a PREFIX, so `ctest -R p` selects the executable's tests).
 function(varc_add_gtest)
-    cmake_parse_arguments(ARG "" "NAME" "SOURCES;LIBS;LABELS" ${ARGN})
+    cmake_parse_arguments(ARG "" "NAME;PREFIX" "SOURCES;LIBS;LABELS" ${ARGN})
     add_executable(${ARG_NAME} ${ARG_SOURCES})
     varc_target_defaults(${ARG_NAME})
     target_link_libraries(${ARG_NAME} PRIVATE ${ARG_LIBS} GTest::gtest_main GTest::gmock)
     target_compile_definitions(${ARG_NAME} PRIVATE
         VARC_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
         VARC_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
-    gtest_discover_tests(${ARG_NAME} PROPERTIES LABELS unit DISCOVERY_TIMEOUT 60)
+    gtest_discover_tests(${ARG_NAME} TEST_PREFIX "${ARG_PREFIX}"
+                         PROPERTIES LABELS unit DISCOVERY_TIMEOUT 60)
     # gtest_discover_tests flattens a label list into separate property arguments, so the extra
     # labels are set by a script CTest runs after the discovered tests are defined (it sees the
     # <target>_TESTS list the discovery script sets).

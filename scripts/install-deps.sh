@@ -8,6 +8,7 @@ packages=(
     glslang-dev glslang-tools spirv-tools
     libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
     libglm-dev nlohmann-json3-dev libcli11-dev libzstd-dev libxxhash-dev libpng-dev
+    libyaml-cpp-dev
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     chromium
     groff-base file dpkg-dev
