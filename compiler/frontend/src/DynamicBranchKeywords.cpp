@@ -61,9 +61,11 @@ std::optional<std::pair<uint32_t, FileId>> lineDirective(std::string_view code) 
     if (i == std::string_view::npos || code[i] != '#') return std::nullopt;
     i = code.find_first_not_of(" \t", i + 1);
     if (i == std::string_view::npos || code.compare(i, 4, "line") != 0) return std::nullopt;
+    size_t number = code.find_first_not_of(" \t", i + 4);
+    if (number == i + 4 || number == std::string_view::npos) return std::nullopt;  // `#lines`
     uint32_t line = 0;
     FileId file = kNoFile;
-    const char* first = code.data() + code.find_first_not_of(" \t", i + 4);
+    const char* first = code.data() + number;
     const char* last = code.data() + code.size();
     auto parsed = std::from_chars(first, last, line);
     if (parsed.ec != std::errc() || parsed.ptr == first) return std::nullopt;

@@ -120,12 +120,14 @@ TEST(DynamicBranchKeywords, ContinuedConditionsAndLineMappingAreFollowed) {
         "#if X || \\\n"
         "    defined(RED)\n"  // 1:6:13
         "#endif\n"
+        "#line\n"       // malformed: not a mapping, the numbering goes on
+        "#ifdef RED\n"  // 1:9:8
         "#line 40 2\n"
         "a /* comment\n"
         "   ends */ b\n"
         "#ifdef RED\n";  // 2:42:8
     EXPECT_EQ(locationsOf(warningsFor(text, {"RED"})),
-              (std::vector<SourceLocation>{{1, 6, 13}, {2, 42, 8}}));
+              (std::vector<SourceLocation>{{1, 6, 13}, {1, 9, 8}, {2, 42, 8}}));
 }
 
 TEST(DynamicBranchKeywords, ALocationIsReportedOnce) {
