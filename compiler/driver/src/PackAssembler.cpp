@@ -21,6 +21,9 @@ std::vector<pack::DeclaredSet> declaredSets(const variants::PassKeywords& keywor
     std::vector<pack::DeclaredSet> sets;
     for (const variants::KeywordSetDecl& set : keywords.sets)
         sets.push_back({set.directive, set.keywords});
+    // The runtime learns the pass's dynamic_branch keywords (uniforms it sets per draw) here.
+    for (const variants::KeywordSetDecl& set : keywords.dynamicBranches)
+        sets.push_back({set.directive, set.keywords});
     return sets;
 }
 

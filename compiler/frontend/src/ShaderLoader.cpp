@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "varc/core/SaturatingMath.h"
+#include "varc/frontend/DynamicBranchKeywords.h"
 #include "varc/frontend/PassReferences.h"
 #include "varc/frontend/SurfacePasses.h"
 #include "varc/shaderlab/ShaderLabParser.h"
@@ -141,15 +142,24 @@ std::optional<includes::ExpandedSource> expandPass(const shaderlab::Pass& pass,
     return resolver.expand(passRoots(pass, implicitCg, sourceMap), sink);
 }
 
+// |reported|: the locations of dynamic_branch warnings already given for this shader.
 bool loadPass(LoadedPass& loaded, includes::IncludeResolver& resolver,
               const includes::IncludeOptions& options, includes::SourceMap& sourceMap,
-              DiagnosticSink& sink) {
+              std::vector<SourceLocation>& reported, DiagnosticSink& sink) {
     auto expanded = expandPass(*loaded.pass, resolver, options, sourceMap, sink);
     if (!expanded) return false;
     loaded.source = std::move(*expanded);
     auto keywords = variants::parsePragmas(loaded.source.pragmas, sink);
     if (!keywords) return false;
     loaded.keywords = std::move(*keywords);
+    // dynamic_branch keywords become uniforms the code tests with `if`; a preprocessor test of
+    // one is constant, as in Unity, and gets a warning.
+    if (!loaded.keywords.dynamicBranches.empty()) {
+        warnPreprocessorTestsOfDynamicBranches(
+            loaded.source.text, dynamicBranchKeywords(loaded.keywords), reported, sink);
+        loaded.source.text = declareDynamicBranchUniforms(loaded.source.text, loaded.keywords,
+                                                          loaded.pass->program->language);
+    }
     loaded.space = variants::VariantSpace::build(loaded.keywords, sink);
     return loaded.space.has_value();
 }
@@ -233,6 +243,7 @@ std::optional<LoadedShader> loadShader(const std::string& path,
 
     bool ok = true;
     size_t index = 0;
+    std::vector<SourceLocation> reportedDynamicBranchTests;
     for (const shaderlab::SubShader& subShader : shader.ast.subShaders) {
         for (const shaderlab::Pass& pass : subShader.passes) {
             size_t passIndex = index++;
@@ -242,7 +253,8 @@ std::optional<LoadedShader> loadShader(const std::string& path,
             loaded.pass = &pass;
             PassContextSink passSink(sink, pass.location,
                                      describePass(shader.ast, pass, passIndex));
-            if (loadPass(loaded, resolver, includeOptions, sourceMap, passSink)) {
+            if (loadPass(loaded, resolver, includeOptions, sourceMap, reportedDynamicBranchTests,
+                         passSink)) {
                 shader.passes.push_back(std::move(loaded));
             } else {
                 ok = false;

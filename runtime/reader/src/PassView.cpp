@@ -2,6 +2,8 @@
 // One pass of an open Pack: tags, render state, keyword table and declared sets.
 #include "varc/reader/PassView.h"
 
+#include <algorithm>
+
 #include "PackImage.h"
 #include "varc/core/AsciiCase.h"
 #include "varc/core/Check.h"
@@ -83,6 +85,20 @@ pack::DeclaredSet PassView::set(size_t i) const {
     uint32_t count = mImage->get(Chunk::KeywordSets, record, pack::kSetKeywordCount);
     for (uint32_t k = 0; k < count; ++k) set.keywords.emplace_back(mImage->listString(first + k));
     return set;
+}
+
+std::vector<std::string> PassView::dynamicKeywords() const {
+    std::vector<std::string> names;
+    for (size_t i = 0; i < setCount(); ++i) {
+        pack::DeclaredSet declared = set(i);
+        if (!pack::isDynamicBranchDirective(declared.directive)) continue;
+        for (std::string& keyword : declared.keywords) {
+            if (!keyword.empty()) names.push_back(std::move(keyword));
+        }
+    }
+    std::sort(names.begin(), names.end());
+    names.erase(std::unique(names.begin(), names.end()), names.end());
+    return names;
 }
 
 namespace {

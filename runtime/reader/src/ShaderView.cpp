@@ -2,6 +2,7 @@
 // One shader of an open Pack: its name and passes.
 #include "varc/reader/ShaderView.h"
 
+#include <algorithm>
 #include <bit>
 
 #include "PackImage.h"
@@ -24,6 +25,16 @@ std::optional<PassView> ShaderView::pass(size_t position) const {
     if (position >= passCount()) return std::nullopt;
     uint32_t first = mImage->get(Chunk::Shaders, mIndex, pack::kShaderPassFirst);
     return PassView(mImage, mIndex, first + static_cast<uint32_t>(position));
+}
+
+std::vector<std::string> ShaderView::dynamicKeywords() const {
+    std::vector<std::string> names;
+    for (size_t i = 0; i < passCount(); ++i) {
+        for (std::string& name : pass(i)->dynamicKeywords()) names.push_back(std::move(name));
+    }
+    std::sort(names.begin(), names.end());
+    names.erase(std::unique(names.begin(), names.end()), names.end());
+    return names;
 }
 
 std::optional<PassView> ShaderView::pass(std::string_view lightMode) const {

@@ -178,7 +178,8 @@ Status DeferredRenderer::State::gbufferPhase(const scene::Scene& scene,
             return makeError(ErrorCode::NotFound, what + ": the shader has no Deferred pass");
         auto variant = pass->lookup(keywords, variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
-        auto material = objectMaterial(what, object.material, shader->properties(), frame.storage,
+        auto material = objectMaterial(what, object.material, shader->properties(),
+                                       shader->dynamicKeywords(), frame.storage,
                                        {{"_StencilNonBackground", kStencilNonBackground}});
         if (!material) return material.error();
         auto draw = objectDraw(

@@ -123,7 +123,8 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
     const scene::ForwardLightAssignment assignment = scene::assignForwardLights(scene, object);
     const ShaderValues& objectLayer =
         storage.values.emplace_back(objectValues(scene, object, matrices, assignment));
-    auto material = objectMaterial(what, object.material, shader->properties(), storage);
+    auto material = objectMaterial(what, object.material, shader->properties(),
+                                   shader->dynamicKeywords(), storage);
     if (!material) return material.error();
     auto lightmapsFound = lightmapBindings(object, what);
     if (!lightmapsFound) return lightmapsFound.error();

@@ -76,7 +76,8 @@ Result<reader::ShaderView> RendererBase::objectShader(const std::string& what,
 
 Result<ObjectMaterial> RendererBase::objectMaterial(
     const std::string& what, const scene::Material& material,
-    const std::vector<pack::ShaderProperty>& defaults, FrameStorage& frame,
+    const std::vector<pack::ShaderProperty>& defaults,
+    const std::vector<std::string>& dynamicKeywords, FrameStorage& frame,
     const std::vector<std::pair<std::string, float>>& engineDefaults) {
     std::map<std::string, std::string>& textureNames = frame.materialTextures.emplace_back();
     ShaderValues& values = frame.values.emplace_back(
@@ -84,6 +85,7 @@ Result<ObjectMaterial> RendererBase::objectMaterial(
     for (const auto& [name, value] : engineDefaults) {
         if (!values.find(name)) values.set(name, value);
     }
+    setDynamicBranchValues(values, dynamicKeywords, material.keywords);
     if (Status loaded = loadTextureFiles(textureNames); !loaded)
         return makeError(loaded.error().code, what + ": " + loaded.error().detail);
     return ObjectMaterial{&values, &textureNames};

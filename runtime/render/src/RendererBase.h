@@ -87,11 +87,14 @@ struct RendererBase {
 
     // The material an object's draws bind: |material|'s values completed with the shader's
     // Properties |defaults|, then with |engineDefaults| (values the engine supplies when the
-    // material does not set them, e.g. a stencil bit); its PNG textures loaded. Stored in
-    // |frame|. Errors, prefixed with |what|: a texture file that cannot be read.
+    // material does not set them, e.g. a stencil bit), and the shader's |dynamicKeywords|
+    // (ShaderView::dynamicKeywords) set from the material's keywords (setDynamicBranchValues);
+    // its PNG textures loaded. Stored in |frame|. Errors, prefixed with |what|: a texture file
+    // that cannot be read.
     Result<ObjectMaterial> objectMaterial(
         const std::string& what, const scene::Material& material,
-        const std::vector<pack::ShaderProperty>& defaults, FrameStorage& frame,
+        const std::vector<pack::ShaderProperty>& defaults,
+        const std::vector<std::string>& dynamicKeywords, FrameStorage& frame,
         const std::vector<std::pair<std::string, float>>& engineDefaults = {});
 
     // The per-object step of every renderer: resolves the pass's render state with the material

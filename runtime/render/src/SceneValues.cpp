@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "varc/render/SceneValues.h"
 
+#include <algorithm>
 #include <array>
 
 #include "varc/scene/LightTextures.h"
@@ -158,6 +159,14 @@ ShaderValues materialValues(const scene::Material& material,
         if (!values.find(name + "_ST")) values.set(name + "_ST", glm::vec4(1, 1, 0, 0));
     }
     return values;
+}
+
+void setDynamicBranchValues(ShaderValues& values, const std::vector<std::string>& dynamicKeywords,
+                            const std::vector<std::string>& enabled) {
+    for (const std::string& keyword : dynamicKeywords) {
+        const bool on = std::find(enabled.begin(), enabled.end(), keyword) != enabled.end();
+        values.set(keyword, on ? 1.0f : 0.0f);
+    }
 }
 
 }  // namespace varc::render

@@ -144,7 +144,8 @@ Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
         auto variant = pass->lookup(keywords, variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         auto material =
-            renderer.objectMaterial(what, object.material, shader->properties(), storage);
+            renderer.objectMaterial(what, object.material, shader->properties(),
+                                    shader->dynamicKeywords(), storage);
         if (!material) return material.error();
         const ShaderValues& objectLayer = storage.values.emplace_back(
             objectValues(scene, object, matrices, scene::ForwardLightAssignment{}));

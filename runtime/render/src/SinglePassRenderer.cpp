@@ -69,6 +69,7 @@ struct DrawGroup {
     scene::ObjectLightList lights;
     std::map<std::string, scene::PropertyValue> sharedProperties;  // instanced ones blanked
     std::vector<pack::ShaderProperty> propertyDefaults;  // the shader's, for per-instance values
+    std::vector<std::string> dynamicKeywords;            // ShaderView::dynamicKeywords
     bool mirrored = false;  // negative-determinant transform: culls the other side (one pipeline)
     std::vector<size_t> objects;
     const InstancedLayout* instancing = nullptr;  // null: the shader cannot instance
@@ -155,6 +156,7 @@ Result<std::vector<DrawGroup>> SinglePassRenderer::State::group(
             return makeError(ErrorCode::NotFound, what + ": the shader has no pass");
         candidate.mesh = object.mesh;
         candidate.propertyDefaults = shader->properties();
+        candidate.dynamicKeywords = shader->dynamicKeywords();
         candidate.mirrored = glm::determinant(object.transform.localToWorld()) < 0.0f;
         candidate.lights = scene::objectLightList(scene, visible, object);
         candidate.sharedProperties =
@@ -213,7 +215,8 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
         if (instanced) keywords.push_back(variants::kInstancingKeyword);
         auto variant = group.pass->lookup(keywords, variants::SelectionPolicy::Exact);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
-        auto material = s.objectMaterial(what, first.material, group.propertyDefaults, storage);
+        auto material = s.objectMaterial(what, first.material, group.propertyDefaults,
+                                         group.dynamicKeywords, storage);
         if (!material) return material.error();
         auto draw = s.objectDraw({what,
                                   group.pack,

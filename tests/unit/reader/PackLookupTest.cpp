@@ -8,6 +8,7 @@
 #include "varc/packwriter/PackWriter.h"
 #include "varc/reader/Pack.h"
 #include "varc/reader/PassView.h"
+#include "varc/reader/ShaderView.h"
 
 namespace varc {
 namespace {
@@ -80,6 +81,25 @@ TEST_F(PackLookup, LookupByNamesIgnoresUndeclaredKeywords) {
     EXPECT_EQ(found->keywords(), (std::vector<std::string>{"DIRECTIONAL", "SHADOWS_SCREEN"}));
     std::vector<std::string_view> views = {"DIRECTIONAL", "FOG_EXP"};
     EXPECT_EQ(litPass("ForwardBase").lookup(views, SelectionPolicy::Exact)->enumerationIndex(), 1u);
+}
+
+TEST_F(PackLookup, DynamicBranchSetsListTheirKeywordsAndSelectNoVariant) {
+    EXPECT_TRUE(litPass("ForwardBase").dynamicKeywords().empty());  // no dynamic_branch set
+    pack::PackContents contents = packtest::makeSampleContents();
+    auto& passes = contents.shaders[0].passes;
+    passes[0].sets.push_back({"dynamic_branch_local", {"", "RED", "GREEN"}});
+    passes[0].sets.push_back({"dynamic_branch", {"BLUE", "RED"}});
+    passes[1].sets.push_back({"dynamic_branch", {"WAVE"}});
+    Result<Pack> pack = Pack::fromBytes(packwriter::serializePack(contents));
+    ASSERT_TRUE(pack.ok()) << pack.error().detail;
+    reader::ShaderView lit = *pack->findShader("Custom/Lit");
+    PassView base = *lit.pass(size_t{0});
+    EXPECT_EQ(base.dynamicKeywords(), (std::vector<std::string>{"BLUE", "GREEN", "RED"}));
+    EXPECT_EQ(lit.dynamicKeywords(), (std::vector<std::string>{"BLUE", "GREEN", "RED", "WAVE"}));
+    Result<VariantView> found = base.lookup(
+        std::vector<std::string>{"RED", "SHADOWS_SCREEN", "DIRECTIONAL"}, SelectionPolicy::Strict);
+    ASSERT_TRUE(found.ok()) << found.error().detail;
+    EXPECT_EQ(found->keywords(), (std::vector<std::string>{"DIRECTIONAL", "SHADOWS_SCREEN"}));
 }
 
 TEST_F(PackLookup, ExactAndStrictMissesNameTheProblem) {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -45,12 +46,20 @@ struct PackVariant {
 };
 
 // A declared keyword set: `#pragma multi_compile_local _ FOO BAR` is
-// {"multi_compile_local", {"", "FOO", "BAR"}} ("" = the no-keyword option).
+// {"multi_compile_local", {"", "FOO", "BAR"}} ("" = the no-keyword option). A
+// `dynamic_branch[_local]` set makes no variants and its keywords are not in the keyword table:
+// each is a uniform integer of the pass's programs, named like the keyword, that a draw sets to
+// 1 when it enables the keyword and to 0 otherwise (docs/KEYWORDS.md §12).
 struct DeclaredSet {
     std::string directive;
     std::vector<std::string> keywords;
     friend bool operator==(const DeclaredSet&, const DeclaredSet&) = default;
 };
+
+// Whether |directive| declares dynamic_branch keywords ("dynamic_branch", "dynamic_branch_local").
+inline bool isDynamicBranchDirective(std::string_view directive) {
+    return directive.starts_with("dynamic_branch");
+}
 
 struct PackPass {
     uint32_t index = 0;     // the pass's position in its source shader
@@ -59,7 +68,8 @@ struct PackPass {
     std::vector<std::pair<std::string, std::string>> tags;  // declaration order
     PackRenderState state;
     std::vector<std::string> keywordTable;  // sorted, unique, <= 256; bit i = keyword i
-    std::vector<DeclaredSet> sets;          // declaration order
+    std::vector<DeclaredSet> sets;          // variant sets in declaration order, then the
+                                            // dynamic_branch sets in declaration order
     std::vector<PackVariant> variants;      // Unity's enumeration order; keys unique
     friend bool operator==(const PackPass&, const PackPass&) = default;
 };

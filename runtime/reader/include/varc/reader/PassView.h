@@ -46,6 +46,12 @@ public:
     std::optional<size_t> keywordIndex(std::string_view name) const;  // binary search
     size_t setCount() const;
     pack::DeclaredSet set(size_t i) const;  // i < setCount(); allocates
+    // The keywords of the pass's dynamic_branch sets, sorted, each once ("" left out). They
+    // select no variant (keyOf and lookup ignore them, as any name outside the keyword table);
+    // each is a uniform integer of the programs that the draw sets to 1 when it enables the
+    // keyword, else 0 (docs/KEYWORDS.md §12). Empty for packs built before varc recorded them.
+    // Allocates. Example: `#pragma dynamic_branch _ RED GREEN` -> {"GREEN", "RED"}.
+    std::vector<std::string> dynamicKeywords() const;
 
     // The key of |keywords|; names the pass does not declare are ignored (Unity: requested ∩
     // declared). Allocation-free. Example: {"SHADOWS_SCREEN", "FOG_EXP"} on a pass declaring

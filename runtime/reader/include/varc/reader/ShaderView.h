@@ -38,6 +38,10 @@ public:
     // format 1.0, which did not store them). Engines start a material from these.
     std::vector<pack::ShaderProperty> properties() const;
 
+    // PassView::dynamicKeywords of every pass, sorted, each once: the dynamic_branch keywords a
+    // material of this shader sets per draw (Unity keeps one keyword space per shader).
+    std::vector<std::string> dynamicKeywords() const;
+
 private:
     const detail::PackImage* mImage;
     uint32_t mIndex;

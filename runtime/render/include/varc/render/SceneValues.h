@@ -34,4 +34,12 @@ scene::Material withPropertyDefaults(scene::Material material,
 ShaderValues materialValues(const scene::Material& material,
                             std::map<std::string, std::string>& textures);
 
+// The per-draw state of dynamic_branch keywords, as Unity sends it: each of |dynamicKeywords|
+// (PassView::dynamicKeywords or ShaderView::dynamicKeywords) set in |values| to 1 when
+// |enabled| (the keywords the draw enables, e.g. the material's) lists it, else 0; names of
+// |enabled| that are not dynamic are left alone (they select variants instead).
+// Example: dynamic {"RED", "GREEN"}, enabled {"RED", "_FOG"} -> RED = 1, GREEN = 0.
+void setDynamicBranchValues(ShaderValues& values, const std::vector<std::string>& dynamicKeywords,
+                            const std::vector<std::string>& enabled);
+
 }  // namespace varc::render
