@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The staged summary `varc build` prints.
 #include "varc/cli/BuildReport.h"
+#include "varc/cli/VariantReport.h"
 
 #include <iomanip>
 #include <ostream>
@@ -101,8 +102,13 @@ void printBuildReport(const std::vector<frontend::LoadedShader>& shaders,
         out << "Compiling " << frontend::describePass(shader.ast, *loaded.pass, loaded.index)
             << "\n"
             << "    Full variant space:          " << pass.stats.declaredVariants << "\n"
-            << "    After skips and rules:       " << pass.stats.variants << "\n"
-            << "    Distinct programs:           " << stageCounts(pass.stats.distinctSources)
+            << "    After skips and rules:       " << loaded.space->count() << "\n";
+        if (loaded.plan) {
+            out << "    After materials:             " << loaded.plan->counts.materials << "\n"
+                << "    After settings stripping:    " << loaded.plan->counts.settings << "\n"
+                << "    After strip rules:           " << loaded.plan->counts.rules << "\n";
+        }
+        out << "    Distinct programs:           " << stageCounts(pass.stats.distinctSources)
             << "\n"
             << "    Compiled SPIR-V modules:     " << stageCounts(pass.stats.distinctModules)
             << "\n";
@@ -147,6 +153,7 @@ Json buildReportJson(const std::vector<frontend::LoadedShader>& shaders,
                           {"sources", sources},
                           {"programs", programs},
                           {"unaffected", unaffected}});
+        if (loaded.plan) passes.back()["stages"] = stagesJson(loaded.plan->counts);
     }
     Json cacheJson = Json::array();
     for (const cache::CacheLevelStats& level : build.cacheLevels)

@@ -10,9 +10,12 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <ostream>
+#include <set>
 #include <sstream>
 
+#include "Session.h"
 #include "varc/cli/BuildReport.h"
 #include "varc/cli/CacheCommands.h"
 #include "varc/cli/DiagnosticOutput.h"
@@ -40,53 +43,6 @@ namespace varc::cli {
 
 namespace {
 
-// State shared by the commands: the files read, the diagnostics reported so far and where they
-// are written.
-struct Session {
-    Session(DiagnosticsFormat format, std::ostream& err) : output(format, sourceMap, err) {}
-
-    includes::DiskFileSystem fileSystem;
-    includes::SourceMap sourceMap;
-    DiagnosticList diagnostics;
-    DiagnosticOutput output;
-    size_t printed = 0;  // diagnostics already written
-
-    // Writes the diagnostics reported since the last call, as found by |rule|.
-    void printNew(DiagnosticRule rule) {
-        const std::vector<Diagnostic>& all = diagnostics.diagnostics();
-        output.print(
-            std::vector<Diagnostic>(all.begin() + static_cast<std::ptrdiff_t>(printed), all.end()),
-            rule);
-        printed = all.size();
-    }
-};
-
-includes::IncludeOptions includeOptions(const ShaderInputOptions& input) {
-    includes::IncludeOptions result;
-    result.includeDirs = input.includeDirs;
-    result.builtinDir = input.builtinIncludeDir;
-    result.projectRoot = input.projectRoot;
-    return result;
-}
-
-// Loads every input shader; false when any failed (diagnostics are in |session|).
-bool loadAll(const ShaderInputOptions& input, Session& session,
-             std::vector<frontend::LoadedShader>& shaders) {
-    std::vector<std::string> files = findShaderFiles(input.inputs, session.diagnostics);
-    includes::IncludeOptions include = includeOptions(input);
-    // UsePass and Fallback find other shaders among the inputs, then under the include folders.
-    DiagnosticList searchErrors;  // an unreadable include folder is reported by the includes
-    frontend::ShaderCatalog catalog(session.fileSystem, session.sourceMap, files,
-                                    findShaderFiles(input.includeDirs, searchErrors),
-                                    include.builtinDir);
-    for (const std::string& file : files) {
-        auto shader = frontend::loadShader(file, session.fileSystem, session.sourceMap, include,
-                                           session.diagnostics, &catalog);
-        if (shader) shaders.push_back(std::move(*shader));
-    }
-    return !session.diagnostics.hasErrors();
-}
-
 // --max-variants for every pass of |shaders|: false (errors in |session|) when one has more.
 bool checkVariantLimits(const std::vector<frontend::LoadedShader>& shaders, uint64_t maxVariants,
                         Session& session) {
@@ -101,13 +57,16 @@ bool checkVariantLimits(const std::vector<frontend::LoadedShader>& shaders, uint
 
 int runVariants(const VariantsOptions& options, Session& session, std::ostream& out) {
     std::vector<frontend::LoadedShader> shaders;
-    bool ok = loadAll(options.input, session, shaders);
+    bool ok = loadAll(options.input, session, shaders, options.maxVariants);
     if (ok && options.list) ok = checkVariantLimits(shaders, options.maxVariants, session);
     session.printNew(DiagnosticRule::Input);
     if (!ok) return kExitFailure;
     if (options.json) {
-        out << variantsJson(shaders, options.list).dump() << "\n";
+        nlohmann::ordered_json json = variantsJson(shaders, options.list);
+        if (session.project) json["project"] = projectJson(*session.project);
+        out << json.dump() << "\n";
     } else {
+        if (session.project) out << projectSummary(*session.project) << "\n";
         printVariantsText(shaders, session.sourceMap, options.list, out);
     }
     return kExitOk;
@@ -115,7 +74,7 @@ int runVariants(const VariantsOptions& options, Session& session, std::ostream& 
 
 int runLock(const LockOptions& options, Session& session, std::ostream& out) {
     std::vector<frontend::LoadedShader> shaders;
-    bool ok = loadAll(options.input, session, shaders);
+    bool ok = loadAll(options.input, session, shaders, options.maxVariants);
     // A lock records what builds: a pass that cannot be built does not belong in one.
     if (ok) ok = checkVariantLimits(shaders, options.maxVariants, session);
     session.printNew(DiagnosticRule::Input);
@@ -298,7 +257,7 @@ int runBuild(const BuildCommandOptions& options, Session& session, std::ostream&
              std::ostream& err) {
     auto start = std::chrono::steady_clock::now();
     std::vector<frontend::LoadedShader> shaders;
-    bool loaded = loadAll(options.input, session, shaders);
+    bool loaded = loadAll(options.input, session, shaders, options.compile.maxVariants);
     session.printNew(DiagnosticRule::Input);  // errors, or warnings
     if (!loaded) return kExitFailure;
     driver::BuildOptions buildOptions = toBuildOptions(options.compile, options.input);
@@ -356,7 +315,7 @@ std::optional<size_t> explainedVariant(const frontend::LoadedPass& pass,
 
 int runExplain(const ExplainOptions& options, Session& session, std::ostream& out) {
     std::vector<frontend::LoadedShader> shaders;
-    bool loaded = loadAll(options.input, session, shaders);
+    bool loaded = loadAll(options.input, session, shaders, options.compile.maxVariants);
     session.printNew(DiagnosticRule::Input);
     if (!loaded) return kExitFailure;
     auto shader = std::find_if(shaders.begin(), shaders.end(), [&](const auto& candidate) {
@@ -371,6 +330,20 @@ int runExplain(const ExplainOptions& options, Session& session, std::ostream& ou
         session.output.error("shader \"" + options.shader + "\" has no pass '" + options.pass +
                              "' with a program");
         return kExitFailure;
+    }
+    // With a project, a variant that does not ship is explained, not compiled.
+    std::string projectReason;
+    const frontend::LoadedPass& planned = shader->passes[static_cast<size_t>(passPosition)];
+    if (planned.plan && options.variant) {
+        bool ships = false;
+        projectReason = frontend::explainVariant(
+            *planned.plan, planned.space->table().keyOf(splitKeywords(*options.variant)), ships);
+        if (!ships) {
+            out << (options.json ? nlohmann::ordered_json{{"project", projectReason}}.dump()
+                                 : "Variant \"" + *options.variant + "\": " + projectReason)
+                << "\n";
+            return kExitOk;
+        }
     }
     std::vector<frontend::LoadedShader> one;
     one.push_back(std::move(*shader));  // LoadedPass::pass stays valid: the AST moves whole
@@ -399,9 +372,11 @@ int runExplain(const ExplainOptions& options, Session& session, std::ostream& ou
         request.diff = std::make_pair(*a, *b);
     }
     nlohmann::ordered_json report = explainJson(request, session.sourceMap);
+    if (!projectReason.empty()) report["project"] = projectReason;
     if (options.json) {
         out << report.dump() << "\n";
     } else {
+        if (!projectReason.empty()) out << "Project: " << projectReason << "\n";
         printExplainText(report, out);
     }
     return kExitOk;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Compares current variant counts with a lock file: the CI gate behind `varc check`.
 #include "varc/cli/LockCheck.h"
+#include "varc/cli/VariantReport.h"
 
 #include <algorithm>
 #include <map>
@@ -105,7 +106,7 @@ private:
         for (const frontend::LoadedPass& pass : shader.passes) {
             auto it = std::find_if(locked.passes.begin(), locked.passes.end(),
                                    [&](const LockedPass& p) { return p.index == pass.index; });
-            uint64_t now = pass.space->count();
+            uint64_t now = pass.variantCount();
             std::string what = frontend::describePass(shader.ast, *pass.pass, pass.index);
             if (it == locked.passes.end()) {
                 report(isLenient(), pass.pass->location,
@@ -116,7 +117,7 @@ private:
                        what + ": " + std::to_string(now) + " variants, lock has " +
                            std::to_string(it->variants) + " (" + signedDelta(it->variants, now) +
                            ")",
-                       setChanges(*it, pass));
+                       changesOf(*it, pass));
             }
         }
         for (const LockedPass& lockedPass : locked.passes) {
@@ -130,6 +131,21 @@ private:
                        {});
             }
         }
+    }
+
+    // The set changes, then (with a project) the stage at which the counts part.
+    static std::vector<DiagnosticNote> changesOf(const LockedPass& locked,
+                                                 const frontend::LoadedPass& pass) {
+        std::vector<DiagnosticNote> notes = setChanges(locked, pass);
+        if (locked.stages && pass.plan) {
+            const LockedStages& was = *locked.stages;
+            frontend::VariantStageCounts now = pass.plan->counts;
+            notes.push_back({pass.pass->location,
+                             "lock: " + stagesText({was.declared, was.materials, was.settings,
+                                                    was.rules}) +
+                                 "; now: " + stagesText(now)});
+        }
+        return notes;
     }
 
     // Pass-level differences only fail the strict (no allowance) gate; with an allowance the

@@ -19,8 +19,15 @@ Json passToJson(const LockedPass& pass) {
     for (const LockedSet& set : pass.sets) {
         sets.push_back({{"directive", set.directive}, {"keywords", set.keywords}});
     }
-    return {{"index", pass.index},       {"name", pass.name}, {"lightmode", pass.lightMode},
-            {"variants", pass.variants}, {"sets", sets},      {"skipped", pass.skipped}};
+    Json json = {{"index", pass.index},       {"name", pass.name}, {"lightmode", pass.lightMode},
+                 {"variants", pass.variants}, {"sets", sets},      {"skipped", pass.skipped}};
+    if (pass.stages) {
+        json["stages"] = {{"declared", pass.stages->declared},
+                          {"materials", pass.stages->materials},
+                          {"settings", pass.stages->settings},
+                          {"rules", pass.stages->rules}};
+    }
+    return json;
 }
 
 LockedPass passFromJson(const Json& json) {
@@ -34,6 +41,12 @@ LockedPass passFromJson(const Json& json) {
                              set.at("keywords").get<std::vector<std::string>>()});
     }
     pass.skipped = json.at("skipped").get<std::vector<std::string>>();
+    if (auto stages = json.find("stages"); stages != json.end()) {
+        pass.stages = LockedStages{stages->at("declared").get<uint64_t>(),
+                                   stages->at("materials").get<uint64_t>(),
+                                   stages->at("settings").get<uint64_t>(),
+                                   stages->at("rules").get<uint64_t>()};
+    }
     return pass;
 }
 
@@ -53,7 +66,12 @@ LockedPass makeLockedPass(const frontend::LoadedPass& pass) {
     locked.index = pass.index;
     locked.name = pass.pass->name;
     locked.lightMode = pass.pass->lightMode();
-    locked.variants = pass.space->count();
+    locked.variants = pass.variantCount();
+    if (pass.plan) {
+        const frontend::VariantStageCounts& counts = pass.plan->counts;
+        locked.stages = LockedStages{counts.declared, counts.materials, counts.settings,
+                                     counts.rules};
+    }
     for (const variants::KeywordSetDecl& set : pass.keywords.sets) {
         locked.sets.push_back({set.directive, displayKeywords(set.keywords)});
     }

@@ -36,8 +36,9 @@ void addJobs(CLI::App& command, unsigned& jobs);
 // --cache URL, repeatable, kept as written in |urls| for cacheLevelsOf:
 void addCacheUrls(CLI::App& command, std::vector<std::string>& urls);
 
-// Completes |input| after the parse: the built-in include folder when none was given.
-void finishInput(ShaderInputOptions& input);
+// Completes |input| after the parse: the built-in include folder when none was given. An error
+// when there is nothing to read (no PATH and no --project).
+Status finishInput(ShaderInputOptions& input);
 
 // The cache levels in order: |directory| (--cache-dir or $VARC_CACHE_DIR) as one folder level
 // unless empty, then |urls| (or, when there are none, $VARC_CACHE's), each parsed; an error

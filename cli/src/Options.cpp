@@ -23,7 +23,10 @@ Error usageError(std::string detail) {
 }
 
 void addInputOptions(CLI::App& command, ShaderInputOptions& input) {
+    // Repeatable options take one value each, so they never swallow the PATH arguments (which
+    // are optional with --project).
     command.add_option("-I,--include-dir", input.includeDirs, "Add an include directory")
+        ->allow_extra_args(false)
         ->type_name("DIR");
     command
         .add_option("--project-root", input.projectRoot,
@@ -34,8 +37,31 @@ void addInputOptions(CLI::App& command, ShaderInputOptions& input) {
         .add_option("--builtin-include-dir", input.builtinIncludeDir,
                     "Override the built-in include directory")
         ->type_name("DIR");
-    command.add_option("paths", input.inputs, "Shader files, or directories to search")
-        ->required()
+    command
+        .add_option("--project", input.projectDir,
+                    "A Unity project folder: its shaders, and the variants its materials, "
+                    "Graphics Settings and variant collections select (docs/PROJECTS.md)")
+        ->type_name("DIR");
+    command
+        .add_option("--project-shaders", input.projectShaders,
+                    "Read the project's shader and include files from this folder (same "
+                    "relative paths) when the project folder holds only its assets; repeat "
+                    "for several")
+        ->allow_extra_args(false)
+        ->type_name("DIR");
+    command
+        .add_option("--builtin-shaders", input.builtinShaderDirs,
+                    "Folder with Unity's built-in shaders, for materials that name one by file ID "
+                    "(Standard); repeat for several")
+        ->allow_extra_args(false)
+        ->type_name("DIR");
+    command
+        .add_option("--strip-rules", input.stripRulesPath,
+                    "Remove variants by shader, pass, stage and keywords (a YAML file, "
+                    "docs/PROJECTS.md); each rule reports what it removed")
+        ->type_name("FILE");
+    command.add_option("paths", input.inputs,
+                       "Shader files, or directories to search (optional with --project)")
         ->type_name("PATH");
 }
 
@@ -74,6 +100,7 @@ void addCacheUrls(CLI::App& command, std::vector<std::string>& urls) {
                     "Program cache level, in order (repeat): file:DIR or "
                     "redis://HOST[:PORT][/DB], each with |read-only, |prefix=, |ttl=, "
                     "|connect-timeout=MS, |operation-timeout=MS (default: $VARC_CACHE)")
+        ->allow_extra_args(false)
         ->type_name("URL")
         ->allow_extra_args(false);
 }
@@ -89,8 +116,16 @@ std::string builtinIncludeDirUnlessGiven() {
 
 }  // namespace
 
-void finishInput(ShaderInputOptions& input) {
+Status finishInput(ShaderInputOptions& input) {
+    if (input.inputs.empty() && input.projectDir.empty()) {
+        return usageError("no shaders to read: give shader files or folders (PATH...), or a "
+                          "Unity project with --project DIR");
+    }
+    if (!input.projectShaders.empty() && input.projectDir.empty()) {
+        return usageError("--project-shaders needs --project DIR");
+    }
     if (input.builtinIncludeDir.empty()) input.builtinIncludeDir = builtinIncludeDirUnlessGiven();
+    return Ok{};
 }
 
 Result<std::vector<cache::CacheSpec>> cacheLevelsOf(const std::string& directory,

@@ -32,7 +32,7 @@ template <typename T>
 void finishWithInput(CLI::App& command, ParseState& state, std::shared_ptr<T> options) {
     command.callback([&state, options] {
         state.finish = [options]() -> Result<CommandOptions> {
-            finishInput(options->input);
+            if (Status input = finishInput(options->input); !input) return input.error();
             return CommandOptions(*options);
         };
     });
@@ -71,6 +71,7 @@ void addFilePrefixMaps(CLI::App& command, std::vector<std::string>& rules) {
                     "Record source paths starting with OLD as starting with NEW (as GCC's "
                     "-ffile-prefix-map; other paths inside the project root are recorded "
                     "relative to it)")
+        ->allow_extra_args(false)
         ->type_name("OLD=NEW")
         ->check([](const std::string& rule) {
             return includes::SourcePathMap().addRule(rule) ? std::string()
@@ -153,7 +154,7 @@ void addCheck(CLI::App& app, ParseState& state) {
                     return usageError("--max-growth expects N or N%, got '" + *growthText + "'");
                 }
             }
-            finishInput(options->input);
+            if (Status input = finishInput(options->input); !input) return input.error();
             return CommandOptions(*options);
         };
     });
@@ -178,7 +179,7 @@ void addBuild(CLI::App& app, ParseState& state) {
             auto levels = cacheLevelsOf(flags->cacheDirectory, flags->cacheUrls);
             if (!levels) return levels.error();
             flags->options.compile.cacheLevels = std::move(*levels);
-            finishInput(flags->options.input);
+            if (Status input = finishInput(flags->options.input); !input) return input.error();
             return CommandOptions(flags->options);
         };
     });
@@ -209,7 +210,7 @@ void addExplain(CLI::App& app, ParseState& state) {
     cmd->callback([&state, options, diff] {
         state.finish = [options, diff]() -> Result<CommandOptions> {
             if (diff->size() == 2) options->diff = std::make_pair((*diff)[0], (*diff)[1]);
-            finishInput(options->input);
+            if (Status input = finishInput(options->input); !input) return input.error();
             return CommandOptions(*options);
         };
     });

@@ -28,6 +28,23 @@ Json passOriginJson(const shaderlab::PassOrigin& origin) {
     return nullptr;
 }
 
+}  // namespace
+
+Json stagesJson(const frontend::VariantStageCounts& counts) {
+    return {{"declared", counts.declared},
+            {"materials", counts.materials},
+            {"settings", counts.settings},
+            {"rules", counts.rules}};
+}
+
+std::string stagesText(const frontend::VariantStageCounts& counts) {
+    return "declared " + std::to_string(counts.declared) + " -> materials " +
+           std::to_string(counts.materials) + " -> settings " + std::to_string(counts.settings) +
+           " -> rules " + std::to_string(counts.rules);
+}
+
+namespace {
+
 Json passJson(const frontend::LoadedPass& pass, bool withList) {
     Json sets = Json::array();
     for (const variants::KeywordSetDecl& set : pass.keywords.sets)
@@ -36,12 +53,13 @@ Json passJson(const frontend::LoadedPass& pass, bool withList) {
                  {"name", pass.pass->name},
                  {"lightmode", pass.pass->lightMode()},
                  {"keyword_sets", sets},
-                 {"variants", pass.space->count()}};
+                 {"variants", pass.variantCount()}};
+    if (pass.plan) json["stages"] = stagesJson(pass.plan->counts);
     Json origin = passOriginJson(pass.pass->origin);
     if (!origin.is_null()) json["from"] = std::move(origin);
     if (withList) {
         Json list = Json::array();
-        pass.space->forEach([&](const variants::VariantKey& key) {
+        pass.forEachVariant([&](const variants::VariantKey& key) {
             list.push_back(pass.space->table().namesOf(key));
             return true;
         });
@@ -51,8 +69,8 @@ Json passJson(const frontend::LoadedPass& pass, bool withList) {
 }
 
 void printVariantList(const frontend::LoadedPass& pass, std::ostream& out) {
-    out << "      " << pass.space->count() << " keyword variants:\n";
-    pass.space->forEach([&](const variants::VariantKey& key) {
+    out << "      " << pass.variantCount() << " keyword variants:\n";
+    pass.forEachVariant([&](const variants::VariantKey& key) {
         std::vector<std::string> names = pass.space->table().namesOf(key);
         // Unity's inspector spelling for the variant without keywords, kept for familiarity.
         out << "        " << (names.empty() ? "<no keywords defined>" : joinWords(names)) << "\n";
@@ -73,10 +91,11 @@ void printPass(const frontend::LoadedPass& pass, const includes::SourceMap& sour
                    {pass.pass->origin.reference.file, pass.pass->origin.reference.line, 0})
             << ")";
     }
-    uint64_t count = pass.space->count();
+    uint64_t count = pass.variantCount();
     out << ": " << count << (count == 1 ? " variant" : " variants");
-    uint64_t full = pass.space->fullCount();
-    if (full != count) out << " (of " << full << " before skip_variants and shortcut rules)";
+    uint64_t declared = pass.space->count(), full = pass.space->fullCount();
+    if (pass.plan) out << " (" << stagesText(pass.plan->counts) << ")";
+    if (full != declared) out << " (of " << full << " before skip_variants and shortcut rules)";
     out << "\n";
     for (const variants::KeywordSetDecl& set : pass.keywords.sets) {
         out << "      " << set.directive << ": " << joinWords(displayKeywords(set.keywords))

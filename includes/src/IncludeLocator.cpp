@@ -53,6 +53,12 @@ std::optional<std::string> IncludeLocator::findFromProjectRoot(
     const std::string& name, const std::string& includerDir,
     std::vector<std::string>& searched) const {
     if (!name.starts_with("Assets/") && !name.starts_with("Packages/")) return std::nullopt;
+    for (const IncludeOptions::VirtualRoot& root : mOptions.virtualRoots) {
+        if (!name.starts_with(root.prefix + "/")) continue;
+        searched.push_back(normalizePath(root.folder) + " (" + root.prefix + ")");
+        std::string path = joinPath(root.folder, name.substr(root.prefix.size() + 1));
+        if (exists(path)) return path;
+    }
     if (!mOptions.projectRoot.empty()) {
         searched.push_back(normalizePath(mOptions.projectRoot) + " (project root)");
         std::string path = joinPath(mOptions.projectRoot, name);

@@ -188,11 +188,24 @@ std::optional<std::string> surfaceAnalysisText(const shaderlab::Pass& placeholde
 
 }  // namespace
 
+uint64_t LoadedPass::variantCount() const {
+    return plan ? plan->counts.rules : space->count();
+}
+
+void LoadedPass::forEachVariant(
+    const std::function<bool(const variants::VariantKey&)>& visit) const {
+    if (!plan) {
+        space->forEach(visit);
+        return;
+    }
+    for (const variants::VariantKey& key : plan->keys) {
+        if (!visit(key)) return;
+    }
+}
+
 uint64_t LoadedShader::variantCount() const {
     uint64_t total = 0;
-    for (const LoadedPass& pass : passes) {
-        total = saturatingAdd(total, pass.space->count());
-    }
+    for (const LoadedPass& pass : passes) total = saturatingAdd(total, pass.variantCount());
     return total;
 }
 

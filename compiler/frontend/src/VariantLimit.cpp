@@ -22,7 +22,9 @@ std::string spelled(const variants::KeywordSetDecl& set) {
 
 bool checkVariantLimit(const LoadedShader& shader, const LoadedPass& pass, uint64_t limit,
                        DiagnosticSink& sink) {
-    uint64_t count = pass.space->count();
+    // With a project's plan the limit applies to what its materials select, not to the
+    // declared space (a 10^12-variant uber shader with five materials builds).
+    uint64_t count = pass.plan ? pass.plan->counts.materials : pass.space->count();
     if (count <= limit) return true;
     const std::vector<variants::KeywordSetDecl>& sets = pass.keywords.sets;
     std::vector<size_t> order(sets.size());
@@ -40,7 +42,8 @@ bool checkVariantLimit(const LoadedShader& shader, const LoadedPass& pass, uint6
                  pass.pass->program->origin,
                  describePass(shader.ast, *pass.pass, pass.index) + " has " +
                      std::to_string(count) + " variants (" + std::to_string(sets.size()) +
-                     " keyword sets); the limit is " + std::to_string(limit) +
+                     " keyword sets" + (pass.plan ? ", selected by the project's materials" : "") +
+                     "); the limit is " + std::to_string(limit) +
                      " (--max-variants): use shader_feature for material keywords, "
                      "skip_variants, or fewer sets",
                  std::move(notes)});

@@ -105,9 +105,21 @@ TEST_F(OptionsTest, DiagnosticsFormatsDecode) {
 }
 
 TEST_F(OptionsTest, ShaderCommandsNeedPathsAndPositiveLimits) {
-    expectUsageError({"variants"}, "paths is required");
+    expectUsageError({"variants"}, "no shaders to read");
+    expectUsageError({"build", "-o", "p"}, "or a Unity project with --project DIR");
+    expectUsageError({"variants", "--project-shaders", "s", "a"}, "needs --project");
     expectUsageError({"variants", "--max-variants", "0", "a"}, "--max-variants");
     expectUsageError({"lock", "a"}, "--output is required");
+}
+
+TEST_F(OptionsTest, AProjectStandsInForPaths) {
+    VariantsOptions options = parseAs<VariantsOptions>(
+        {"variants", "--project", "game", "--project-shaders", "src", "--project-shaders", "src2",
+         "--builtin-shaders", "b1", "--builtin-shaders", "b2"});
+    EXPECT_TRUE(options.input.inputs.empty());
+    EXPECT_EQ(options.input.projectDir, "game");
+    EXPECT_EQ(options.input.projectShaders, (std::vector<std::string>{"src", "src2"}));
+    EXPECT_EQ(options.input.builtinShaderDirs, (std::vector<std::string>{"b1", "b2"}));
 }
 
 TEST_F(OptionsTest, LockTakesItsFileAndLimit) {

@@ -123,6 +123,32 @@ TEST(IncludeResolver, AGivenProjectRootIsTheOnlyPlaceForProjectRootPaths) {
         << missing.diagnostics.diagnostics()[0].message;
 }
 
+// varc --project: "Packages/<name>/..." from the package's folder, "Assets/..." from each
+// overlay in order; a miss names every folder tried.
+TEST(IncludeResolver, VirtualRootsMapPackagesAndAssetOverlays) {
+    Harness h;
+    h.options.virtualRoots = {{"Packages/com.example.fx", "cache/com.example.fx@1.2.0"},
+                              {"Assets", "project/Assets"},
+                              {"Assets", "sources/Assets"}};
+    h.file("project/Assets/main.shader",
+           "#include \"Packages/com.example.fx/Fx.cginc\"\n#include \"Assets/Lib/Noise.cginc\"\n")
+        .file("cache/com.example.fx@1.2.0/Fx.cginc", "fx\n")
+        .file("sources/Assets/Lib/Noise.cginc", "noise\n");
+    auto expanded = h.expandFile("project/Assets/main.shader");
+    ASSERT_TRUE(expanded.has_value());
+    EXPECT_THAT(expanded->dependencies,
+                ElementsAre("cache/com.example.fx@1.2.0/Fx.cginc", "sources/Assets/Lib/Noise.cginc"));
+
+    Harness missing;
+    missing.options.virtualRoots = {{"Packages/com.example.fx", "cache/fx"}};
+    missing.file("game/main.shader", "#include \"Packages/com.example.fx/none.cginc\"\n");
+    EXPECT_FALSE(missing.expandFile("game/main.shader").has_value());
+    ASSERT_TRUE(missing.diagnostics.hasErrors());
+    EXPECT_NE(missing.diagnostics.diagnostics()[0].message.find("cache/fx (Packages/com.example.fx)"),
+              std::string::npos)
+        << missing.diagnostics.diagnostics()[0].message;
+}
+
 // Projects made on Windows or macOS include "Autolight.cginc" for AutoLight.cginc.
 TEST(IncludeResolver, AFileNameDifferingOnlyInCaseIsFoundWithAWarning) {
     Harness h;

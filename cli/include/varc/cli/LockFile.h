@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,11 +19,19 @@ struct LockedSet {
     friend bool operator==(const LockedSet&, const LockedSet&) = default;
 };
 
+// Unity's staged counts when a project chose the variants (--project): declared -> materials
+// and collections -> Graphics Settings stripping -> the user's strip rules (= variants).
+struct LockedStages {
+    uint64_t declared = 0, materials = 0, settings = 0, rules = 0;
+    friend bool operator==(const LockedStages&, const LockedStages&) = default;
+};
+
 struct LockedPass {
     size_t index = 0;
     std::string name;
     std::string lightMode;
-    uint64_t variants = 0;
+    uint64_t variants = 0;              // what ships (with a project: stages->rules)
+    std::optional<LockedStages> stages;  // with a project only
     std::vector<LockedSet> sets;
     std::vector<std::string> skipped;  // skip_variants keywords, sorted
 };
@@ -39,6 +48,8 @@ struct LockedShader {
 //     "passes":[{"index":0,"name":"","lightmode":"ForwardBase","variants":2,
 //       "sets":[{"directive":"multi_compile","keywords":["_","VERTEXLIGHT_ON"]}],
 //       "skipped":[]}]}]}
+// With --project each pass also has "stages":{"declared":D,"materials":M,"settings":S,"rules":R}
+// (optional, so version 1 files without it still read).
 struct LockFile {
     static constexpr int kVersion = 1;
     std::vector<LockedShader> shaders;

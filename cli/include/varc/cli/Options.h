@@ -46,6 +46,12 @@ struct ShaderInputOptions {
     std::string projectRoot;               // --project-root ("" = found from each shader)
     // --builtin-include-dir, else $VARC_BUILTIN_INCLUDE_DIR, else the installed or source default.
     std::string builtinIncludeDir;
+    // --project: a Unity project whose materials, variant collections and Graphics Settings
+    // choose the variants (docs/PROJECTS.md); "" = every declared variant of the PATHs.
+    std::string projectDir;
+    std::vector<std::string> projectShaders;     // --project-shaders: the shaders' own folders
+    std::vector<std::string> builtinShaderDirs;  // --builtin-shaders: Unity's built-in shaders
+    std::string stripRulesPath;  // --strip-rules: the user's strip rules ("" = none)
     DiagnosticsFormat diagnosticsFormat = DiagnosticsFormat::Clang;  // --diagnostics-format
 };
 

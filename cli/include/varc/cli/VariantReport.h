@@ -4,12 +4,18 @@
 
 #include <iosfwd>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/includes/SourceMap.h"
 
 namespace varc::cli {
+
+// A project's staged counts of one pass: {"declared":D,"materials":M,"settings":S,"rules":R}.
+nlohmann::ordered_json stagesJson(const frontend::VariantStageCounts& counts);
+// The same as text: "declared 96 -> materials 24 -> settings 12 -> rules 12".
+std::string stagesText(const frontend::VariantStageCounts& counts);
 
 // {"shaders":[{"file":F,"name":N,"passes":[{"index":0,"name":"","lightmode":"ForwardBase",
 //   "keyword_sets":[["_","VERTEXLIGHT_ON"]],"variants":2,"list":[[],["VERTEXLIGHT_ON"]]}],

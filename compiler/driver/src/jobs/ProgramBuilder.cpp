@@ -87,7 +87,8 @@ bool ProgramBuilder::plan(const std::vector<frontend::LoadedShader>& shaders,
                 ok = false;
                 continue;
             }
-            job.keys = job.pass->space->enumerate();
+            // A project's plan lists what ships; without one every declared variant does.
+            job.keys = job.pass->plan ? job.pass->plan->keys : job.pass->space->enumerate();
             job.text = languageOf(job) == shaderlab::ProgramLanguage::Glsl
                            ? toGlslLineConvention(hoistGlslVersion(job.pass->source.text))
                            : job.pass->source.text;
@@ -435,9 +436,11 @@ BuildOutput ProgramBuilder::assemble() {
             if (mOptions.keepPrunedSources) pass.variantSources.push_back(sourcesOf(job, v));
         }
         fillStats(job, pass, finalIds);
-        // Which sets change which stage is only known from every variant's programs.
+        // Which sets change which stage is only known from every variant's programs: not when
+        // another shard or a project's plan left some out.
         bool everyVariant = std::find(job.sourceIds.begin(), job.sourceIds.end(), kNoProgram) ==
-                            job.sourceIds.end();
+                                job.sourceIds.end() &&
+                            job.keys.size() == job.pass->space->count();
         if (everyVariant)
             pass.setStageEffects = computeSetStageEffects(*job.pass->space, pass.variants);
         output.passes.push_back(std::move(pass));

@@ -28,6 +28,14 @@ struct IncludeOptions {
     // Where `#include "Assets/..."` and `"Packages/..."` (paths written from a Unity project's
     // root) are found; "" = the nearest ancestor of the including file that has them.
     std::string projectRoot;
+    // A Unity project's own map (varc --project), tried in order before |projectRoot|: a name
+    // that starts with "<prefix>/" is looked up as "<folder>/<rest>". Prefixes are "Assets" and
+    // "Packages/<package name>"; a prefix may repeat with other folders (shader overlays).
+    struct VirtualRoot {
+        std::string prefix;
+        std::string folder;
+    };
+    std::vector<VirtualRoot> virtualRoots;
 };
 
 // A piece of source to expand: text that lives at |origin| (a whole file, or a CGPROGRAM

@@ -72,7 +72,8 @@ struct CompiledPass {
     PassBuildStats stats;
     // Per declared keyword set (PassKeywords::sets order): the stages whose program changes
     // with that set's choice. A set with mask 0 does not affect the pass at all. Empty when a
-    // shard (BuildOptions::shard) built only some of the pass's variants.
+    // shard (BuildOptions::shard) or a project's plan (LoadedPass::plan) built only some of the
+    // pass's variants.
     std::vector<StageMask> setStageEffects;
     // With BuildOptions::keepPrunedSources, per variant (same order) and stage slot: its index
     // into BuildOutput::prunedSources, or kNoProgram for a stage the pass does not have.

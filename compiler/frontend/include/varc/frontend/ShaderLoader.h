@@ -2,6 +2,7 @@
 // Loads a .shader file: ShaderLab parse, include expansion and keyword model for every pass.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "varc/includes/IncludeResolver.h"
 #include "varc/includes/SourceMap.h"
 #include "varc/frontend/ShaderCatalog.h"
+#include "varc/frontend/VariantPlan.h"
 #include "varc/shaderlab/ShaderAst.h"
 #include "varc/variants/PassKeywords.h"
 #include "varc/variants/VariantSpace.h"
@@ -24,6 +26,15 @@ struct LoadedPass {
     includes::ExpandedSource source;      // *INCLUDE blocks + program, includes spliced
     variants::PassKeywords keywords;
     std::optional<variants::VariantSpace> space;  // always set after a successful load
+    // Set when a Unity project chose the variants (planPass); otherwise every variant of
+    // |space| ships.
+    std::optional<VariantPlan> plan;
+
+    // The variants that ship: the plan's last stage, else every variant of |space|.
+    uint64_t variantCount() const;
+    // Visits them in enumeration order; stop early by returning false. With a plan that was not
+    // enumerated (over the limit) it visits nothing.
+    void forEachVariant(const std::function<bool(const variants::VariantKey&)>& visit) const;
 };
 
 // Move-only: LoadedPass::pass points into |ast| (a vector move keeps element addresses).

@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: Apache-2.0
+// Loading the inputs of a command that reads shaders: PATHs or a project, then the plan.
+#include <filesystem>
+#include <set>
+#include <string>
+#include <utility>
+
+#include "Session.h"
+#include "varc/cli/ShaderInputs.h"
+#include "varc/frontend/ShaderCatalog.h"
+
+namespace varc::cli {
+
+namespace {
+
+includes::IncludeOptions includeOptions(const ShaderInputOptions& input) {
+    includes::IncludeOptions result;
+    result.includeDirs = input.includeDirs;
+    result.builtinDir = input.builtinIncludeDir;
+    result.projectRoot = input.projectRoot;
+    return result;
+}
+
+// With PATH arguments beside --project, only the build's shaders under them.
+std::vector<std::string> restrictToPaths(const std::vector<std::string>& files,
+                                         const std::vector<std::string>& paths,
+                                         DiagnosticSink& sink) {
+    namespace fs = std::filesystem;
+    if (paths.empty()) return files;
+    std::set<std::string> wanted;
+    for (const std::string& path : findShaderFiles(paths, sink)) {
+        wanted.insert(fs::weakly_canonical(path).generic_string());
+    }
+    std::vector<std::string> kept;
+    for (const std::string& file : files) {
+        if (wanted.count(fs::weakly_canonical(file).generic_string())) kept.push_back(file);
+    }
+    return kept;
+}
+
+}  // namespace
+
+bool loadAll(const ShaderInputOptions& input, Session& session,
+             std::vector<frontend::LoadedShader>& shaders, uint64_t maxVariants) {
+    includes::IncludeOptions include = includeOptions(input);
+    std::vector<std::string> files, searchFiles;
+    DiagnosticList searchErrors;  // an unreadable include folder is reported by the includes
+    if (!input.projectDir.empty()) {
+        session.project = readProjectInputs(input, session.fileSystem, session.sourceMap,
+                                            session.diagnostics);
+        if (!session.project) return false;
+        files = restrictToPaths(session.project->shaderFiles, input.inputs, session.diagnostics);
+        include.virtualRoots = session.project->virtualRoots;
+        searchFiles = session.project->allShaderFiles;
+    } else {
+        files = findShaderFiles(input.inputs, session.diagnostics);
+    }
+    for (std::string& file : findShaderFiles(input.includeDirs, searchErrors))
+        searchFiles.push_back(std::move(file));
+    // UsePass and Fallback find other shaders among the inputs, then in the project and under
+    // the include folders.
+    frontend::ShaderCatalog catalog(session.fileSystem, session.sourceMap, files, searchFiles,
+                                    include.builtinDir);
+    for (const std::string& file : files) {
+        auto shader = frontend::loadShader(file, session.fileSystem, session.sourceMap, include,
+                                           session.diagnostics, &catalog);
+        if (shader) shaders.push_back(std::move(*shader));
+    }
+    std::vector<variants::StripRule> rules;
+    if (!input.stripRulesPath.empty() &&
+        !readUserStripRules(input.stripRulesPath, session.sourceMap, session.diagnostics, rules)) {
+        return false;
+    }
+    if (session.project || !input.stripRulesPath.empty()) {
+        planShaders(session.project ? &*session.project : nullptr, rules, maxVariants, shaders,
+                    session.diagnostics);
+    }
+    return !session.diagnostics.hasErrors();
+}
+
+}  // namespace varc::cli
