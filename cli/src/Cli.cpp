@@ -63,10 +63,12 @@ int runVariants(const VariantsOptions& options, Session& session, std::ostream& 
     if (!ok) return kExitFailure;
     if (options.json) {
         nlohmann::ordered_json json = variantsJson(shaders, options.list);
-        if (session.project) json["project"] = projectJson(*session.project);
+        if (session.project && !session.project->root.empty())
+            json["project"] = projectJson(*session.project);
         out << json.dump() << "\n";
     } else {
-        if (session.project) out << projectSummary(*session.project) << "\n";
+        if (session.project && !session.project->root.empty())
+            out << projectSummary(*session.project) << "\n";
         printVariantsText(shaders, session.sourceMap, options.list, out);
     }
     return kExitOk;

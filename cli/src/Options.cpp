@@ -60,6 +60,12 @@ void addInputOptions(CLI::App& command, ShaderInputOptions& input) {
                     "Remove variants by shader, pass, stage and keywords (a YAML file, "
                     "docs/PROJECTS.md); each rule reports what it removed")
         ->type_name("FILE");
+    command
+        .add_option("--usage-log", input.usageLogs,
+                    "Also build what a runtime session recorded (`varc render --usage-log`), as a "
+                    "variant collection; repeat for several")
+        ->allow_extra_args(false)
+        ->type_name("FILE");
     command.add_option("paths", input.inputs,
                        "Shader files, or directories to search (optional with --project)")
         ->type_name("PATH");

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "Session.h"
+#include "UsageLog.h"
 #include "varc/cli/ShaderInputs.h"
 #include "varc/frontend/ShaderCatalog.h"
 
@@ -70,6 +71,15 @@ bool loadAll(const ShaderInputOptions& input, Session& session,
     if (!input.stripRulesPath.empty() &&
         !readUserStripRules(input.stripRulesPath, session.sourceMap, session.diagnostics, rules)) {
         return false;
+    }
+    // A usage log asks like a variant collection: without a project, the shaders it names
+    // get the variants it recorded (every multi_compile state with the shader_feature
+    // combinations it used), the others their all-off combination.
+    for (const std::string& path : input.usageLogs) {
+        auto entries = readUsageLog(path, session.sourceMap, session.diagnostics);
+        if (!entries) return false;
+        if (!session.project) session.project.emplace();
+        addUsageDemands(*entries, shaders, *session.project, session.diagnostics);
     }
     if (session.project || !input.stripRulesPath.empty()) {
         planShaders(session.project ? &*session.project : nullptr, rules, maxVariants, shaders,

@@ -52,6 +52,7 @@ struct ShaderInputOptions {
     std::vector<std::string> projectShaders;     // --project-shaders: the shaders' own folders
     std::vector<std::string> builtinShaderDirs;  // --builtin-shaders: Unity's built-in shaders
     std::string stripRulesPath;  // --strip-rules: the user's strip rules ("" = none)
+    std::vector<std::string> usageLogs;  // --usage-log: sessions the runtime recorded
     DiagnosticsFormat diagnosticsFormat = DiagnosticsFormat::Clang;  // --diagnostics-format
 };
 
