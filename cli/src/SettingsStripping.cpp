@@ -48,7 +48,7 @@ void addLightmapRules(const project::GraphicsSettings& settings, SourceLocation 
         rules.push_back(rule(std::string("lightmap stripping: ") + mode.flag + " is 0", where,
                              mode.with, mode.without));
     }
-    // Directional lightmap data without a lightmap is meaningless (reference §4.2, inferred).
+    // Directional lightmap data without a lightmap is meaningless (docs/PROJECTS.md; Unity's exact predicate is unpublished).
     rules.push_back(rule("lightmap stripping: DIRLIGHTMAP_COMBINED without a lightmap", where,
                          {"DIRLIGHTMAP_COMBINED"}, {"LIGHTMAP_ON", "DYNAMICLIGHTMAP_ON"}));
 }

@@ -8,7 +8,7 @@
 # Usage: self_contained.sh REPO_ROOT
 set -u
 cd "$1" || exit 1
-pattern='unity-keywords\.md|unity-keywords §|unity-shadows\.md|peers\.md|style\.md|shared/reference'
+pattern='unity-variant-selection\.md|unity-keywords\.md|unity-keywords §|unity-shadows\.md|peers\.md|style\.md|shared/reference'
 # Every tracked file (git ls-files), so no folder is skipped; build trees are untracked.
 checklist='shared/reference/unity-builtin-api.tsv'
 hits=$(git ls-files -z | grep -zv '^tests/layout/self_contained.sh$' |

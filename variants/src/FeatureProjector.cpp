@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Projects a requested keyword list onto one pass's shader_feature sets (reference §2.2 pick).
+// Projects a requested keyword list onto one pass's shader_feature sets (docs/KEYWORDS.md §11).
 #include "FeatureProjector.h"
 
 #include <algorithm>
@@ -60,7 +60,7 @@ RequestProjection FeatureProjector::project(const std::vector<std::string>& keyw
     return projection;
 }
 
-// One set's option (reference §2.2 pick): the enabled keyword; with two or more, the first in
+// One set's option (docs/KEYWORDS.md §11): the enabled keyword; with two or more, the first in
 // declared order (UNVERIFIED; recorded as a conflict for a warning); with none, the `_` entry,
 // else the first remaining keyword (UNVERIFIED, Unity's old "first one is used" rule; recorded
 // in defaultedSets for a warning).

@@ -32,13 +32,13 @@ std::string describeRequest(const KeywordRequest& request) {
 
 }  // namespace
 
-// The rules (reference unity-variant-selection.md §2.1-2.5):
+// The rules (docs/KEYWORDS.md §11):
 //  * multi_compile sets (shortcuts included) ship every option; dynamic_branch makes none;
 //  * shader_feature sets ship the union over requests of each request's whole combination,
 //    never the product of per-set unions (FeatureProjector: undeclared keywords ignored);
 //  * no Material request: the all-off combination ships (INFERRED, no primary source), as
 //    well as any collection entries; collection entries project like materials and their
-//    multi_compile keywords change nothing (INFERRED: "acts like a material", §2.5);
+//    multi_compile keywords change nothing (inferred: a collection entry acts like a material);
 //  * always included: every declared variant ships, shader_feature counted like multi_compile;
 //  * skip_variants and the shortcut rules apply to every combination (they are in the space).
 MaterialSelection MaterialSelection::select(const PassKeywords& keywords, const VariantSpace& space,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Graphics Settings' lightmap, fog and instancing stripping as strip rules (reference §4.2).
+// Graphics Settings' lightmap, fog and instancing stripping as strip rules (docs/PROJECTS.md).
 #include <gtest/gtest.h>
 
 #include "varc/cli/SettingsStripping.h"

@@ -11,7 +11,7 @@
 
 namespace varc::cli {
 
-// The rules |settings| imply for one shader (reference unity-variant-selection.md §4.2-4.3):
+// The rules |settings| imply for one shader (docs/PROJECTS.md, "Graphics Settings stripping"):
 // - lightmap and fog modes only under Custom stripping (1): a variant is removed when it uses a
 //   mode whose keep flag is 0 (a missing flag keeps). Automatic (0, Unity's default) would
 //   analyse the scenes; varc keeps every mode then, a superset (docs/PROJECTS.md);

@@ -28,7 +28,7 @@ struct KeywordRequest {
 };
 
 // A shader_feature set where the request enabled two or more keywords: |kept| is the first in
-// declared order (UNVERIFIED rule, reference §2.2), |dropped| the others.
+// declared order (a rule Unity does not document; docs/KEYWORDS.md §11), |dropped| the others.
 struct FeatureConflict {
     size_t set = 0;  // index into PassKeywords::sets
     std::string kept;
@@ -48,7 +48,7 @@ struct RequestProjection {
     std::vector<size_t> defaultedSets;       // `_`-less sets with none on: first keyword assumed
 };
 
-// Counts per stage of Unity's log (reference §1). More stages (settings, user rules) come later.
+// Counts per stage of Unity's build log (docs/PROJECTS.md). More stages (settings, user rules) come later.
 struct SelectionCounts {
     uint64_t full = 0;      // product of the set sizes ("Full variant space")
     uint64_t declared = 0;  // after skip_variants and the shortcuts' validity rules
@@ -74,7 +74,7 @@ struct VariantVerdict {
 // The shipped variants of one pass: each distinct request projection pins the shader_feature
 // sets, and the pass ships the disjoint union over projections of the pinned space. Counting
 // and explaining never enumerate; forEach visits only shipped variants. Rules: reference
-// unity-variant-selection.md §2.1-2.5, choices in MaterialSelection.cpp.
+// docs/KEYWORDS.md §11 and docs/PROJECTS.md, choices in MaterialSelection.cpp.
 class MaterialSelection {
 public:
     // |keywords| and |space| describe the same pass (space = VariantSpace::build(keywords)).
