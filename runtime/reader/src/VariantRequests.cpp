@@ -72,8 +72,7 @@ Result<VariantView> VariantRequests::resolve(const PassView& pass,
     return resolve(pass, pass.keyOf(keywords), policy);
 }
 
-Result<VariantView> VariantRequests::resolve(const PassView& pass,
-                                             const variants::VariantKey& key,
+Result<VariantView> VariantRequests::resolve(const PassView& pass, const variants::VariantKey& key,
                                              variants::SelectionPolicy policy) {
     // Masked first, so the recorded request is what selection saw (requested ∩ declared).
     variants::VariantKey requested = pack::maskKeyToTable(key, pass.keywordCount());

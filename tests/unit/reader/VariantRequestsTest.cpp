@@ -1,7 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
 // VariantRequests: misses reported once and counted, strict errors, the usage log's bytes, threads.
-#include "varc/reader/VariantRequests.h"
-
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -16,6 +14,7 @@
 #include "varc/packwriter/PackWriter.h"
 #include "varc/reader/Pack.h"
 #include "varc/reader/ShaderView.h"
+#include "varc/reader/VariantRequests.h"
 
 namespace varc {
 namespace {
@@ -46,8 +45,8 @@ TEST_F(VariantRequestsTest, MissIsReportedOnceThenCounted) {
     std::vector<VariantMiss> reported;
     VariantRequests requests([&](const VariantMiss& miss) { reported.push_back(miss); });
     for (int i = 0; i < 3; ++i) {
-        auto found = requests.resolve(pass("ForwardAdd"), Names{"SPOT", "POINT"},
-                                      SelectionPolicy::Closest);
+        auto found =
+            requests.resolve(pass("ForwardAdd"), Names{"SPOT", "POINT"}, SelectionPolicy::Closest);
         ASSERT_TRUE(found.ok()) << found.error().detail;
         EXPECT_FALSE(found->exact());
         EXPECT_EQ(found->keywords(), Names{"POINT"});
@@ -99,8 +98,8 @@ TEST_F(VariantRequestsTest, TakeNewMissesReturnsEachMissOnce) {
 TEST_F(VariantRequestsTest, StrictMissIsAnErrorNamingTheNearestVariants) {
     VariantRequests requests;
     for (int i = 0; i < 2; ++i) {
-        auto found = requests.resolve(pass("ForwardAdd"), Names{"SPOT", "POINT"},
-                                      SelectionPolicy::Strict);
+        auto found =
+            requests.resolve(pass("ForwardAdd"), Names{"SPOT", "POINT"}, SelectionPolicy::Strict);
         ASSERT_FALSE(found.ok());
         EXPECT_EQ(found.error().code, ErrorCode::NotFound);
         // Every strict miss fails with the same text; it is reported once.
@@ -161,8 +160,8 @@ TEST_F(VariantRequestsTest, UsageLogBytesAreExactAndDeterministic) {
 TEST_F(VariantRequestsTest, WriteUsageLogWritesTheBytesAndKeepsDevices) {
     VariantRequests requests;
     ASSERT_TRUE(requests.resolve(pass("ForwardAdd"), Names{"SPOT"}, SelectionPolicy::Closest));
-    std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                ("varc-usage-log-" + std::to_string(::getpid()));
+    std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("varc-usage-log-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::string path = (dir / "usage.jsonl").string();
     ASSERT_TRUE(requests.writeUsageLog(path).ok());
@@ -192,8 +191,8 @@ TEST_F(VariantRequestsTest, TwoThreadsReportEachMissOnce) {
             EXPECT_TRUE(requests.resolve(pass("ForwardAdd"), Names{"SPOT", "POINT"},
                                          SelectionPolicy::Closest));
             EXPECT_TRUE(requests.resolve(pass("ShadowCaster"), Names{}, SelectionPolicy::Closest));
-            EXPECT_TRUE(requests.resolve(pass("ForwardAdd"), Names{"SPOT"},
-                                         SelectionPolicy::Closest));
+            EXPECT_TRUE(
+                requests.resolve(pass("ForwardAdd"), Names{"SPOT"}, SelectionPolicy::Closest));
         }
     };
     std::thread a(work), b(work);

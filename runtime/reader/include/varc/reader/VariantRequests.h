@@ -29,7 +29,7 @@ struct VariantMiss {
     std::vector<std::string> requested;  // sorted; only keywords the pass declares
     std::vector<std::string> used;       // the variant drawn instead; empty under Strict/Exact
     variants::SelectionPolicy policy = variants::SelectionPolicy::Closest;
-    uint64_t count = 0;                  // how many requests missed this way so far
+    uint64_t count = 0;  // how many requests missed this way so far
     // One line for a log, e.g. `shader "Custom/X" pass 1 (ForwardAdd): no variant with SPOT
     // SHADOWS_DEPTH; using SPOT (closest)`; under Strict/Exact it names up to 3 nearest variants.
     std::string report;
