@@ -50,8 +50,21 @@ void addRender(CLI::App& app, ParseState& state) {
     cmd->add_option("--diff", options->diffPath, "Also compare and write the diff image here")
         ->type_name("FILE");
     addPipelineCache(*cmd, options->session);
-    cmd->callback([&state, options] {
-        state.finish = [options]() -> Result<CommandOptions> { return CommandOptions(*options); };
+    auto policy = std::make_shared<std::string>("closest");
+    cmd->add_option("--variant-policy", *policy,
+                    "A variant the pack lacks: closest (default; a warning once each) or strict "
+                    "(an error)")
+        ->check(CLI::IsMember({"closest", "strict"}))
+        ->type_name("POLICY");
+    cmd->add_option("--usage-log", options->usageLogPath,
+                    "Write every distinct variant request as JSON Lines (docs/USAGE_LOG.md)")
+        ->type_name("FILE");
+    cmd->callback([&state, options, policy] {
+        state.finish = [options, policy]() -> Result<CommandOptions> {
+            options->variantPolicy = *policy == "strict" ? variants::SelectionPolicy::Strict
+                                                         : variants::SelectionPolicy::Closest;
+            return CommandOptions(*options);
+        };
     });
 }
 

@@ -17,6 +17,7 @@
 #include "ValidationReport.h"
 #include "varc/image/Png.h"
 #include "varc/reader/Pack.h"
+#include "varc/reader/VariantRequests.h"
 #include "varc/reference/DeferredReference.h"
 #include "varc/reference/ImageCompare.h"
 #include "varc/reference/ReferenceRenderer.h"
@@ -229,6 +230,16 @@ void addUnreferencedShaders(const std::string& scenePath, std::set<std::string>&
     }
 }
 
+// Prints each miss a draw drew another variant for, once; strict misses are the render's error.
+void printNewMisses(reader::VariantRequests& requests, std::ostream& err) {
+    for (const reader::VariantMiss& miss : requests.takeNewMisses()) {
+        if (miss.policy == variants::SelectionPolicy::Closest ||
+            miss.policy == variants::SelectionPolicy::First) {
+            err << "varc: warning: " << miss.report << "\n";
+        }
+    }
+}
+
 size_t distinctCount(const std::vector<std::string>& names) {
     return std::set<std::string>(names.begin(), names.end()).size();
 }
@@ -240,10 +251,20 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     std::unique_ptr<RenderSession> session = openRenderSession(options.session, err, exitCode);
     if (!session) return exitCode;
     bool compare = !options.referencePath.empty() || !options.diffPath.empty();
+    reader::VariantRequests requests;
+    session->renderer->useVariantRequests(&requests, options.variantPolicy);
     SceneOutcome outcome = renderScene(*session->renderer, options.scenePath, compare,
                                        options.outputPath, options.referencePath, options.diffPath);
+    printNewMisses(requests, err);
     if (!outcome.error.empty()) err << "varc: error: " << outcome.error << "\n";
     savePipelineCache(session->cache, err);
+    // Written after a failed render too: the requests made so far show what the pack lacks.
+    if (!options.usageLogPath.empty()) {
+        if (Status written = requests.writeUsageLog(options.usageLogPath); !written) {
+            err << "varc: error: " << written.error().detail << "\n";
+            return kExitFailure;
+        }
+    }
     if (!outcome.ok) return kExitFailure;
     out << "rendered " << options.scenePath << ": " << outcome.frame.draws << " draws, "
         << distinctCount(outcome.frame.variants) << " variants -> " << options.outputPath << "\n";

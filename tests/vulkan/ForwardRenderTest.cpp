@@ -11,6 +11,7 @@
 #include "VulkanTestSupport.h"
 #include "varc/image/Png.h"
 #include "varc/reader/Pack.h"
+#include "varc/reader/VariantRequests.h"
 #include "varc/reference/ImageCompare.h"
 #include "varc/reference/ReferenceRenderer.h"
 #include "varc/reference/SceneTolerance.h"
@@ -107,6 +108,26 @@ TEST_F(ForwardRenderTest, WithNoPixelLightsAPointLightStillLightsThroughVertexLi
     EXPECT_NE(litFrame.variants[0].find("VERTEXLIGHT_ON"), std::string::npos)
         << litFrame.variants[0];
     EXPECT_GT(testing::rgbSum(litFrame.image), testing::rgbSum(darkFrame.image) + 1.0f);
+}
+
+// Renderer::useVariantRequests: every draw's variant request is recorded, once per distinct
+// request, and held variants are not misses.
+TEST_F(ForwardRenderTest, VariantRequestsRecordEveryDraw) {
+    scene::Scene scene = oneSphere();
+    scene.objects.push_back(sphere({1.2f, 0, 0}));
+    scene.lights.push_back(pointLight({-1.0f, 1.0f, -1.0f}, glm::vec3(1.0f), 5.0f));
+    reader::VariantRequests requests;
+    mRenderer->useVariantRequests(&requests, variants::SelectionPolicy::Strict);
+    RenderedFrame frame = render(scene);
+    mRenderer->useVariantRequests(nullptr, variants::SelectionPolicy::Closest);
+    EXPECT_EQ(frame.draws, 4u);  // two objects, ForwardBase and one ForwardAdd each
+    EXPECT_EQ(requests.requestCount(), 2u);
+    EXPECT_TRUE(requests.misses().empty());
+    const std::string log = requests.usageLog();
+    EXPECT_NE(log.find(std::string("{\"shader\":\"") + kSeedShader +
+                       "\",\"pass\":1,\"lightmode\":\"ForwardAdd\",\"keywords\":[\"POINT\"]}\n"),
+              std::string::npos)
+        << log;
 }
 
 TEST_F(ForwardRenderTest, UnknownShaderIsAClearError) {

@@ -18,6 +18,9 @@ uint32_t PassView::field(uint32_t field) const {
 }
 
 uint32_t PassView::index() const { return field(pack::kPassIndex); }
+std::string_view PassView::shaderName() const {
+    return mImage->string(mImage->get(Chunk::Shaders, mShader, pack::kShaderName));
+}
 std::string_view PassView::name() const { return mImage->string(field(pack::kPassName)); }
 std::string_view PassView::lightMode() const { return mImage->string(field(pack::kPassLightMode)); }
 
@@ -143,10 +146,7 @@ VariantView PassView::variant(size_t enumerationIndex) const {
 }
 
 std::string PassView::describe() const {
-    std::string text =
-        "shader '" +
-        std::string(mImage->string(mImage->get(Chunk::Shaders, mShader, pack::kShaderName))) +
-        "' pass " + std::to_string(index());
+    std::string text = "shader '" + std::string(shaderName()) + "' pass " + std::to_string(index());
     if (!name().empty()) text += " '" + std::string(name()) + "'";
     if (!lightMode().empty()) text += " (LightMode " + std::string(lightMode()) + ")";
     return text;

@@ -176,7 +176,10 @@ Status DeferredRenderer::State::gbufferPhase(const scene::Scene& scene,
         std::optional<reader::PassView> pass = shader->pass(std::string_view("Deferred"));
         if (!pass)
             return makeError(ErrorCode::NotFound, what + ": the shader has no Deferred pass");
-        auto variant = pass->lookup(keywords, variants::SelectionPolicy::Closest);
+        // The camera's keyword and the material's (shader_feature variants).
+        auto variant =
+            variantFor(*pass, pass->keyOf(keywords) | pass->keyOf(object.material.keywords),
+                       variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         auto material = objectMaterial(what, object.material, shader->properties(),
                                        shader->dynamicKeywords(), frame.storage,
@@ -216,7 +219,7 @@ Status DeferredRenderer::State::lightDraw(const scene::Scene& scene, size_t inde
                                                         ? screenShadows.mask(index)
                                                         : shadows.map(index);
     if (shadowMap) description.shadows = toVariantShadows(light.shadows);
-    auto variant = pass->lookup(description, variants::SelectionPolicy::Closest);
+    auto variant = variantFor(*pass, description, variants::SelectionPolicy::Closest);
     if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
     pack::PackRenderState state = resolveRenderState(pass->renderState(), *frame.lightMaterial);
     const LightVolume volume = chooseLightVolume(light, scene.camera, matrices);
@@ -286,7 +289,7 @@ Status DeferredRenderer::State::decodePhase(const std::optional<reader::ShaderVi
     if (!pass)
         return makeError(ErrorCode::NotFound,
                          "deferred light shader \"" + std::string(shader->name()) + "\" has no pass 1");
-    auto variant = pass->lookup(std::vector<std::string>{}, variants::SelectionPolicy::Closest);
+    auto variant = variantFor(*pass, variants::VariantKey{}, variants::SelectionPolicy::Closest);
     if (!variant) return makeError(variant.error().code, "LDR decode: " + variant.error().detail);
     pack::PackRenderState state = resolveRenderState(pass->renderState(), *frame.lightMaterial);
     // The decoded alpha is −log2(1) = 0 (the light buffer's alpha stays 1): keep the clear alpha.
@@ -401,5 +404,11 @@ Result<RenderedFrame> DeferredRenderer::render(const scene::Scene& scene) {
 }
 
 void DeferredRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }
+
+void DeferredRenderer::useVariantRequests(reader::VariantRequests* requests,
+                                          variants::SelectionPolicy missPolicy) {
+    mState->variantRequests = requests;
+    mState->missPolicy = missPolicy;
+}
 
 }  // namespace varc::render

@@ -137,9 +137,10 @@ Status ForwardRenderer::State::addObjectDraws(const scene::Scene& scene, size_t 
                              what + ": the shader has no " + lightMode + " pass");
         const size_t lightIndex = light ? static_cast<size_t>(light - scene.lights.data()) : 0;
         const std::optional<TextureBinding> shadowMap = shadowTexture(light, lightIndex);
-        auto variant = pass->lookup(
-            forwardLight(scene, object, light, assignment, shadowMap.has_value()),
-                                    variants::SelectionPolicy::Closest);
+        // The light's keywords and the material's (shader_feature variants, e.g. _DETAIL).
+        auto variant =
+            variantFor(*pass, forwardLight(scene, object, light, assignment, shadowMap.has_value()),
+                       variants::SelectionPolicy::Closest, pass->keyOf(object.material.keywords));
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         auto draw = objectDraw({what,
                                 pack,
@@ -216,5 +217,11 @@ Result<RenderedFrame> ForwardRenderer::render(const scene::Scene& scene) {
 }
 
 void ForwardRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }
+
+void ForwardRenderer::useVariantRequests(reader::VariantRequests* requests,
+                                         variants::SelectionPolicy missPolicy) {
+    mState->variantRequests = requests;
+    mState->missPolicy = missPolicy;
+}
 
 }  // namespace varc::render

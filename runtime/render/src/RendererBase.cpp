@@ -55,6 +55,22 @@ Status RendererBase::init(vulkan::VulkanContext& vulkan,
     return Ok{};
 }
 
+Result<reader::VariantView> RendererBase::variantFor(const reader::PassView& pass,
+                                                     const variants::VariantKey& key,
+                                                     variants::SelectionPolicy policy) const {
+    if (policy == variants::SelectionPolicy::Closest) policy = missPolicy;
+    if (variantRequests) return variantRequests->resolve(pass, key, policy);
+    return pass.lookup(key, policy);
+}
+
+Result<reader::VariantView> RendererBase::variantFor(
+    const reader::PassView& pass, const variants::LightDescription& light,
+    variants::SelectionPolicy policy, const variants::VariantKey& materialKey) const {
+    if (policy == variants::SelectionPolicy::Closest) policy = missPolicy;
+    if (variantRequests) return variantRequests->resolve(pass, light, policy, materialKey);
+    return pass.lookup(light, policy, materialKey);
+}
+
 std::optional<reader::ShaderView> RendererBase::findShader(const std::string& name,
                                                            const reader::Pack** owner) const {
     for (const reader::Pack* pack : packs) {

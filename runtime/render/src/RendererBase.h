@@ -18,6 +18,7 @@
 #include "varc/reader/Pack.h"
 #include "varc/reader/PassView.h"
 #include "varc/reader/ShaderView.h"
+#include "varc/reader/VariantRequests.h"
 #include "varc/reader/VariantView.h"
 #include "varc/render/BuiltinTextures.h"
 #include "varc/render/DrawResources.h"
@@ -73,9 +74,22 @@ struct RendererBase {
     std::optional<DrawResources> resources;
     std::map<scene::MeshKind, GpuMesh> meshes;
     VkPipelineCache pipelineCache = VK_NULL_HANDLE;  // optional, see usePipelineCache()
+    reader::VariantRequests* variantRequests = nullptr;  // optional, see useVariantRequests()
+    variants::SelectionPolicy missPolicy = variants::SelectionPolicy::Closest;
 
     // Creates the textures, draw resources and built-in meshes.
     Status init(vulkan::VulkanContext& context, std::vector<const reader::Pack*> packs);
+
+    // The variant of |pass| for |key| (or |light| with |materialKey|) under |policy|, through
+    // variantRequests when the renderer has them (Renderer::useVariantRequests); Closest means
+    // missPolicy. The one way draws choose variants, so every request is recorded.
+    Result<reader::VariantView> variantFor(const reader::PassView& pass,
+                                           const variants::VariantKey& key,
+                                           variants::SelectionPolicy policy) const;
+    Result<reader::VariantView> variantFor(const reader::PassView& pass,
+                                           const variants::LightDescription& light,
+                                           variants::SelectionPolicy policy,
+                                           const variants::VariantKey& materialKey = {}) const;
 
     // The shader called |name| in the first pack that has it (|owner| set to that pack).
     std::optional<reader::ShaderView> findShader(const std::string& name,

@@ -45,4 +45,11 @@ void SceneRenderer::usePipelineCache(VkPipelineCache cache) {
     mDeferred.usePipelineCache(cache);
 }
 
+void SceneRenderer::useVariantRequests(reader::VariantRequests* requests,
+                                       variants::SelectionPolicy missPolicy) {
+    mForward.useVariantRequests(requests, missPolicy);
+    mSinglePass.useVariantRequests(requests, missPolicy);
+    mDeferred.useVariantRequests(requests, missPolicy);
+}
+
 }  // namespace varc::render

@@ -161,8 +161,9 @@ Status ScreenShadowMasks::render(RendererBase& renderer, const scene::Scene& sce
                                VK_IMAGE_LAYOUT_DEPTH_STENCIL_READ_ONLY_OPTIMAL};
     for (size_t light : lights) {
         const scene::Light& l = scene.lights[light];
-        auto variant = pass->lookup(collectorKeywords(l, shadows.directional(light)),
-                                    variants::SelectionPolicy::Exact);
+        auto variant = renderer.variantFor(
+            *pass, pass->keyOf(collectorKeywords(l, shadows.directional(light))),
+            variants::SelectionPolicy::Exact);
         if (!variant) return variant.error();
         const vulkan::RenderTarget& mask = mMasks.at(light);
         auto pipeline =

@@ -141,7 +141,8 @@ Status appendCasterDraws(RendererBase& renderer, const scene::Scene& scene,
         // _ALPHATEST_ON).
         std::vector<std::string> keywords = object.material.keywords;
         keywords.push_back(keyword);
-        auto variant = pass->lookup(keywords, variants::SelectionPolicy::Closest);
+        auto variant =
+            renderer.variantFor(*pass, pass->keyOf(keywords), variants::SelectionPolicy::Closest);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         auto material =
             renderer.objectMaterial(what, object.material, shader->properties(),

@@ -213,7 +213,8 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene,
         const bool instanced = group.objects.size() > 1;
         std::vector<std::string> keywords;
         if (instanced) keywords.push_back(variants::kInstancingKeyword);
-        auto variant = group.pass->lookup(keywords, variants::SelectionPolicy::Exact);
+        auto variant = s.variantFor(*group.pass, group.pass->keyOf(keywords),
+                                    variants::SelectionPolicy::Exact);
         if (!variant) return makeError(variant.error().code, what + ": " + variant.error().detail);
         auto material = s.objectMaterial(what, first.material, group.propertyDefaults,
                                          group.dynamicKeywords, storage);
@@ -246,5 +247,11 @@ Result<RenderedFrame> SinglePassRenderer::render(const scene::Scene& scene) {
 }
 
 void SinglePassRenderer::usePipelineCache(VkPipelineCache cache) { mState->pipelineCache = cache; }
+
+void SinglePassRenderer::useVariantRequests(reader::VariantRequests* requests,
+                                            variants::SelectionPolicy missPolicy) {
+    mState->variantRequests = requests;
+    mState->missPolicy = missPolicy;
+}
 
 }  // namespace varc::render

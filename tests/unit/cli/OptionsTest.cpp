@@ -409,6 +409,22 @@ TEST_F(OptionsTest, RenderOptions) {
     EXPECT_EQ(options.referencePath, "r.png");
     EXPECT_EQ(options.diffPath, "d.png");
     expectUsageError({"render", "a.svpack", "-o", "out.png"}, "--scene is required");
+    EXPECT_EQ(options.variantPolicy, variants::SelectionPolicy::Closest);
+    EXPECT_EQ(options.usageLogPath, "");
+}
+
+TEST_F(OptionsTest, RenderVariantPolicyAndUsageLog) {
+    RenderOptions options =
+        parseAs<RenderOptions>({"render", "a.svpack", "--scene", "s.json", "-o", "out.png",
+                                "--variant-policy", "strict", "--usage-log", "usage.jsonl"});
+    EXPECT_EQ(options.variantPolicy, variants::SelectionPolicy::Strict);
+    EXPECT_EQ(options.usageLogPath, "usage.jsonl");
+    options = parseAs<RenderOptions>(
+        {"render", "a.svpack", "--scene", "s.json", "-o", "o.png", "--variant-policy", "closest"});
+    EXPECT_EQ(options.variantPolicy, variants::SelectionPolicy::Closest);
+    expectUsageError(
+        {"render", "a.svpack", "--scene", "s.json", "-o", "o.png", "--variant-policy", "first"},
+        "--variant-policy");
 }
 
 TEST_F(OptionsTest, ValidateDefaultsAndFlags) {

@@ -151,13 +151,18 @@ struct RenderSessionOptions {
     std::string pipelineCachePath;
 };
 
-// `varc render PACK... --scene S.json -o OUT.png [--reference R.png] [--diff D.png]`
+// `varc render PACK... --scene S.json -o OUT.png [--reference R.png] [--diff D.png]
+// [--variant-policy closest|strict] [--usage-log FILE]`
 struct RenderOptions {
     RenderSessionOptions session;
     std::string scenePath;
     std::string outputPath;
     std::string referencePath;  // "" = none
     std::string diffPath;       // "" = none
+    // What a draw whose material and lights ask for a variant the pack lacks gets: Closest
+    // (Unity's default; a warning once per request) or Strict (an error, exit 1).
+    variants::SelectionPolicy variantPolicy = variants::SelectionPolicy::Closest;
+    std::string usageLogPath;  // "" = none; docs/USAGE_LOG.md
 };
 
 // `varc validate --pack PACK... [--scenes DIR | --properties] [--out DIR] [--report PAGE]`

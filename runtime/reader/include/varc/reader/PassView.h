@@ -32,6 +32,7 @@ public:
         : mImage(image), mShader(shader), mRecord(record) {}
 
     uint32_t shaderIndex() const { return mShader; }
+    std::string_view shaderName() const;  // the name of the shader this pass belongs to
     uint32_t index() const;  // the pass's position in its source shader
     std::string_view name() const;
     std::string_view lightMode() const;

@@ -36,6 +36,8 @@ public:
     Result<RenderedFrame> render(const scene::Scene& scene) override;
 
     void usePipelineCache(VkPipelineCache cache) override;
+    void useVariantRequests(reader::VariantRequests* requests,
+                            variants::SelectionPolicy missPolicy) override;
 
     DeferredRenderer(DeferredRenderer&&) noexcept;
     DeferredRenderer& operator=(DeferredRenderer&&) noexcept;

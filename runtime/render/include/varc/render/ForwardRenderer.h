@@ -33,6 +33,8 @@ public:
     Result<RenderedFrame> render(const scene::Scene& scene) override;
 
     void usePipelineCache(VkPipelineCache cache) override;
+    void useVariantRequests(reader::VariantRequests* requests,
+                            variants::SelectionPolicy missPolicy) override;
 
     ForwardRenderer(ForwardRenderer&&) noexcept;
     ForwardRenderer& operator=(ForwardRenderer&&) noexcept;

@@ -12,7 +12,9 @@
 
 #include "varc/core/Result.h"
 #include "varc/image/Image.h"
+#include "varc/reader/VariantRequests.h"
 #include "varc/scene/Scene.h"
+#include "varc/variants/VariantSelector.h"
 
 namespace varc::render {
 
@@ -34,6 +36,14 @@ public:
     // Creates every later pipeline through |cache| (e.g. PipelineCacheFile::handle()), which must
     // outlive the renderer; VK_NULL_HANDLE (the default) uses none.
     virtual void usePipelineCache(VkPipelineCache cache) = 0;
+
+    // Resolves every later draw's variant through |requests| (which must outlive the renderer;
+    // nullptr, the default, looks variants up directly), so misses are reported once and the
+    // requests can be written as a usage log. |missPolicy| replaces Closest (the default) for
+    // the variants materials and lights choose: Strict makes any miss a render error naming the
+    // variant. Draws of varc's own shaders that need one exact variant stay Exact.
+    virtual void useVariantRequests(reader::VariantRequests* requests,
+                                    variants::SelectionPolicy missPolicy) = 0;
 };
 
 }  // namespace varc::render

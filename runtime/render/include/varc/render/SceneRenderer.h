@@ -26,6 +26,8 @@ public:
     Result<RenderedFrame> render(const scene::Scene& scene) override;
 
     void usePipelineCache(VkPipelineCache cache) override;
+    void useVariantRequests(reader::VariantRequests* requests,
+                            variants::SelectionPolicy missPolicy) override;
 
 private:
     SceneRenderer(ForwardRenderer forward, SinglePassRenderer singlePass,

@@ -37,6 +37,8 @@ public:
     Result<RenderedFrame> render(const scene::Scene& scene) override;
 
     void usePipelineCache(VkPipelineCache cache) override;
+    void useVariantRequests(reader::VariantRequests* requests,
+                            variants::SelectionPolicy missPolicy) override;
 
     SinglePassRenderer(SinglePassRenderer&&) noexcept;
     SinglePassRenderer& operator=(SinglePassRenderer&&) noexcept;
