@@ -20,6 +20,7 @@ std::string rewriteHlslForGlslang(std::string_view text,
     for (const std::string& function : unmatchedCalls) hlsl::castCallArguments(state, function);
     hlsl::castSwitchConditions(state);
     hlsl::copyWrittenUniforms(state);
+    hlsl::copyWrittenUniformParameters(state);
     if (scalarAnyAll) hlsl::declareScalarAnyAll(state);
     hlsl::spellOutMatrixSwizzles(state);
     hlsl::truncateWideHexTokens(state);

@@ -172,6 +172,25 @@ TEST(HlslRewrites, FaceParametersBecomeASignFromTheFrontFaceBuiltIn) {
               "float4 g(bool t_varcFrontFace : SV_IsFrontFace);");
 }
 
+TEST(HlslRewrites, AWrittenUniformParameterGetsALocalCopy) {
+    std::string text =
+        "float4 f(V i, uniform float4 _Tint : COLOR, uniform float _K) : SV_Target\n{\n"
+        "    _Tint.a *= _K; i._Tint = 1;\n    return _Tint;\n}\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "float4 f(V i, uniform float4 _Tint : COLOR, uniform float _K) : SV_Target\n{ "
+              "float4 _Tint_varcCopy = _Tint;\n"
+              "    _Tint_varcCopy.a *= _K; i._Tint = 1;\n    return _Tint_varcCopy;\n}\n");
+}
+
+TEST(HlslRewrites, ReadUniformParametersPlainParametersAndPrototypesAreLeftAlone) {
+    for (std::string kept :
+         {"float f(uniform float a) { return a * 2; }\n", "float f(float a) { a = 2; return a; }\n",
+          "float f(uniform float a[2]) { a[0] = 1; return a[0]; }\n",
+          "float f(uniform float a);\nfloat g(float a) { a = 1; return a; }\n"}) {
+        EXPECT_EQ(rewriteHlslForGlslang(kept), kept) << kept;
+    }
+}
+
 TEST(HlslRewrites, ScalarAnyAndAllOverloadsAreDeclaredOnlyWhenAsked) {
     std::string text =
         "#line 1 0\nfloat4 f(float x : X) : SV_Target { return any(x) && all(x); }\n";

@@ -22,6 +22,9 @@ void castSwitchConditions(RewriteState& state);
 // Declares a `<name>_varcCopy` of each uniform the code writes and renames its uses.
 void copyWrittenUniforms(RewriteState& state);
 
+// Declares a `<name>_varcCopy` local of each `uniform` parameter the body writes.
+void copyWrittenUniformParameters(RewriteState& state);
+
 // Declares `bool any(float v) { return v != 0; }` and the other scalar overloads first.
 void declareScalarAnyAll(RewriteState& state);
 

@@ -23,6 +23,10 @@ namespace varc::frontend {
 //    (outside struct and cbuffer bodies, not after a `.`) is renamed to the copy. The uniform
 //    keeps its name, so reflection and binding by name are unchanged. Arrays and declarations
 //    with initialisers are left alone.
+//  * A `uniform` function parameter written by the body (`float4 frag(v2f i, uniform float4
+//    _Tint) { _Tint.a = 1; ... }`), which DirectX treats as a global and so as a per-invocation
+//    copy: the body starts, on the line of its `{`, with ` float4 _Tint_varcCopy = _Tint;` and
+//    its uses of the name are renamed to the copy. Other parameters are copies in glslang too.
 //  * With |scalarAnyAll|: `any(x)` and `all(x)` of a scalar, which DirectX reads as `x != 0` and
 //    glslang compiles to OpAny/OpAll on a scalar (invalid SPIR-V). Scalar overloads
 //    `bool any(float v) { return v != 0; } ...` (bool, int, uint, float; any and all) are declared
