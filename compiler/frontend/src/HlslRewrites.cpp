@@ -11,7 +11,8 @@
 namespace varc::frontend {
 
 std::string rewriteHlslForGlslang(std::string_view text,
-                                  const std::vector<std::string>& unmatchedCalls) {
+                                  const std::vector<std::string>& unmatchedCalls,
+                                  bool scalarAnyAll) {
     pruner::ShaderTokenizer tokenizer;
     if (!tokenizer.tokenize(text)) return std::string(text);
     hlsl::RewriteState state(tokenizer);
@@ -19,6 +20,8 @@ std::string rewriteHlslForGlslang(std::string_view text,
     for (const std::string& function : unmatchedCalls) hlsl::castCallArguments(state, function);
     hlsl::castSwitchConditions(state);
     hlsl::copyWrittenUniforms(state);
+    hlsl::copyWrittenUniformParameters(state);
+    if (scalarAnyAll) hlsl::declareScalarAnyAll(state);
     hlsl::spellOutMatrixSwizzles(state);
     hlsl::truncateWideHexTokens(state);
     hlsl::dropEmptyMemberDeclarations(state);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// rewriteHlslForGlslang: switch conditions cast to int, written loose uniforms given a copy.
+// rewriteHlslForGlslang and the front-face rewrites: what each rewrites, and what it leaves alone.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -170,6 +170,42 @@ TEST(HlslRewrites, FaceParametersBecomeASignFromTheFrontFaceBuiltIn) {
               "float4 f(V i, bool s_varcFrontFace : SV_IsFrontFace) : SV_Target\n{ half s = "
               "s_varcFrontFace ? 1 : -1;\n    return s * i.c;\n}\n"
               "float4 g(bool t_varcFrontFace : SV_IsFrontFace);");
+}
+
+TEST(HlslRewrites, AWrittenUniformParameterGetsALocalCopy) {
+    std::string text =
+        "float4 f(V i, uniform float4 _Tint : COLOR, uniform float _K) : SV_Target\n{\n"
+        "    _Tint.a *= _K; i._Tint = 1;\n    return _Tint;\n}\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "float4 f(V i, uniform float4 _Tint : COLOR, uniform float _K) : SV_Target\n{ "
+              "float4 _Tint_varcCopy = _Tint;\n"
+              "    _Tint_varcCopy.a *= _K; i._Tint = 1;\n    return _Tint_varcCopy;\n}\n");
+}
+
+TEST(HlslRewrites, ReadUniformParametersPlainParametersAndPrototypesAreLeftAlone) {
+    for (std::string kept :
+         {"float f(uniform float a) { return a * 2; }\n", "float f(float a) { a = 2; return a; }\n",
+          "float f(uniform float a[2]) { a[0] = 1; return a[0]; }\n",
+          "float f(uniform float a);\nfloat g(float a) { a = 1; return a; }\n"}) {
+        EXPECT_EQ(rewriteHlslForGlslang(kept), kept) << kept;
+    }
+}
+
+TEST(HlslRewrites, ScalarAnyAndAllOverloadsAreDeclaredOnlyWhenAsked) {
+    std::string text =
+        "#line 1 0\nfloat4 f(float x : X) : SV_Target { return any(x) && all(x); }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text), text);
+    std::string rewritten = rewriteHlslForGlslang(text, {}, true);
+    EXPECT_EQ(lineCount(rewritten), lineCount(text));
+    EXPECT_EQ(rewritten.rfind("#line 1 0\nbool any(bool v) { return v; } ", 0), 0u) << rewritten;
+    for (std::string overload :
+         {"bool any(float v) { return v != 0; }", "bool any(int v) { return v != 0; }",
+          "bool any(uint v) { return v != 0; }", "bool all(bool v) { return v; }",
+          "bool all(float v) { return v != 0; }"}) {
+        EXPECT_NE(rewritten.find(overload), std::string::npos) << overload;
+    }
+    EXPECT_NE(rewritten.find("} float4 f(float x : X) : SV_Target { return any(x) && all(x); }\n"),
+              std::string::npos);
 }
 
 TEST(HlslRewrites, NoLineIsAddedOrRemoved) {

@@ -63,6 +63,15 @@ Attempt compileAndValidate(const StageProgram& program, const std::string& text,
     return attempt;
 }
 
+// Whether the validator refused OpAny or OpAll on a scalar: glslang's `any(x)` / `all(x)` of a
+// scalar, which the DirectX compilers read as `x != 0`.
+bool refusedScalarAnyAll(const Attempt& attempt) {
+    if (!attempt.invalid) return false;
+    const std::string& message = *attempt.invalid;
+    return message.find("Expected operand to be vector bool: Any") != std::string::npos ||
+           message.find("Expected operand to be vector bool: All") != std::string::npos;
+}
+
 // Whether glslang refused |program|, or made invalid SPIR-V of it, for a construct Unity's HLSL
 // compilers accept and rewriteHlslForGlslang makes explicit. Only such programs are rewritten,
 // so every program glslang compiles as written compiles exactly as before.
@@ -70,7 +79,8 @@ bool needsHlslRewrite(const StageProgram& program, const Attempt& attempt) {
     if (program.language == shaderlab::ProgramLanguage::Glsl) return false;
     if (attempt.invalid) {
         return attempt.invalid->find("OpTypeStruct must not contain an opaque type") !=
-               std::string::npos;
+                   std::string::npos ||
+               refusedScalarAnyAll(attempt);
     }
     const std::string& log = attempt.compiled.log;
     return !attempt.compiled.ok &&
@@ -125,12 +135,14 @@ Attempt compileWithRewrites(const StageProgram& program, const std::string& text
                             const BuildOptions& options) {
     Attempt attempt = compileAndValidate(program, text, options.optimization);
     std::vector<std::string> calls, unknownNames;
+    bool scalarAnyAll = false;
     std::string previous = text;
     for (int round = 0; round < kMaxRewriteRounds && needsHlslRewrite(program, attempt); ++round) {
         appendNew(calls, unmatchedCalls(attempt.compiled.log));
         appendNew(unknownNames, unknownVariables(attempt.compiled.log));
+        scalarAnyAll = scalarAnyAll || refusedScalarAnyAll(attempt);
         std::string rewritten = frontend::hoistLoopVariables(
-            frontend::rewriteHlslForGlslang(text, calls), unknownNames);
+            frontend::rewriteHlslForGlslang(text, calls, scalarAnyAll), unknownNames);
         if (rewritten == previous) break;
         attempt = compileAndValidate(program, rewritten, options.optimization);
         previous = std::move(rewritten);

@@ -41,24 +41,6 @@ public:
                                                     bound + " ? 1 : -1;"});
         }
     }
-
-private:
-    // The '{' opening the body of the function whose parameter list holds token |i|, or npos
-    // (a prototype, or not a parameter at all).
-    size_t functionBodyAfterParameter(size_t i) const {
-        int depth = 0;
-        size_t j = i;
-        for (; j < mTokens.size(); ++j) {
-            if (is(j, '(')) ++depth;
-            if (is(j, ')') && --depth < 0) break;
-            if (depth == 0 && (is(j, ';') || is(j, '{'))) return std::string::npos;
-        }
-        for (++j; j < mTokens.size(); ++j) {
-            if (is(j, '{')) return j;
-            if (is(j, ';') || is(j, '(') || is(j, '}')) return std::string::npos;
-        }
-        return std::string::npos;
-    }
 };
 
 }  // namespace

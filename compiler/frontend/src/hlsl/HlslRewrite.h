@@ -55,6 +55,12 @@ protected:
     bool isWord(size_t i, std::string_view word) const;
     // The index of the token closing the bracket opened at |open|, or npos.
     size_t matching(size_t open) const;
+    // Whether the name at |i| is written there: `x = `, `x op= `, `x.yz = `, `x[i] = `, `x++`,
+    // `++x` (not `x == `, `x <= `, `x << 1`).
+    bool isWrite(size_t i) const;
+    // The '{' opening the body of the function whose parameter list holds token |i|, or npos
+    // (a prototype, or not a parameter at all).
+    size_t functionBodyAfterParameter(size_t i) const;
 
     const pruner::ShaderTokenizer& mTokenizer;
     const std::vector<pruner::Token>& mTokens;

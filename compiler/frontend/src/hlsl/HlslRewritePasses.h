@@ -22,6 +22,12 @@ void castSwitchConditions(RewriteState& state);
 // Declares a `<name>_varcCopy` of each uniform the code writes and renames its uses.
 void copyWrittenUniforms(RewriteState& state);
 
+// Declares a `<name>_varcCopy` local of each `uniform` parameter the body writes.
+void copyWrittenUniformParameters(RewriteState& state);
+
+// Declares `bool any(float v) { return v != 0; }` and the other scalar overloads first.
+void declareScalarAnyAll(RewriteState& state);
+
 // `M._m20_m21` -> `float2(M[2][0], M[2][1])` for a matrix named by one identifier.
 void spellOutMatrixSwizzles(RewriteState& state);
 

@@ -113,40 +113,6 @@ private:
         }
     }
 
-    // Whether the use of a name at |i| writes it: `x = `, `x op= `, `x.yz = `, `x[i] = `,
-    // `x++`, `++x`.
-    bool isWrite(size_t i) const {
-        if (i >= 2 && (is(i - 1, '+') || is(i - 1, '-')) && is(i - 2, mTokens[i - 1].text[0]) &&
-            adjacent(i - 2, i - 1)) {
-            return true;
-        }
-        size_t j = i + 1;
-        while (j < mTokens.size()) {
-            if (is(j, '.') && j + 1 < mTokens.size() &&
-                mTokens[j + 1].kind == TokenKind::Identifier) {
-                j += 2;
-            } else if (is(j, '[')) {
-                size_t close = matching(j);
-                if (close == std::string::npos) return false;
-                j = close + 1;
-            } else {
-                break;
-            }
-        }
-        if (j >= mTokens.size() || mTokens[j].kind != TokenKind::Punct) return false;
-        char c = mTokens[j].text[0];
-        bool next = j + 1 < mTokens.size() && adjacent(j, j + 1);
-        if (c == '=') return !(next && is(j + 1, '='));
-        if ((c == '+' || c == '-') && next && is(j + 1, c)) return true;
-        if (std::string_view("+-*/%&|^").find(c) != std::string_view::npos) {
-            return next && is(j + 1, '=');
-        }
-        if ((c == '<' || c == '>') && next && is(j + 1, c)) {
-            return j + 2 < mTokens.size() && adjacent(j + 1, j + 2) && is(j + 2, '=');
-        }
-        return false;
-    }
-
     bool isUse(size_t i, std::string_view name) const {
         return mTokens[i].kind == TokenKind::Identifier && mTokens[i].text == name &&
                !mInDeclarationBody[i] && !(i > 0 && is(i - 1, '.'));

@@ -23,6 +23,15 @@ namespace varc::frontend {
 //    (outside struct and cbuffer bodies, not after a `.`) is renamed to the copy. The uniform
 //    keeps its name, so reflection and binding by name are unchanged. Arrays and declarations
 //    with initialisers are left alone.
+//  * A `uniform` function parameter written by the body (`float4 frag(v2f i, uniform float4
+//    _Tint) { _Tint.a = 1; ... }`), which DirectX treats as a global and so as a per-invocation
+//    copy: the body starts, on the line of its `{`, with ` float4 _Tint_varcCopy = _Tint;` and
+//    its uses of the name are renamed to the copy. Other parameters are copies in glslang too.
+//  * With |scalarAnyAll|: `any(x)` and `all(x)` of a scalar, which DirectX reads as `x != 0` and
+//    glslang compiles to OpAny/OpAll on a scalar (invalid SPIR-V). Scalar overloads
+//    `bool any(float v) { return v != 0; } ...` (bool, int, uint, float; any and all) are declared
+//    before the first token, on its line; glslang picks them for scalars only. The caller asks
+//    for them when the validator refused OpAny/OpAll on a scalar.
 //
 //  * Matrix swizzles of several elements, which glslang does not implement:
 //    `M._m20_m21_m22` -> `float3(M[2][0], M[2][1], M[2][2])` (also the one-based `M._11_22`),
@@ -48,7 +57,8 @@ namespace varc::frontend {
 // return _T; }" -> "float _T; static float _T_varcCopy = _T;\nfloat4 f() : SV_Target {
 // _T_varcCopy *= 2; switch ((int)(_T_varcCopy)) { default: break; } return _T_varcCopy; }".
 std::string rewriteHlslForGlslang(std::string_view text,
-                                  const std::vector<std::string>& unmatchedCalls = {});
+                                  const std::vector<std::string>& unmatchedCalls = {},
+                                  bool scalarAnyAll = false);
 
 // |text| with each hexadecimal literal wider than 32 bits cut to its low 32 bits, anywhere
 // (directives and comments included): for text before preprocessing, where glslang's
