@@ -110,10 +110,11 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
         {"varc-mutants/WorldXLight", {"rotation", "mirror", "light_axis"}},
         {"varc-mutants/PointCookieNoFalloff", {"white_cookie"}},
         {"varc-mutants/LambertForward", {"forward_deferred"}},
+        {"varc-mutants/LightTimesZero", {"lit"}},
     };
-    ASSERT_EQ(reports.size(), expected.size() + 4)
-        << "the mutants, the control, the two classification fixtures and the shader with both "
-           "paths";
+    ASSERT_EQ(reports.size(), expected.size() + 5)
+        << "the mutants, the control, the two classification fixtures, the unlit shader with a "
+           "ForwardAdd pass and the shader with both paths";
     const properties::ShaderReport& control = reports.at("varc-mutants/Control");
     EXPECT_TRUE(control.passed()) << "the unmodified copy must hold every relation";
     for (const properties::RelationOutcome& outcome : control.relations) {
@@ -144,6 +145,16 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
         EXPECT_EQ(report.model, properties::LightingModel::Lit) << name << ": "
                                                                << report.modelReason;
     }
+    // A shader that reads the light and draws black is lit by its reflection: it FAILs `lit`
+    // (each key light, and why that is not excused), not n/a; nothing else fails.
+    const properties::ShaderReport& black = reports.at("varc-mutants/LightTimesZero");
+    EXPECT_EQ(failing(black), (std::set<std::string>{"lit"}));
+    const std::string blackLit = detailOf(black, "lit");
+    for (const char* label : {"directional:", "point:", "spot:", "_LightColor0",
+                              "yet no key light changes the image (directional 0, point 0, "
+                              "spot 0 of 4096)"})
+        EXPECT_NE(blackLit.find(label), std::string::npos) << blackLit;
+    EXPECT_FALSE(black.passed());
     // A light whose intensity is ignored does not brighten when doubled: a bug, not a model.
     EXPECT_EQ(failing(reports.at("varc-mutants/IntensityIgnored")),
               (std::set<std::string>{"intensity"}));
@@ -201,15 +212,20 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
     EXPECT_TRUE(sqrtIntensity->cases.empty());
 }
 
-// Relations that do not apply are n/a with the reason, never failures: a shader drawn the same
-// whatever its lights is not lit; one whose light colour goes through sqrt is a non-linear model.
+// Relations that do not apply are n/a with the reason, never failures: a shader whose programs
+// read no light input and that draws the same whatever its lights is not lit; one whose light
+// colour goes through sqrt is a non-linear model. A ForwardAdd pass that reads no light input
+// fails `lit` even in a shader that is not lit.
 TEST_F(PropertyRelationsTest, ModelsThatTheRelationsDoNotDescribeAreNotApplicable) {
     auto reports = check("mutants.svpack");
-    ASSERT_TRUE(reports.count("varc-mutants/Unlit") && reports.count("varc-mutants/SqrtColour"));
+    ASSERT_TRUE(reports.count("varc-mutants/Unlit") && reports.count("varc-mutants/SqrtColour") &&
+                reports.count("varc-mutants/UnlitAddPass"));
     const properties::ShaderReport& unlit = reports.at("varc-mutants/Unlit");
     EXPECT_EQ(unlit.model, properties::LightingModel::NotLit);
     EXPECT_TRUE(unlit.passed()) << unlit.modelReason;
-    EXPECT_NE(unlit.modelReason.find("directional 0, point 0, spot 0 of 4096"), std::string::npos)
+    EXPECT_NE(unlit.modelReason.find("read no light input"), std::string::npos)
+        << unlit.modelReason;
+    EXPECT_NE(unlit.modelReason.find("(directional 0 of 4096)"), std::string::npos)
         << unlit.modelReason;
     for (const std::string& relation : properties::notLitRelations()) {
         EXPECT_EQ(verdictOf(unlit, relation), Verdict::NotApplicable) << relation;
@@ -217,6 +233,21 @@ TEST_F(PropertyRelationsTest, ModelsThatTheRelationsDoNotDescribeAreNotApplicabl
     }
     for (const char* relation : {"finite", "translation", "rotation", "scale"})
         EXPECT_EQ(verdictOf(unlit, relation), Verdict::Pass) << relation;
+
+    const properties::ShaderReport& addPass = reports.at("varc-mutants/UnlitAddPass");
+    EXPECT_EQ(addPass.model, properties::LightingModel::NotLit) << addPass.modelReason;
+    EXPECT_FALSE(addPass.passed());
+    EXPECT_EQ(failing(addPass), (std::set<std::string>{"lit"}));
+    const properties::RelationOutcome* addLit = outcomeOf(addPass, "lit");
+    ASSERT_NE(addLit, nullptr);
+    ASSERT_EQ(addLit->cases.size(), 1u) << addLit->detail;
+    EXPECT_EQ(addLit->cases[0].label, "reflection");
+    EXPECT_NE(addLit->cases[0].finding.find("ForwardAdd variant"), std::string::npos)
+        << addLit->cases[0].finding;
+    EXPECT_NE(addLit->cases[0].finding.find("reads no light input, yet Unity draws it once per "
+                                            "light"),
+              std::string::npos)
+        << addLit->cases[0].finding;
 
     const properties::ShaderReport& sqrtColour = reports.at("varc-mutants/SqrtColour");
     EXPECT_EQ(sqrtColour.model, properties::LightingModel::NonLinear) << sqrtColour.modelReason;

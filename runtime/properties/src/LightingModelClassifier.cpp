@@ -6,6 +6,7 @@
 #include "PropertySteps.h"
 #include "PropertyTolerances.h"
 #include "varc/properties/ImageRelations.h"
+#include "varc/properties/LightInputs.h"
 
 namespace varc::properties {
 
@@ -27,23 +28,38 @@ void markNotApplicable(ShaderCheck& c, const std::vector<std::string>& relations
     }
 }
 
-// "not-lit" when no key light the shader takes changes kSharePercent of the pixels by more than
-// kVisible against the unlit render; returns the counts ("directional 0, point 3 of 4096").
-bool notLit(const ShaderCheck& c, const LightSupport& support, std::string& counts) {
+// True when no key light the shader takes changes kSharePercent of the pixels by more than
+// kVisible against the unlit render; |counts| gets the counts ("directional 0, point 3 of 4096").
+// False, with |counts| empty, when a frame is missing.
+bool noKeyLightResponse(const ShaderCheck& c, const LightSupport& support, std::string& counts) {
     const render::RenderedFrame* none = c.frame("no lights");
     if (!none) return false;
     std::vector<std::string> keys{"directional"};
     if (support.point) keys.push_back("point");
     if (support.spot) keys.push_back("spot");
+    bool responds = false;
     for (const std::string& key : keys) {
         const render::RenderedFrame* lit = c.frame(key);
-        if (!lit) return false;
+        if (!lit) {
+            counts.clear();
+            return false;
+        }
         const size_t changed = pixelsChanged(lit->image, none->image, kVisible);
-        if (atLeastShare(changed, lit->image)) return false;
+        responds = responds || atLeastShare(changed, lit->image);
         counts += (counts.empty() ? "" : ", ") + key + " " + std::to_string(changed);
     }
     counts += " of " + std::to_string(size_t{none->image.width()} * none->image.height());
-    return true;
+    return !responds;
+}
+
+// The first 8 of |names| and how many more: "_LightColor0 ... unity_SHAr and 26 more".
+std::string joined(const std::vector<std::string>& names) {
+    constexpr size_t kShown = 8;
+    std::string text;
+    for (size_t i = 0; i < names.size() && i < kShown; ++i)
+        text += (text.empty() ? "" : " ") + names[i];
+    if (names.size() > kShown) text += " and " + std::to_string(names.size() - kShown) + " more";
+    return text;
 }
 
 // "non-linear" when `intensity` failed but every doubled light brightens (no pixel darker than
@@ -68,17 +84,35 @@ bool nonLinear(const ShaderCheck& c, const LightSupport& support, std::string& c
 
 }  // namespace
 
-// Decides the report's LightingModel from the renders and marks the relations that do not apply.
-void classify(ShaderCheck& c, const LightSupport& support, ShaderReport& report) {
+// Decides the report's LightingModel from the reflection and the renders and marks the relations
+// that do not apply; `lit` fails where the two disagree (decideLightModel()).
+void classify(ShaderCheck& c, const LightSupport& support, const LightInputReport& inputs,
+              ShaderReport& report) {
     if (!report.error.empty()) return;
     std::string counts;
-    if (notLit(c, support, counts)) {
+    const bool unresponsive = noKeyLightResponse(c, support, counts);
+    const bool measured = !counts.empty();
+    const LightModelDecision decision = decideLightModel(inputs, measured && !unresponsive);
+    if (decision.notLit && measured) {
         report.model = LightingModel::NotLit;
         report.modelReason =
-            "not a lit shader: no key light changes 2% of the pixels by > 1/64 (" + counts + ")";
+            "not a lit shader: its ForwardBase and ForwardAdd programs read no light input, and "
+            "no key light changes 2% of the pixels by > 1/64 (" +
+            counts + ")";
         markNotApplicable(c, notLitRelations(), report.modelReason);
-        return;
     }
+    if (inputs.lit() && unresponsive) {
+        // requireLight() has failed `lit` on the images; say why that is not excused.
+        const std::string why = "the programs read the light inputs " + joined(inputs.read) +
+                                ", yet no key light changes the image (" + counts + ")";
+        if (c.outcomeOf("lit").verdict == Verdict::Fail)
+            c.outcomeOf("lit").detail += why + "\n";
+        else
+            c.failWithoutRender("lit", "reflection", why);
+    }
+    for (const std::string& failure : decision.litFailures)
+        c.failWithoutRender("lit", "reflection", failure);
+    if (report.model == LightingModel::NotLit) return;
     counts.clear();
     if (c.outcomeOf("intensity").verdict == Verdict::Fail && nonLinear(c, support, counts)) {
         report.model = LightingModel::NonLinear;

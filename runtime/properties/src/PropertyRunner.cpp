@@ -108,7 +108,7 @@ ShaderReport PropertyRunner::check(const reader::ShaderView& shader) {
     const std::string noDirectionalShadows =
         checkRelations(check, report.shader, support, *cookies, mOptions.size);
     checkEveryVariant(check, shader, report, noDirectionalShadows);
-    classify(check, support, report);
+    classify(check, support, lightInputsOf(litPassReflections(shader)), report);
     return report;
 }
 

@@ -8,6 +8,7 @@
 
 #include "ShaderCheck.h"
 #include "varc/core/Result.h"
+#include "varc/properties/LightInputs.h"
 #include "varc/properties/PropertyRunner.h"
 #include "varc/properties/PropertyScenes.h"
 #include "varc/reader/ShaderView.h"
@@ -43,7 +44,10 @@ std::string drawCoverage(ShaderCheck& c, const LightSupport& support,
 void checkEveryVariant(ShaderCheck& c, const reader::ShaderView& shader, ShaderReport& report,
                        const std::string& why);
 
-// Decides the report's LightingModel from the renders and marks the relations that do not apply.
-void classify(ShaderCheck& c, const LightSupport& support, ShaderReport& report);
+// Decides the report's LightingModel from |inputs| (the light inputs the pack's reflection says
+// the lit passes read) and the renders, marks the relations that do not apply, and fails `lit`
+// for what the two disagree on (decideLightModel()).
+void classify(ShaderCheck& c, const LightSupport& support, const LightInputReport& inputs,
+              ShaderReport& report);
 
 }  // namespace varc::properties

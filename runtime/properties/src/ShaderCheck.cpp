@@ -89,6 +89,15 @@ void ShaderCheck::requireLight(const std::string& label, const render::RenderedF
                   *lit, nullptr);
 }
 
+void ShaderCheck::failWithoutRender(const std::string& relation, const std::string& label,
+                                    const std::string& finding) {
+    RelationOutcome& outcome = outcomeOf(relation);
+    if (outcome.verdict != Verdict::Fail) outcome.detail.clear();  // an n/a reason no longer holds
+    outcome.verdict = Verdict::Fail;
+    outcome.detail += label + ": " + finding + "\n";
+    outcome.cases.push_back(FailedCase{label, finding, {}, {}});
+}
+
 const render::RenderedFrame* ShaderCheck::tryRender(const std::string& label,
                                                     const scene::Scene& scene, std::string& why) {
     auto frame = mRenderer.render(scene);

@@ -34,6 +34,11 @@ public:
     void requireLight(const std::string& label, const render::RenderedFrame* lit,
                       const render::RenderedFrame* unlit);
 
+    // Fails |relation| on case |label| with |finding| and no render (a finding of the pack's
+    // reflection, not of an image): its detail line and a FailedCase without variants or images.
+    void failWithoutRender(const std::string& relation, const std::string& label,
+                           const std::string& finding);
+
     // Like render(), for a coverage render that may fail without failing the check (directional
     // shadows need Hidden/varc/ScreenSpaceShadows in a pack): the error goes to |why|.
     const render::RenderedFrame* tryRender(const std::string& label, const scene::Scene& scene,

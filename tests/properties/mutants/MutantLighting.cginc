@@ -2,7 +2,7 @@
 // A copy of shaders/forward/ForwardLighting.cginc for the property mutation tests (issue #16):
 // unchanged unless the including shader defines one MUTANT_* macro, each a deliberate bug that
 // docs/PROPERTIES.md says which relation must catch, or a model the classification must name
-// (MUTANT_SQRT_COLOUR, MUTANT_UNLIT). Keep it in step with the library copy.
+// (MUTANT_SQRT_COLOUR). Keep it in step with the library copy.
 #ifndef VARC_MUTANT_LIGHTING_INCLUDED
 #define VARC_MUTANT_LIGHTING_INCLUDED
 
@@ -82,6 +82,10 @@ UnityLight ForwardPixelLight(ForwardVaryings i, float3 normal) {
     // bug: the light's intensity is ignored (its colour scaled to a maximum of 1)
     light.color = _LightColor0.rgb /
                   max(1e-4, max(_LightColor0.r, max(_LightColor0.g, _LightColor0.b))) * attenuation;
+#elif defined(MUTANT_LIGHT_ZERO)
+    // bug: the light is read but scaled to nothing a half float can hold (1e-30, not 0, which
+    // the optimiser would fold away with the reads): every pass draws black
+    light.color = 1e-30 * _LightColor0.rgb * attenuation;
 #elif defined(MUTANT_SQRT_COLOUR)
     light.color = sqrt(_LightColor0.rgb) * attenuation;  // a non-linear model by design
 #elif defined(MUTANT_POINT_COOKIE_NO_FALLOFF) && defined(POINT_COOKIE)
@@ -130,16 +134,6 @@ float4 ForwardFragment(ForwardVaryings i) : SV_Target {
                                    normal, viewDir, ForwardPixelLight(i, normal),
                                    ForwardIndirectLight(i, normal));
     colour.a = 1;
-#if defined(MUTANT_UNLIT)
-    // Not lit by design: the base pass draws half the albedo, the add pass nothing. The lit
-    // colour, scaled to nothing a half float can hold, keeps every vertex output read (the
-    // validation layer reports outputs the fragment program drops).
-    #if defined(VARC_FORWARD_BASE)
-    colour.rgb = 0.5 * albedo + 1e-30 * colour.rgb;
-    #else
-    colour.rgb = 1e-30 * colour.rgb;
-    #endif
-#endif
     return colour;
 }
 

@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// Property classification fixture (issue #16): a copy of shaders/forward/Forward.shader whose
-// base pass draws half its albedo whatever the lights and whose add pass adds nothing: not lit.
+// Property classification fixture (issues #16, #29): a ForwardBase pass that draws half its
+// albedo and reads no light input, and no ForwardAdd pass: not lit, proven by the reflection.
 Shader "varc-mutants/Unlit" {
     Properties {
         _Color ("Albedo colour", Color) = (1, 1, 1, 1)
         _MainTex ("Albedo (RGB)", 2D) = "white" {}
-        _Metallic ("Metallic", Range(0, 1)) = 0
-        _Smoothness ("Smoothness", Range(0, 1)) = 0.5
     }
 
     SubShader {
@@ -16,30 +14,10 @@ Shader "varc-mutants/Unlit" {
             Tags { "LightMode" = "ForwardBase" }
 
             CGPROGRAM
-            #pragma target 3.0
-            #pragma multi_compile _ VERTEXLIGHT_ON
-            #pragma vertex ForwardVertex
-            #pragma fragment ForwardFragment
-            #define VARC_FORWARD_BASE 1
-            #define MUTANT_UNLIT 1
-            #include "MutantLighting.cginc"
-            ENDCG
-        }
-
-        Pass {
-            Tags { "LightMode" = "ForwardAdd" }
-            Blend One One
-            ZWrite Off
-
-            CGPROGRAM
-            #pragma target 3.0
-            #pragma multi_compile_fwdadd_fullshadows
-            #pragma vertex ForwardVertex
-            #pragma fragment ForwardFragment
-            #define MUTANT_UNLIT 1
-            #include "MutantLighting.cginc"
+            #pragma vertex UnlitVertex
+            #pragma fragment UnlitFragment
+            #include "UnlitProgram.cginc"
             ENDCG
         }
     }
-    Fallback "Legacy Shaders/VertexLit"
 }

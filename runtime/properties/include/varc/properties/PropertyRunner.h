@@ -47,8 +47,10 @@ struct RelationOutcome {
 // What the renders show about a shader's lighting (docs/PROPERTIES.md, "Classification").
 enum class LightingModel {
     Lit,        // the key lights change the image: every relation applies
-    NotLit,     // no key light changes 2% of the pixels: unlit, emissive, a debug view; the
-                // relations about lights (notLitRelations()) are n/a
+    NotLit,     // no program of the lit passes reads a light input (LightInputs.h) and no key
+                // light changes 2% of the pixels: unlit, emissive, a debug view; the relations
+                // about lights (notLitRelations()) are n/a. Reading a light input makes a
+                // shader Lit, and `lit` FAILs when it then does not respond.
     NonLinear,  // lit, but a doubled intensity brightens without doubling the light's
                 // contribution (toon ramps, clamped colours): `intensity` is n/a
 };
@@ -68,7 +70,10 @@ struct ShaderReport {
     std::set<std::string> variants;  // every variant drawn (VariantView::describe())
     size_t litVariants = 0;          // variants of the ForwardBase and ForwardAdd passes
     std::string error;               // a render that failed ("" when all drew)
-    bool passed() const;             // no error and no relation failed
+    // No error and no relation failed. The findings of the reflection (a lit shader that does
+    // not respond, a response without a light input, a ForwardAdd pass that reads none) are
+    // FAILs of `lit`, so they fail this too.
+    bool passed() const;
     size_t litVariantsDrawn() const;  // the |variants| of ForwardBase and ForwardAdd passes
 };
 
