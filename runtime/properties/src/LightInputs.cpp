@@ -22,9 +22,8 @@ const std::vector<std::string_view>& lightInputNames() {
             // main directional light in ForwardBase, one light per ForwardAdd draw).
             // _LightMatrix0 is a macro for unity_WorldToLight there; GLSL shaders and older
             // HLSL ones declare it themselves, so the reflection may record either name.
-            "_WorldSpaceLightPos0", "_LightColor0", "_LightPositionRange",
-            "_LightProjectionParams", "unity_WorldToLight", "_LightMatrix0",
-            "unity_OcclusionMaskSelector",
+            "_WorldSpaceLightPos0", "_LightColor0", "_LightPositionRange", "_LightProjectionParams",
+            "unity_WorldToLight", "_LightMatrix0", "unity_OcclusionMaskSelector",
             // Block UnityShadows: the pixel light's real-time shadows.
             "unity_ShadowSplitSpheres", "unity_ShadowSplitSqRadii", "unity_LightShadowBias",
             "_LightSplitsNear", "_LightSplitsFar", "unity_WorldToShadow", "_LightShadowData",
@@ -52,8 +51,7 @@ const std::vector<std::string_view>& lightInputNames() {
 
 bool isLightInput(std::string_view name) {
     // Unity names a texture's separate sampler "sampler" + the texture's name.
-    if (name.size() > 7 && name.starts_with("sampler") && isLightInput(name.substr(7)))
-        return true;
+    if (name.size() > 7 && name.starts_with("sampler") && isLightInput(name.substr(7))) return true;
     for (std::string_view entry : lightInputNames()) {
         if (entry.ends_with('*')) {
             if (name.starts_with(entry.substr(0, entry.size() - 1))) return true;
@@ -114,8 +112,7 @@ std::vector<PassReflection> litPassReflections(const reader::ShaderView& shader)
         const std::optional<reader::PassView> pass = shader.pass(p);
         if (!pass) continue;
         const std::string_view lightMode = pass->lightMode();
-        if (!equalsIgnoreAsciiCase(lightMode, "ForwardBase") && !drawnPerLight(lightMode))
-            continue;
+        if (!equalsIgnoreAsciiCase(lightMode, "ForwardBase") && !drawnPerLight(lightMode)) continue;
         PassReflection reflection{std::string(lightMode), {}};
         for (size_t v = 0; v < pass->variantCount(); ++v) {
             const reader::VariantView variant = pass->variant(v);

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Tests of the reflection rule that decides whether a shader is lit, on synthetic reflection data.
-#include "varc/properties/LightInputs.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
+
+#include "varc/properties/LightInputs.h"
 
 namespace varc::properties {
 namespace {
@@ -84,16 +84,16 @@ TEST(LightInputs, ForwardAddWithoutLightInputIsAFinding) {
 }
 
 TEST(LightInputs, ForwardBaseWithoutLightInputIsNoFinding) {
-    const LightInputReport report = lightInputsOf(
-        {pass("ForwardBase", {program({"_Color"})}), pass("ForwardAdd", {program({"_LightColor0"})})});
+    const LightInputReport report =
+        lightInputsOf({pass("ForwardBase", {program({"_Color"})}),
+                       pass("ForwardAdd", {program({"_LightColor0"})})});
     EXPECT_TRUE(report.lit());
     EXPECT_TRUE(report.findings.empty());
 }
 
 TEST(LightInputs, UnlitForwardAddPassIsAFindingOfANotLitShader) {
-    const LightInputReport report =
-        lightInputsOf({pass("ForwardBase", {program({"_Color"})}),
-                       pass("ForwardAdd", {program({"_Color"})})});
+    const LightInputReport report = lightInputsOf(
+        {pass("ForwardBase", {program({"_Color"})}), pass("ForwardAdd", {program({"_Color"})})});
     EXPECT_FALSE(report.lit());
     const LightModelDecision decision = decideLightModel(report, false);
     EXPECT_TRUE(decision.notLit);
@@ -111,8 +111,7 @@ TEST(LightInputs, ResponseWithoutLightInputFailsLit) {
 }
 
 TEST(LightInputs, LitShaderIsNeverNotLit) {
-    const LightInputReport report =
-        lightInputsOf({pass("ForwardBase", {program({"unity_SHAr"})})});
+    const LightInputReport report = lightInputsOf({pass("ForwardBase", {program({"unity_SHAr"})})});
     EXPECT_FALSE(decideLightModel(report, false).notLit);
     EXPECT_TRUE(decideLightModel(report, false).litFailures.empty());
     EXPECT_TRUE(decideLightModel(report, true).litFailures.empty());
