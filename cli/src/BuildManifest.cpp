@@ -75,8 +75,8 @@ bool parseHead(std::string_view keyLine, std::string_view packLine, BuildManifes
     if (keyTag != "key" || !isHexDigest(key) || packTag != "pack" || !isHexDigest(digest)) {
         return false;
     }
-    auto [end, error] = std::from_chars(bytes.data(), bytes.data() + bytes.size(),
-                                        manifest.packBytes);
+    auto [end, error] =
+        std::from_chars(bytes.data(), bytes.data() + bytes.size(), manifest.packBytes);
     if (error != std::errc() || end != bytes.data() + bytes.size() || bytes.empty()) return false;
     manifest.key = key;
     manifest.packDigest = digest;

@@ -16,7 +16,7 @@
 #include <set>
 #include <sstream>
 
-#include "DirectMode.h"
+#include "varc/cli/DirectMode.h"
 #include "Session.h"
 #include "varc/cli/BuildReport.h"
 #include "varc/cli/CacheCommands.h"

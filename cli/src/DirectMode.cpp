@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // DirectMode: the key of a `varc build --direct`, and finding and recording its pack.
-#include "DirectMode.h"
+#include "varc/cli/DirectMode.h"
 
 #include <filesystem>
 #include <system_error>

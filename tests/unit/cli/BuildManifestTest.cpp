@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // BuildManifest and RecordingFileSystem: the record `varc build --direct` keeps, round trips,
 // damaged text, and which changes to the files make it stale.
-#include "varc/cli/BuildManifest.h"
-
 #include <gtest/gtest.h>
 
+#include "varc/cli/BuildManifest.h"
 #include "varc/cli/RecordingFileSystem.h"
 
 namespace varc::cli {

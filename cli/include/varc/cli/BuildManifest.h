@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// BuildManifest: what `varc build --direct` records about a build so a later one can reuse its pack.
+// BuildManifest: what `varc build --direct` records about a build so a later one can reuse its
+// pack.
 //
 // ccache's direct mode for packs: a manifest is stored in the cache under the build's key (the
 // tool, the options, the inputs and their digests; DirectMode.h) and lists every question the

@@ -16,11 +16,10 @@
 
 #include <cstdint>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "varc/cli/BuildManifest.h"
 #include "varc/cli/Options.h"
@@ -35,8 +34,8 @@ namespace varc::cli {
 // What direct mode did, for the build summary.
 struct DirectOutcome {
     bool hit = false;
-    std::string reason;     // a miss: why ("no manifest", "changed: inc/Light.cginc", ...)
-    bool recorded = false;  // a miss: whether this build's manifest was stored
+    std::string reason;       // a miss: why ("no manifest", "changed: inc/Light.cginc", ...)
+    bool recorded = false;    // a miss: whether this build's manifest was stored
     std::string notRecorded;  // why not, when it was not
     size_t checkedQueries = 0;
     uint64_t packBytes = 0;
