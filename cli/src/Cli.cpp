@@ -8,6 +8,7 @@
 #include <chrono>
 #include <filesystem>
 #include <functional>
+#include <iomanip>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -15,6 +16,7 @@
 #include <set>
 #include <sstream>
 
+#include "varc/cli/DirectMode.h"
 #include "Session.h"
 #include "varc/cli/BuildReport.h"
 #include "varc/cli/CacheCommands.h"
@@ -204,38 +206,73 @@ std::optional<pack::PackContents> assembleBuiltPack(
     return contents;
 }
 
-// Writes the pack and the --depfile; false after reporting why not.
+// Writes |pack| to -o and the --depfile listing |dependencies|; false after reporting why not.
+bool writeOutputs(const BuildCommandOptions& options, const std::string& pack,
+                  const std::vector<std::string>& dependencies, Session& session) {
+    Status written = writeFileAtomically(options.outputPath, pack);
+    if (written && !options.depfilePath.empty()) {
+        written = writeFileAtomically(options.depfilePath,
+                                      driver::makeDepfile(options.outputPath, dependencies));
+    }
+    if (!written) session.output.error(written.error().detail);
+    return static_cast<bool>(written);
+}
+
+// Writes the pack (its bytes are left in |pack|) and the --depfile; false after reporting why
+// not.
 bool writeBuildFiles(const BuildCommandOptions& options, const pack::PackContents& contents,
                      const std::vector<frontend::LoadedShader>& shaders, PackSizes& sizes,
-                     Session& session) {
+                     Session& session, std::string& pack) {
     packwriter::PackWriteStats stats;
     packwriter::PackWriteOptions writeOptions;
     writeOptions.compressionLevel = options.compressionLevel;
-    Status written = packwriter::writePack(options.outputPath, contents, writeOptions, &stats);
-    if (!written) {
-        session.output.error(written.error().detail);
-        return false;
-    }
+    pack = packwriter::serializePack(contents, writeOptions, &stats);
     sizes.packBytes = stats.packBytes;
-    if (!options.depfilePath.empty()) {
-        Status depfile = writeFileAtomically(
-            options.depfilePath,
-            driver::makeDepfile(options.outputPath, buildDependencies(shaders)));
-        if (!depfile) {
-            session.output.error(depfile.error().detail);
-            return false;
-        }
+    return writeOutputs(options, pack, buildDependencies(shaders), session);
+}
+
+// A direct hit: the recorded pack and depfile written, and the summary.
+int finishDirectHit(const BuildCommandOptions& options, DirectMode& direct,
+                    const std::string& pack, std::chrono::steady_clock::time_point start,
+                    Session& session, std::ostream& out) {
+    if (!writeOutputs(options, pack, direct.manifest().dependencies, session)) {
+        return kExitFailure;
     }
-    return true;
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (options.json) {
+        nlohmann::ordered_json report = {{"direct", directJson(direct.outcome())},
+                                         {"bytes", {{"pack", pack.size()}}},
+                                         {"seconds", seconds}};
+        out << report.dump() << "\n";
+        return kExitOk;
+    }
+    std::ostringstream time;
+    time << std::fixed << std::setprecision(3) << seconds;
+    out << "varc build: " << directSummaryLine(direct.outcome()) << " in " << time.str()
+        << " s; pack " << pack.size() << " bytes\nwrote " << options.outputPath << "\n";
+    return kExitOk;
+}
+
+// Stores the pack and manifest of a build direct mode missed; a build that reported warnings
+// is not recorded, so a later build reports them again.
+void recordDirect(DirectMode& direct, const std::string& pack,
+                  const std::vector<frontend::LoadedShader>& shaders, Session& session) {
+    if (!session.diagnostics.diagnostics().empty()) {
+        direct.outcome().notRecorded = "the build reported diagnostics";
+        return;
+    }
+    direct.record(pack, buildDependencies(shaders), session.fileSystem.queries());
 }
 
 // The summary of a written build: JSON, or the report for people.
 void printBuildSummary(const BuildCommandOptions& options, const driver::ShardSpec& shard,
                        const std::vector<frontend::LoadedShader>& shaders,
                        const driver::BuildOutput& build, const PackSizes& sizes, double seconds,
-                       std::ostream& out) {
+                       const DirectOutcome* direct, std::ostream& out) {
     if (options.json) {
         nlohmann::ordered_json report = buildReportJson(shaders, build, sizes, seconds);
+        if (direct) report["direct"] = directJson(*direct);
         if (!shard.whole()) {
             report["shard"] = {{"shard", shard.text()},
                                {"compiled", build.compiledSources},
@@ -252,17 +289,24 @@ void printBuildSummary(const BuildCommandOptions& options, const driver::ShardSp
             << " distinct programs); the partial pack holds placeholders for the others "
             << "(join the parts with `varc merge`)\n";
     }
+    if (direct) out << directSummaryLine(*direct) << "\n";
     out << "wrote " << options.outputPath << "\n";
 }
 
 int runBuild(const BuildCommandOptions& options, Session& session, std::ostream& out,
              std::ostream& err) {
     auto start = std::chrono::steady_clock::now();
+    driver::BuildOptions buildOptions = toBuildOptions(options.compile, options.input);
+    std::optional<DirectMode> direct = DirectMode::open(options, buildOptions.cache, session.disk);
+    if (direct) {
+        if (std::optional<std::string> pack = direct->findPack(session.disk))
+            return finishDirectHit(options, *direct, *pack, start, session, out);
+        session.fileSystem.startRecording();
+    }
     std::vector<frontend::LoadedShader> shaders;
     bool loaded = loadAll(options.input, session, shaders, options.compile.maxVariants);
     session.printNew(DiagnosticRule::Input);  // errors, or warnings
     if (!loaded) return kExitFailure;
-    driver::BuildOptions buildOptions = toBuildOptions(options.compile, options.input);
     if (!session.output.isDocument()) buildOptions.progress = progressPrinter(err);
     auto build =
         driver::buildPrograms(shaders, session.sourceMap, buildOptions, session.diagnostics);
@@ -274,12 +318,15 @@ int runBuild(const BuildCommandOptions& options, Session& session, std::ostream&
     PackSizes sizes = measureSpirv(*build);
     std::optional<pack::PackContents> contents =
         assembleBuiltPack(options, buildOptions, shaders, *build, session);
-    if (!contents || !writeBuildFiles(options, *contents, shaders, sizes, session)) {
+    std::string pack;
+    if (!contents || !writeBuildFiles(options, *contents, shaders, sizes, session, pack)) {
         return kExitFailure;
     }
+    if (direct) recordDirect(*direct, pack, shaders, session);
     double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    printBuildSummary(options, buildOptions.shard, shaders, *build, sizes, seconds, out);
+    printBuildSummary(options, buildOptions.shard, shaders, *build, sizes, seconds,
+                      direct ? &direct->outcome() : nullptr, out);
     return kExitOk;
 }
 

@@ -11,6 +11,7 @@
 #include "ProjectInputs.h"
 #include "varc/cli/DiagnosticOutput.h"
 #include "varc/cli/Options.h"
+#include "varc/cli/RecordingFileSystem.h"
 #include "varc/core/Diagnostic.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/frontend/VariantLimit.h"
@@ -24,7 +25,8 @@ namespace varc::cli {
 struct Session {
     Session(DiagnosticsFormat format, std::ostream& err) : output(format, sourceMap, err) {}
 
-    includes::DiskFileSystem fileSystem;
+    includes::DiskFileSystem disk;
+    RecordingFileSystem fileSystem{disk};  // records what `build --direct` read
     includes::SourceMap sourceMap;
     DiagnosticList diagnostics;
     DiagnosticOutput output;

@@ -102,6 +102,8 @@ void addBuildOutputs(CLI::App& cmd, BuildCommandOptions& options) {
                        std::to_string(kMaxCompressionLevel) + " (default " +
                        std::to_string(kDefaultCompressionLevel) + "; 3 writes faster, ~20% bigger)")
         ->check(CLI::Range(kMinCompressionLevel, kMaxCompressionLevel));
+    cmd.add_flag("--direct", options.direct,
+                 "With a cache: reuse the pack of an earlier build whose files are unchanged");
     cmd.add_flag("-g,--debug-names", options.compile.debugNames,
                  "Keep OpName/OpMemberName in the SPIR-V (bigger packs; for GPU debuggers)");
     addMaxVariants(cmd, options.compile.maxVariants);

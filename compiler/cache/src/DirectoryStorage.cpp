@@ -28,7 +28,8 @@ bool isEntry(const fs::directory_entry& entry) {
     size_t dot = name.find('.');
     return entry.is_regular_file() && dot == 32 && folder.size() == 2 &&
            name.compare(0, 2, folder) == 0 && name.find_first_not_of("0123456789abcdef") == 32 &&
-           (name.substr(dot) == ".program" || name.substr(dot) == ".source");
+           (name.substr(dot) == ".program" || name.substr(dot) == ".source" ||
+            name.substr(dot) == ".manifest" || name.substr(dot) == ".pack");
 }
 
 // Bundles are "<16 hex>.bundle" directly in the bundles folder.

@@ -184,6 +184,11 @@ ProgramCache::ProgramCache(std::shared_ptr<cache::CacheChain> chain)
 
 ProgramCacheKey ProgramCache::hashText(std::string_view text) { return hash128(text); }
 
+ProgramCacheKey ProgramCache::executableKey() {
+    static const ProgramCacheKey key = executableHash();
+    return key;
+}
+
 ProgramCacheKey ProgramCache::keyOf(const ProgramCacheInput& input) const {
     std::string text(kProgramMagic);
     putU64(text, mToolchain.low);

@@ -102,6 +102,8 @@ struct BuildCommandOptions {
     std::string depfilePath;  // --depfile ("" = none)
     bool json = false;
     int compressionLevel = kDefaultCompressionLevel;
+    // --direct: with a cache, reuse an earlier build's pack when no file it read has changed.
+    bool direct = false;
 };
 
 // `varc merge -o PACK PART...`

@@ -79,6 +79,9 @@ public:
     ProgramCacheKey keyOf(const ProgramCacheInput& input) const;
     ProgramCacheKey sourceKeyOf(const SourceCacheInput& input) const;
     static ProgramCacheKey hashText(std::string_view text);
+    // Identifies the running executable (its GNU build ID, else its bytes): what every key holds,
+    // so a rebuilt varc never reuses another build's entries.
+    static ProgramCacheKey executableKey();
 
     // The entry for |key|; nullopt when there is none or it cannot be trusted.
     std::optional<CachedProgram> load(const ProgramCacheKey& key) const;

@@ -1,0 +1,1 @@
+#define TINT float4(1, 0, 0, 1)
