@@ -179,7 +179,7 @@ fi
 # Regressions first: a file the committed table lists as built must still build.
 while IFS= read -r line; do
     rel=$(sed -E 's/^\| `([^`]*)`.*/\1/' <<<"$line")
-    if ! grep -F "$rel|" "$results" | grep -q '|built|'; then
+    if ! grep -F "$rel|" "$results" | grep -F '|built|' >/dev/null; then
         echo "FAIL: $rel built before and no longer builds:"
         grep -F "$rel|" "$results" | cut -d'|' -f5
         status=1
