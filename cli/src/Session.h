@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "ProjectInputs.h"
@@ -30,7 +31,7 @@ struct Session {
     includes::SourceMap sourceMap;
     DiagnosticList diagnostics;
     DiagnosticOutput output;
-    size_t printed = 0;  // diagnostics already written
+    size_t printed = 0;                    // diagnostics already written
     std::optional<ProjectInputs> project;  // --project: what the project asked for
 
     // Writes the diagnostics reported since the last call, as found by |rule|.
@@ -44,9 +45,11 @@ struct Session {
 };
 
 // Loads every input shader (with --project, the project's build) and plans its variants (with
-// --project or --strip-rules); false when any failed (diagnostics are in |session|).
+// --project or --strip-rules); false when any failed (diagnostics are in |session|). With
+// |failedFiles|, a shader file that fails to load is listed there instead of failing the load.
 bool loadAll(const ShaderInputOptions& input, Session& session,
              std::vector<frontend::LoadedShader>& shaders,
-             uint64_t maxVariants = frontend::kDefaultMaxVariantsPerPass);
+             uint64_t maxVariants = frontend::kDefaultMaxVariantsPerPass,
+             std::vector<std::string>* failedFiles = nullptr);
 
 }  // namespace varc::cli

@@ -104,6 +104,9 @@ void addBuildOutputs(CLI::App& cmd, BuildCommandOptions& options) {
         ->check(CLI::Range(kMinCompressionLevel, kMaxCompressionLevel));
     cmd.add_flag("--direct", options.direct,
                  "With a cache: reuse the pack of an earlier build whose files are unchanged");
+    cmd.add_flag("--skip-failing-shaders", options.skipFailingShaders,
+                 "Leave a shader that fails out of the pack (its errors reported), as Unity's "
+                 "player build does, instead of failing the build");
     cmd.add_flag("-g,--debug-names", options.compile.debugNames,
                  "Keep OpName/OpMemberName in the SPIR-V (bigger packs; for GPU debuggers)");
     addMaxVariants(cmd, options.compile.maxVariants);
@@ -181,6 +184,12 @@ void addBuild(CLI::App& app, ParseState& state) {
             auto levels = cacheLevelsOf(flags->cacheDirectory, flags->cacheUrls);
             if (!levels) return levels.error();
             flags->options.compile.cacheLevels = std::move(*levels);
+            // Which shaders fail is decided per whole shader: a shard sees only some variants,
+            // and a direct hit would not report the errors again.
+            if (flags->options.skipFailingShaders && !flags->options.compile.shard.whole())
+                return usageError("--skip-failing-shaders cannot be combined with --shard");
+            if (flags->options.skipFailingShaders && flags->options.direct)
+                return usageError("--skip-failing-shaders cannot be combined with --direct");
             if (Status input = finishInput(flags->options.input); !input) return input.error();
             return CommandOptions(flags->options);
         };

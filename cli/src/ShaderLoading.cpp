@@ -42,13 +42,14 @@ std::vector<std::string> restrictToPaths(const std::vector<std::string>& files,
 }  // namespace
 
 bool loadAll(const ShaderInputOptions& input, Session& session,
-             std::vector<frontend::LoadedShader>& shaders, uint64_t maxVariants) {
+             std::vector<frontend::LoadedShader>& shaders, uint64_t maxVariants,
+             std::vector<std::string>* failedFiles) {
     includes::IncludeOptions include = includeOptions(input);
     std::vector<std::string> files, searchFiles;
     DiagnosticList searchErrors;  // an unreadable include folder is reported by the includes
     if (!input.projectDir.empty()) {
-        session.project = readProjectInputs(input, session.fileSystem, session.sourceMap,
-                                            session.diagnostics);
+        session.project =
+            readProjectInputs(input, session.fileSystem, session.sourceMap, session.diagnostics);
         if (!session.project) return false;
         files = restrictToPaths(session.project->shaderFiles, input.inputs, session.diagnostics);
         include.virtualRoots = session.project->virtualRoots;
@@ -62,10 +63,18 @@ bool loadAll(const ShaderInputOptions& input, Session& session,
     // the include folders.
     frontend::ShaderCatalog catalog(session.fileSystem, session.sourceMap, files, searchFiles,
                                     include.builtinDir);
+    size_t shaderErrors = 0;  // reported while loading a shader that failedFiles then lists
     for (const std::string& file : files) {
+        const size_t errorsBefore = session.diagnostics.errorCount();
         auto shader = frontend::loadShader(file, session.fileSystem, session.sourceMap, include,
                                            session.diagnostics, &catalog);
-        if (shader) shaders.push_back(std::move(*shader));
+        const size_t errors = session.diagnostics.errorCount() - errorsBefore;
+        if (shader && errors == 0) {
+            shaders.push_back(std::move(*shader));
+        } else if (failedFiles) {
+            failedFiles->push_back(file);
+            shaderErrors += errors;
+        }
     }
     std::vector<variants::StripRule> rules;
     if (!input.stripRulesPath.empty() &&
@@ -85,7 +94,7 @@ bool loadAll(const ShaderInputOptions& input, Session& session,
         planShaders(session.project ? &*session.project : nullptr, rules, maxVariants, shaders,
                     session.diagnostics);
     }
-    return !session.diagnostics.hasErrors();
+    return session.diagnostics.errorCount() == shaderErrors;
 }
 
 }  // namespace varc::cli

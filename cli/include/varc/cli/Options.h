@@ -51,7 +51,7 @@ struct ShaderInputOptions {
     std::string projectDir;
     std::vector<std::string> projectShaders;     // --project-shaders: the shaders' own folders
     std::vector<std::string> builtinShaderDirs;  // --builtin-shaders: Unity's built-in shaders
-    std::string stripRulesPath;  // --strip-rules: the user's strip rules ("" = none)
+    std::string stripRulesPath;          // --strip-rules: the user's strip rules ("" = none)
     std::vector<std::string> usageLogs;  // --usage-log: sessions the runtime recorded
     DiagnosticsFormat diagnosticsFormat = DiagnosticsFormat::Clang;  // --diagnostics-format
 };
@@ -104,6 +104,9 @@ struct BuildCommandOptions {
     int compressionLevel = kDefaultCompressionLevel;
     // --direct: with a cache, reuse an earlier build's pack when no file it read has changed.
     bool direct = false;
+    // --skip-failing-shaders: as a Unity player build does, a shader that fails to load, compile
+    // or assemble is reported and left out of the pack instead of failing the build.
+    bool skipFailingShaders = false;
 };
 
 // `varc merge -o PACK PART...`
