@@ -30,7 +30,7 @@ trimmed=()
 unlit=()
 status=0
 relations=(finite dark lit out_of_range black_cookie white_cookie additivity additivity_ldr
-           intensity translation rotation mirror scale light_axis forward_deferred every_variant)
+           intensity translation rotation mirror scale light_axis behind forward_deferred every_variant)
 
 # "a, b, c" ("none" when empty).
 commaList() {

@@ -73,8 +73,8 @@ TEST_F(PropertyRelationsTest, EveryLibraryAndSeedShaderHoldsEveryRelation) {
     }
     for (const auto& [name, report] : reports) {
         EXPECT_TRUE(report.error.empty()) << name << ": " << report.error;
-        EXPECT_EQ(report.model, properties::LightingModel::Lit) << name << ": "
-                                                               << report.modelReason;
+        EXPECT_EQ(report.model, properties::LightingModel::Lit)
+            << name << ": " << report.modelReason;
         for (const properties::RelationOutcome& outcome : report.relations)
             EXPECT_NE(outcome.verdict, Verdict::Fail) << name << " " << outcome.relation << ":\n"
                                                       << outcome.detail;
@@ -84,8 +84,8 @@ TEST_F(PropertyRelationsTest, EveryLibraryAndSeedShaderHoldsEveryRelation) {
     // forward_deferred: no Deferred pass), and the checks draw each of its 15 lit variants
     // (every_variant).
     for (const properties::RelationOutcome& outcome : reports.at("varc/Forward").relations)
-        EXPECT_EQ(outcome.verdict, outcome.relation == "forward_deferred" ? Verdict::NotApplicable
-                                                                          : Verdict::Pass)
+        EXPECT_EQ(outcome.verdict,
+                  outcome.relation == "forward_deferred" ? Verdict::NotApplicable : Verdict::Pass)
             << outcome.relation;
     EXPECT_EQ(reports.at("varc/Forward").litVariantsDrawn(), 15u);
     EXPECT_EQ(reports.at("varc/Forward").litVariants, 15u);
@@ -108,6 +108,7 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
         {"varc-mutants/NanSpot", {"finite"}},
         {"varc-mutants/IntensityIgnored", {"intensity"}},
         {"varc-mutants/WorldXLight", {"rotation", "mirror", "light_axis"}},
+        {"varc-mutants/FixedDirection", {"behind"}},
         {"varc-mutants/PointCookieNoFalloff", {"white_cookie"}},
         {"varc-mutants/LambertForward", {"forward_deferred"}},
         {"varc-mutants/LightTimesZero", {"lit"}},
@@ -142,8 +143,8 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
         for (const std::string& relation : catchers)
             EXPECT_TRUE(failed.count(relation)) << name << " is not caught by " << relation;
         // A bug is never excused as a model: every mutant stays "lit".
-        EXPECT_EQ(report.model, properties::LightingModel::Lit) << name << ": "
-                                                               << report.modelReason;
+        EXPECT_EQ(report.model, properties::LightingModel::Lit)
+            << name << ": " << report.modelReason;
     }
     // A shader that reads the light and draws black is lit by its reflection: it FAILs `lit`
     // (each key light, and why that is not excused), not n/a; nothing else fails.
@@ -158,6 +159,10 @@ TEST_F(PropertyRelationsTest, EveryMutantIsCaughtByItsRelation) {
     // A light whose intensity is ignored does not brighten when doubled: a bug, not a model.
     EXPECT_EQ(failing(reports.at("varc-mutants/IntensityIgnored")),
               (std::set<std::string>{"intensity"}));
+    // A fixed light direction holds every relation that moves, turns or mirrors the scene about
+    // the y axis (the direction is symmetric about it): only a light behind the surface shows it.
+    EXPECT_EQ(failing(reports.at("varc-mutants/FixedDirection")),
+              (std::set<std::string>{"behind"}));
     // The narrow mutants break nothing else: the relations are specific, not noisy.
     EXPECT_EQ(failing(reports.at("varc-mutants/CookieIgnored")),
               (std::set<std::string>{"black_cookie"}));

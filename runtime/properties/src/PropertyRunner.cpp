@@ -61,11 +61,10 @@ size_t ShaderReport::litVariantsDrawn() const {
 
 const std::vector<std::string>& relationNames() {
     static const std::vector<std::string> kNames{
-        "finite",       "dark",           "lit",
-        "out_of_range", "black_cookie",   "white_cookie",
-        "additivity",   "additivity_ldr", "intensity",
-        "translation",  "rotation",       "mirror",
-        "scale",        "light_axis",     "forward_deferred",
+        "finite",       "dark",         "lit",        "out_of_range",
+        "black_cookie", "white_cookie", "additivity", "additivity_ldr",
+        "intensity",    "translation",  "rotation",   "mirror",
+        "scale",        "light_axis",   "behind",     "forward_deferred",
         "every_variant"};
     return kNames;
 }

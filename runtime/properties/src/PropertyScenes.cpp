@@ -177,6 +177,19 @@ scene::Scene fromAbove(scene::Scene scene) {
     return scene;
 }
 
+scene::Scene floorFromAbove(const std::string& shader, uint32_t size) {
+    scene::Scene scene = fromAbove(emptyScene(shader, true, size));
+    scene.objects.erase(scene.objects.begin(), scene.objects.end() - 1);  // the plane is last
+    return scene;
+}
+
+scene::Light underFloor(scene::Light light) {
+    light.transform.rotationDegrees = {-90.0f, 0.0f, 0.0f};  // +z -> +y: straight up
+    light.transform.position = {0.0f, -6.0f, 0.0f};
+    light.range = 12.0f;
+    return light;
+}
+
 scene::Scene objectsTurned(const scene::Scene& original, float degrees) {
     scene::Scene scene = original;
     const glm::mat3 turn = scene::Transform{{}, {0.0f, degrees, 0.0f}, glm::vec3(1.0f)}.rotation();

@@ -90,6 +90,7 @@ public:
         checkIntensity();
         const scene::Scene allLit = checkMotion();
         checkLightAxis();
+        checkBehind();
         checkForwardDeferred(mCheck, mSupport, mEmpty, allLit);
         return drawCoverage(mCheck, mSupport, mCookies, mEmpty);
     }
@@ -228,6 +229,29 @@ private:
                  {{c.quarterTurned("axial lights, image turned", c.render("axial lights", above)),
                    1.0f}},
                  moved);
+    }
+
+    // A light behind an opaque surface does not light its front: with each light type the
+    // shader takes under the floor (floorFromAbove(), underFloor()), the floor's top face, which
+    // faces away from it, draws as with no lights. Catches a shader that ignores where its light
+    // is (mutant FixedDirection) whatever its BRDF, as long as the light's term vanishes when
+    // the light is behind the surface (not wrap or translucent lighting).
+    void checkBehind() {
+        ShaderCheck& c = mCheck;
+        const Tolerance same{kZero, 2 * kHalfUlp, 0};
+        const scene::Scene floor = floorFromAbove(mShader, mSize);
+        const auto* dark = c.render("floor, no lights", floor);
+        c.relate("behind", "directional",
+                 c.render("floor, directional below", withLights(floor, {underFloor(mD)})),
+                 {{dark, 1.0f}}, same);
+        if (mSupport.point)
+            c.relate("behind", "point",
+                     c.render("floor, point below", withLights(floor, {underFloor(mP)})),
+                     {{dark, 1.0f}}, same);
+        if (mSupport.spot)
+            c.relate("behind", "spot",
+                     c.render("floor, spot below", withLights(floor, {underFloor(mS)})),
+                     {{dark, 1.0f}}, same);
     }
 
     ShaderCheck& mCheck;

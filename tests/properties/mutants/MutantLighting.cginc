@@ -100,6 +100,11 @@ UnityLight ForwardPixelLight(ForwardVaryings i, float3 normal) {
 #if defined(MUTANT_WORLD_X_LIGHT)
     light.color *= light.dir.x >= 0 ? 1.0 : 0.5;  // bug: depends on the world x axis
 #endif
+#if defined(MUTANT_FIXED_DIRECTION)
+    // bug: every light shines from straight above, wherever it is (the falloff still follows its
+    // position); symmetric about the y axis, so only a light below the surface tells
+    light.dir = float3(0, 1, 0);
+#endif
     light.ndotl = saturate(dot(normal, light.dir));
     return light;
 }

@@ -79,7 +79,7 @@ struct ShaderReport {
 
 // The relations in the order they are checked and printed: finite, dark, lit, out_of_range,
 // black_cookie, white_cookie, additivity, additivity_ldr, intensity, translation, rotation,
-// mirror, scale, light_axis, forward_deferred, every_variant.
+// mirror, scale, light_axis, behind, forward_deferred, every_variant.
 const std::vector<std::string>& relationNames();
 
 // The shaders of |packs| with a ForwardBase pass, in pack order; a name in two packs once (the

@@ -14,8 +14,9 @@
 namespace varc::properties {
 
 // Which lights a shader's forward passes can draw, from its ForwardAdd pass's keywords: POINT,
-// SPOT, DIRECTIONAL_COOKIE, POINT_COOKIE (multi_compile_fwdadd). A ForwardAdd pass without any light keyword
-// (it tells lights apart by _WorldSpaceLightPos0.w) takes directional and point lights only.
+// SPOT, DIRECTIONAL_COOKIE, POINT_COOKIE (multi_compile_fwdadd). A ForwardAdd pass without any
+// light keyword (it tells lights apart by _WorldSpaceLightPos0.w) takes directional and point
+// lights only.
 struct LightSupport {
     bool forwardBase = false;  // the shader has a ForwardBase pass: it is checked at all
     bool forwardAdd = false;   // ... and a ForwardAdd pass: extra pixel lights
@@ -81,5 +82,14 @@ scene::Scene fromAbove(scene::Scene scene);
 // axis through the origin. Seen fromAbove() with lights on that axis (overheadDirectional(),
 // onLightAxis()), a correct shader draws the image turned by |degrees| (clockwise on screen).
 scene::Scene objectsTurned(const scene::Scene& scene, float degrees);
+
+// The floor of emptyScene() alone (the sphere and cube removed), seen fromAbove(): every pixel
+// that draws it shows its top face, whose normal is +y.
+scene::Scene floorFromAbove(const std::string& shader, uint32_t size);
+
+// |light| moved under that floor, shining up at its bottom face: a directional light pointing
+// straight up; a point or spot light 5.5 m below the floor's centre (a spot pointing up), with a
+// range of 12 m, so the direction to it from every point of the top face has y < -0.96.
+scene::Light underFloor(scene::Light light);
 
 }  // namespace varc::properties
