@@ -73,10 +73,12 @@
 #ifndef GRA_RWTEXTURE2D_SCALE
 #define GRA_RWTEXTURE2D_SCALE 16
 #endif
+#ifndef GRA_TEXTURE_ARRAY_SUPPORT
 #if (GRA_HLSL_5 == 1) || (GRA_HLSL_4 == 1) || (GRA_GLSL_330 == 1)
 #define GRA_TEXTURE_ARRAY_SUPPORT 1
 #else
 #define GRA_TEXTURE_ARRAY_SUPPORT 0
+#endif
 #endif
 #if (GRA_HLSL_5 == 1) || (GRA_HLSL_4 == 1) || (GRA_GLSL_130 == 1) || (GRA_GLSL_330 == 1)
 #define GRA_LOAD_INSTR 1

@@ -11,8 +11,7 @@
 #ifndef TEXTURESTACK_include
 #define TEXTURESTACK_include
 
-#include "GraniteShaderLib3.cginc"
-
+// Granite's configuration for stacks, set before it is included.
 #define GRA_HLSL_5 1
 #define GRA_ROW_MAJOR 1
 #define GRA_TEXTURE_ARRAY_SUPPORT 1
@@ -20,6 +19,8 @@
 #if SHADER_API_PSSL
 #define GRA_NO_UNORM 1
 #endif
+#include "GraniteShaderLib3.cginc"
+
 #ifndef RESOLVE_SCALE_OVERRIDE
 #define RESOLVE_SCALE_OVERRIDE float2(1, 1)
 #endif

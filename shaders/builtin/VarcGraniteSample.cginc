@@ -6,7 +6,7 @@
 #ifndef VARC_GRANITE_SAMPLE_INCLUDED
 #define VARC_GRANITE_SAMPLE_INCLUDED
 
-#if (GRA_HLSL_5 == 1) || (GRA_HLSL_4 == 1)
+#if ((GRA_HLSL_5 == 1) || (GRA_HLSL_4 == 1))
 gra_Float4 GranitePrivate_SampleLevel_Translation(in GraniteTranslationTexture tex, in gra_Float2 texCoord, in float level) {
     return tex.Texture.SampleLevel(tex.Sampler, texCoord, level);
 }
