@@ -48,7 +48,7 @@ struct VertexOutput {
     fixed4 color : TEXCOORD2;
 };
 
-void vertEditorPass(VertexInput v, out VertexOutput o, out float4 opos) {
+void vertEditorPass(VertexInput v, out VertexOutput o, out float4 opos : SV_POSITION) {
     UNITY_SETUP_INSTANCE_ID(v);
     opos = UnityObjectToClipPos(v.vertex);
 #ifdef _FLIPBOOK_BLENDING
