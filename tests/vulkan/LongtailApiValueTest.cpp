@@ -6,16 +6,16 @@
 //
 // api-value-tested: GranitePrivate_RepeatUV GranitePrivate_MirrorUV GranitePrivate_ClampUV
 // api-value-tested: Granite_Transform GranitePrivate_CalcMiplevelLinear
-// Granite_GetTextureDimensions api-value-tested: GranitePrivate_CalcMiplevelAnisotropic
-// GranitePrivate_Pow2 api-value-tested: Granite_ApplyResolutionOffset
-// GranitePrivate_CalculateCubemapCoordinates api-value-tested: GranitePrivate_PackTileId
-// GranitePrivate_UnpackTileId Granite_PackTileId api-value-tested: Granite_DebugPackedTileId64
-// Granite_MergeResolveOutputs Granite_UnpackNormal api-value-tested: uie_gamma_to_linear
-// uie_linear_to_gamma uie_unpack_float2 api-value-tested: uie_ray_unit_circle_first_hit
-// uie_radial_address ComputeRelativeClipRectCoords api-value-tested: TestForValue
-// uie_decode_shader_info_texel_pos uie_get_border_offset api-value-tested: DecodeSNorm16
-// GetIndirectVertexID GetIndirectInstanceID GetIndirectInstanceID_Base api-value-tested:
-// GetCommandID GetIndirectVertexID_Base
+// api-value-tested: Granite_GetTextureDimensions GranitePrivate_CalcMiplevelAnisotropic
+// api-value-tested: GranitePrivate_Pow2 Granite_ApplyResolutionOffset
+// api-value-tested: GranitePrivate_CalculateCubemapCoordinates GranitePrivate_PackTileId
+// api-value-tested: GranitePrivate_UnpackTileId Granite_PackTileId Granite_DebugPackedTileId64
+// api-value-tested: Granite_MergeResolveOutputs Granite_UnpackNormal uie_gamma_to_linear
+// api-value-tested: uie_linear_to_gamma uie_unpack_float2 uie_ray_unit_circle_first_hit
+// api-value-tested: uie_radial_address ComputeRelativeClipRectCoords TestForValue
+// api-value-tested: uie_decode_shader_info_texel_pos uie_get_border_offset DecodeSNorm16
+// api-value-tested: GetIndirectVertexID GetIndirectInstanceID GetIndirectInstanceID_Base
+// api-value-tested: GetCommandID GetIndirectVertexID_Base
 #include <gtest/gtest.h>
 
 #include <algorithm>
