@@ -670,6 +670,16 @@ FRAGMENT_ONLY = re.compile(r"\b(ddx|ddy|ddx_fine|ddy_fine|fwidth|clip|discard|te
                            r"UNITY_SAMPLE_DEPTH|SAMPLE_DEPTH_TEXTURE|UNITY_SAMPLE_SCREENSPACE_SHADOW)\b|\.Sample\s*\(")
 SAMPLERS = {"sampler2D": "sampler2D", "samplerCUBE": "samplerCUBE", "sampler3D": "sampler3D",
             "Texture2D": "Texture2D", "TextureCube": "TextureCube", "SamplerState": "SamplerState"}
+# Resources cannot be local variables: the call test passes a global of that type instead.
+# Structs holding resources (e.g. GraniteCacheTexture) cannot be either, and a global one makes
+# spirv-opt's legalization (FixStorageClass) crash, so calls taking one are left to hand-written
+# shaders that fill a local from separate globals (tests/builtin/shaders/*).
+RESOURCE = re.compile(r"(RW)?(ByteAddressBuffer|(Structured)?Buffer|Texture\w*)\b.*")
+
+
+def opaque_structs(sources):
+    return {name for s in sources.values() for name, body in s.structs.items()
+            if re.search(r"\b(Texture\w*|SamplerState|sampler\w*|(RW)?ByteAddressBuffer)\b", body)}
 
 
 def fragment_only_names(sources):
@@ -719,6 +729,7 @@ def write_calls(directory, rows, results, sources):
         if old.startswith("api-calls-"):
             os.remove(os.path.join(directory, old))
     frag = fragment_only_names(sources)
+    opaque = opaque_structs(sources)
     with open(os.path.join(directory, "api-calls-native.shader"), "w", encoding="utf-8") as f:
         f.write(NATIVE_SHADER)
     with open(os.path.join(directory, "api-calls-macros.shader"), "w", encoding="utf-8") as f:
@@ -748,8 +759,10 @@ def write_calls(directory, rows, results, sources):
                     g = "api_%s_%d_%d" % (macro_arg.group(1), i, k)
                     globals_.append((cond, "UNITY_DECLARE_%s(%s);" % (macro_arg.group(1), g)))
                     args.append("UNITY_PASS_%s(%s)" % (macro_arg.group(1), g))
-                elif base in SAMPLERS:
-                    g = "api_%s_%d_%d" % (base, i, k)
+                elif base in opaque:
+                    ok = False
+                elif base in SAMPLERS or RESOURCE.fullmatch(base):
+                    g = "api_%s_%d_%d" % (re.sub(r"\W", "_", base), i, k)
                     globals_.append((cond, "%s%s %s;" % ("uniform " if glsl else "", base, g)))
                     args.append(g)
                 elif t.endswith("[]"):
