@@ -236,6 +236,8 @@ class Source:
             args = split_top(m.group(2))
             if args and IDENT.fullmatch(args[-1]):
                 self.variables.add(args[-1])
+                if m.group(1) == "UNITY_DEFINE_INSTANCED_PROP":
+                    self.variables.add(args[-1] + "Array")  # the array it declares when instanced
             return
         s = re.sub(r"\s*=.*$", "", s)
         s = re.sub(r"\s*:\s*register\s*\(.*$", "", s)
