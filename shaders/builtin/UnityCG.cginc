@@ -389,9 +389,7 @@ v2f_img vert_img(appdata_img v) {
 #if defined(POINT) || defined(SPOT) || defined(DIRECTIONAL) || defined(POINT_COOKIE) || defined(DIRECTIONAL_COOKIE)
 #define USING_LIGHT_MULTI_COMPILE
 #endif
-#if defined(DIRECTIONAL) || defined(DIRECTIONAL_COOKIE)
-#define USING_DIRECTIONAL_LIGHT
-#endif
+// USING_DIRECTIONAL_LIGHT: UnityShaderVariables.cginc.
 
 // Alpha of opaque passes: forced to 1 (the framebuffer alpha stays meaningful).
 #define UNITY_OPAQUE_ALPHA(outputAlpha) outputAlpha = 1.0
