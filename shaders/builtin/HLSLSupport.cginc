@@ -144,6 +144,8 @@
 // More texture macros, D3D11-style like those above.
 #define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
 #define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
+// A reflection probe's cube at a given mip level.
+#define SampleCubeReflection(env, dir, lod) UNITY_SAMPLE_TEXCUBE_LOD(env, dir, lod)
 #define UNITY_SAMPLE_TEX2D_BIAS(tex, coord, bias) tex.SampleBias(sampler##tex, coord, bias)
 #define UNITY_SAMPLE_TEXCUBE_BIAS(tex, coord, bias) tex.SampleBias(sampler##tex, coord, bias)
 #define UNITY_PASS_TEX2D(tex) tex, sampler##tex
