@@ -8,6 +8,7 @@
 #define UNITY_STANDARD_BRDF_INCLUDED
 
 #include "UnityCG.cginc"
+#include "UnityStandardConfig.cginc"
 #include "UnityStandardUtils.cginc"
 #include "UnityLightingCommon.cginc"
 
