@@ -23,6 +23,8 @@
 // Normal maps are plain RGB (xyz*0.5+0.5), not DXT5nm-swizzled.
 #define UNITY_NO_DXT5nm 1
 #define UNITY_ALLOWED_MRT_COUNT 8
+// Vulkan has hull and domain stages (a program still needs `#pragma target 4.6` to use them).
+#define UNITY_CAN_COMPILE_TESSELLATION 1
 #define UNITY_SUPPORT_DEPTH_FETCH 1
 #define UNITY_SAMPLE_FULL_SH_PER_PIXEL 0
 // The falloff lookup stores attenuation in the red channel (docs/LIGHTING.md §4).
