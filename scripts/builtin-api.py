@@ -247,6 +247,9 @@ class Source:
                 self.variables.add(ids[-1])
 
     def block(self, kind, header, body, cond):
+        if header.rstrip().endswith("="):  # an initialiser list: `static const float3x3 M = {..}`
+            self.statement(header.rstrip()[:-1])
+            return
         m = re.fullmatch(r"(?:typedef\s+)?struct\s+(\w+)", header)
         if m:
             self.structs[m.group(1)] = body
