@@ -112,5 +112,15 @@ inline UnityGI UnityGlobalIllumination(UnityGIInput data, half occlusion, half3 
     o_gi.indirect.specular = UnityGI_IndirectSpecular(data, occlusion, glossIn);
     return o_gi;
 }
+// Unity 5.x signatures: the reflection lookup set up from the smoothness (roughness 1 - s, the
+// view reflected about the normal); without |reflections|, diffuse GI only (specular black).
+inline UnityGI UnityGlobalIllumination(UnityGIInput data, half occlusion, half smoothness, half3 normalWorld, bool reflections) {
+    if (!reflections) return UnityGI_Base(data, occlusion, normalWorld);
+    Unity_GlossyEnvironmentData g = UnityGlossyEnvironmentSetup(smoothness, data.worldViewDir, normalWorld, half3(0, 0, 0));
+    return UnityGlobalIllumination(data, occlusion, normalWorld, g);
+}
+inline UnityGI UnityGlobalIllumination(UnityGIInput data, half occlusion, half smoothness, half3 normalWorld) {
+    return UnityGlobalIllumination(data, occlusion, smoothness, normalWorld, true);
+}
 
 #endif // UNITY_GLOBAL_ILLUMINATION_INCLUDED
