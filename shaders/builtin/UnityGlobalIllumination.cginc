@@ -24,14 +24,7 @@ inline void ResetUnityGI(out UnityGI outGI) {
     outGI.indirect.specular = 0;
 }
 
-// Baked shadow mask of this light (LIGHTMAP_ON + SHADOWS_SHADOWMASK), 1 when there is none.
-inline fixed UnitySampleBakedOcclusion(float2 lightmapUV, float3 worldPos) {
-#if defined(SHADOWS_SHADOWMASK) && defined(LIGHTMAP_ON)
-    return saturate(dot(UNITY_SAMPLE_TEX2D(unity_ShadowMask, lightmapUV), unity_OcclusionMaskSelector));
-#else
-    return 1.0;
-#endif
-}
+// UnitySampleBakedOcclusion: UnityShadowLibrary.cginc (as in Unity).
 
 // Diffuse GI: light colour * atten; SH (per pixel, plus data.ambient) when the pass samples SH;
 // baked and realtime lightmaps when their keywords are on; everything times occlusion.
