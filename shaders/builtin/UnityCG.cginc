@@ -201,6 +201,9 @@ half3 SHEvalLinearL0L1(half4 normal) {
     x.b = dot(unity_SHAb, normal);
     return x;
 }
+// Light probe proxy volumes: varc has none (UNITY_LIGHT_PROBE_PROXY_VOLUME stays undefined, the
+// runtime leaves unity_ProbeVolumeParams zero), so the volume's L0/L1 is the draw's own probe SH.
+half3 SHEvalLinearL0L1_SampleProbeVolume(half4 normal, float3 worldPos) { return SHEvalLinearL0L1(normal); }
 half3 SHEvalLinearL2(half4 normal) {
     half4 vB = normal.xyzz * normal.yzzx;   // (xy, yz, zz, zx)
     half3 x1;

@@ -177,6 +177,8 @@ inline fixed4 UnityGetRawBakedOcclusions(float2 lightmapUV, float3 worldPos) {
     return fixed4(1, 1, 1, 1);
 #endif
 }
+// Without light probe proxy volumes (none in varc) a probe-lit object's occlusion is its probe's.
+half4 LPPV_SampleProbeOcclusion(float3 worldPos) { return unity_ProbesOcclusion; }
 inline fixed UnitySampleBakedOcclusion(float2 lightmapUV, float3 worldPos) {
 #if defined(SHADOWS_SHADOWMASK) && defined(LIGHTMAP_ON)
     return saturate(dot(UNITY_SAMPLE_TEX2D(unity_ShadowMask, lightmapUV), unity_OcclusionMaskSelector));
