@@ -139,4 +139,29 @@
 #define UNITY_LIGHTING_COORDS(idx1, idx2) DECLARE_LIGHT_COORDS(idx1) UNITY_SHADOW_COORDS(idx2)
 #define UNITY_TRANSFER_LIGHTING(a, coord) COMPUTE_LIGHT_COORDS(a) UNITY_TRANSFER_SHADOW(a, coord)
 
+// More of the light and shadow plumbing (issue #27).
+// The w of a shadow coordinate as interpolated (no platform rescales it here).
+#define UNITY_SHADOW_W(_w) _w
+// The shadow coordinate from a world position instead of the vertex input `v` (2021.3+).
+#if defined(SHADOWS_SCREEN)
+    #define TRANSFER_SHADOW_WPOS(a, wpos) TRANSFER_SHADOW(a)
+#elif defined(SHADOWS_DEPTH) && defined(SPOT)
+    #define TRANSFER_SHADOW_WPOS(a, wpos) a._ShadowCoord = mul(unity_WorldToShadow[0], unityShadowCoord4((wpos).xyz, 1));
+#elif defined(SHADOWS_CUBE)
+    #define TRANSFER_SHADOW_WPOS(a, wpos) a._ShadowCoord.xyz = (wpos).xyz - _LightPositionRange.xyz;
+#else
+    #define TRANSFER_SHADOW_WPOS(a, wpos)
+#endif
+// `lightCoord`: the light-space coordinate of |worldPos| for the variant's light type, as the
+// attenuation of that type reads it (none for a directional light without cookie).
+#if defined(POINT) || defined(POINT_COOKIE)
+    #define DECLARE_LIGHT_COORD(input, worldPos) unityShadowCoord3 lightCoord = mul(unity_WorldToLight, unityShadowCoord4(worldPos, 1)).xyz
+#elif defined(SPOT)
+    #define DECLARE_LIGHT_COORD(input, worldPos) unityShadowCoord4 lightCoord = mul(unity_WorldToLight, unityShadowCoord4(worldPos, 1))
+#elif defined(DIRECTIONAL_COOKIE)
+    #define DECLARE_LIGHT_COORD(input, worldPos) unityShadowCoord2 lightCoord = mul(unity_WorldToLight, unityShadowCoord4(worldPos, 1)).xy
+#else
+    #define DECLARE_LIGHT_COORD(input, worldPos)
+#endif
+
 #endif // AUTOLIGHT_INCLUDED

@@ -23,6 +23,8 @@
 // Normal maps are plain RGB (xyz*0.5+0.5), not DXT5nm-swizzled.
 #define UNITY_NO_DXT5nm 1
 #define UNITY_ALLOWED_MRT_COUNT 8
+// Vulkan has hull and domain stages (a program still needs `#pragma target 4.6` to use them).
+#define UNITY_CAN_COMPILE_TESSELLATION 1
 #define UNITY_SUPPORT_DEPTH_FETCH 1
 #define UNITY_SAMPLE_FULL_SH_PER_PIXEL 0
 // The falloff lookup stores attenuation in the red channel (docs/LIGHTING.md §4).
@@ -49,6 +51,18 @@
 #define samplerCUBE_float samplerCUBE
 #define sampler3D_half sampler3D
 #define sampler3D_float sampler3D
+// Unity 2022.3's short spellings (its DXC path makes each a struct of texture and sampler; with
+// glslang's DX9-style sampler types and tex* intrinsics they are the plain sampler types).
+#define sampler1D_half sampler1D
+#define sampler1D_float sampler1D
+#define sampler1D_h sampler1D
+#define sampler1D_f sampler1D
+#define sampler2D_h sampler2D
+#define sampler2D_f sampler2D
+#define sampler3D_h sampler3D
+#define sampler3D_f sampler3D
+#define samplerCUBE_h samplerCUBE
+#define samplerCUBE_f samplerCUBE
 
 // Shadow coordinates are always full precision.
 #define unityShadowCoord float
@@ -132,6 +146,8 @@
 // More texture macros, D3D11-style like those above.
 #define UNITY_SAMPLE_TEX2D_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
 #define UNITY_SAMPLE_TEXCUBE_SAMPLER_LOD(tex, samplertex, coord, lod) tex.SampleLevel(sampler##samplertex, coord, lod)
+// A reflection probe's cube at a given mip level.
+#define SampleCubeReflection(env, dir, lod) UNITY_SAMPLE_TEXCUBE_LOD(env, dir, lod)
 #define UNITY_SAMPLE_TEX2D_BIAS(tex, coord, bias) tex.SampleBias(sampler##tex, coord, bias)
 #define UNITY_SAMPLE_TEXCUBE_BIAS(tex, coord, bias) tex.SampleBias(sampler##tex, coord, bias)
 #define UNITY_PASS_TEX2D(tex) tex, sampler##tex
@@ -205,6 +221,31 @@
 #define UNITY_SAMPLE_DEPTH(value) ((value).r)
 #define SAMPLE_DEPTH_CUBE_TEXTURE(sampler, uv) (texCUBE(sampler, uv).r)
 #define UNITY_SAMPLE_TEXCUBE_SHADOW(tex, coord) ((((coord).w) <= texCUBElod(tex, float4((coord).xyz, 0)).r) ? 1.0 : 0.0)
+
+// ---------------------------------------------------------------------------------------------
+// DX9-style sampling glslang lacks. glslang's HLSL front end provides tex1D/tex2D/tex3D/texCUBE
+// and their bias, lod, grad and 4-component proj forms itself (docs/BUILTIN_API.md counts those
+// rows as native); these add the projective forms it does not have, with Cg's meaning.
+// ---------------------------------------------------------------------------------------------
+// The 3-component tex2Dproj (xy / z) and 2-component tex1Dproj (x / y). A user overload would
+// also capture float4 arguments (glslang prefers truncating to it over its intrinsic), so these
+// macros instead widen the coordinate to the intrinsic's float4 form (divisor in w); a float4
+// passes through unchanged and compiles exactly as before.
+float4 VarcProjCoord2D(float3 t) { return float4(t.xy, 0.0, t.z); }
+float4 VarcProjCoord2D(float4 t) { return t; }
+float4 VarcProjCoord1D(float2 t) { return float4(t.x, 0.0, 0.0, t.y); }
+float4 VarcProjCoord1D(float4 t) { return t; }
+#define tex2Dproj(s, t) tex2Dproj(s, VarcProjCoord2D(t))
+#define tex1Dproj(s, t) tex1Dproj(s, VarcProjCoord1D(t))
+// glslang's own texCUBEproj emits a projective cube sample, which SPIR-V forbids: the
+// direction t.xyz / t.w is sampled instead (a positive w does not change the direction).
+#define texCUBEproj(s, t) texCUBE(s, (t).xyz / (t).w)
+// Shadow-map compares in the style of UNITY_SAMPLE_SHADOW (plain depth texture, no comparison
+// sampler; 1 = lit): (u, v, depth) for a float3, projected by w for a float4.
+half4 tex2DprojShadow(sampler2D s, in float3 t) {
+    return (t.z <= tex2Dlod(s, float4(t.xy, 0, 0)).r) ? 1.0 : 0.0;
+}
+half4 tex2DprojShadow(sampler2D s, in float4 t) { return tex2DprojShadow(s, t.xyz / t.w); }
 
 // Uniform blocks: Unity's global-block and explicit-binding spellings. Bindings are assigned by
 // varc (docs/SHADER_ABI.md §1), so Set and Binding are ignored.

@@ -9,6 +9,15 @@
 #include "UnityLightingCommon.cginc"
 #include "UnityCG.cginc"
 #include "UnityGlobalIllumination.cginc" // UnityGIInput, UnityGlobalIllumination (added for third-party shaders)
+#include "UnityGBuffer.cginc"
+
+// The patch-constant output of tessellated surface shaders: three edge factors and one inside.
+#ifdef UNITY_CAN_COMPILE_TESSELLATION
+struct UnityTessellationFactors {
+    float edge[3] : SV_TessFactor;
+    float inside : SV_InsideTessFactor;
+};
+#endif
 
 struct SurfaceOutput {
     fixed3 Albedo;

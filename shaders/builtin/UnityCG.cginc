@@ -201,6 +201,9 @@ half3 SHEvalLinearL0L1(half4 normal) {
     x.b = dot(unity_SHAb, normal);
     return x;
 }
+// Light probe proxy volumes: varc has none (UNITY_LIGHT_PROBE_PROXY_VOLUME stays undefined, the
+// runtime leaves unity_ProbeVolumeParams zero), so the volume's L0/L1 is the draw's own probe SH.
+half3 SHEvalLinearL0L1_SampleProbeVolume(half4 normal, float3 worldPos) { return SHEvalLinearL0L1(normal); }
 half3 SHEvalLinearL2(half4 normal) {
     half4 vB = normal.xyzz * normal.yzzx;   // (xy, yz, zz, zx)
     half3 x1;
@@ -331,6 +334,8 @@ float4 UnityApplyLinearShadowBias(float4 clipPos) {
 #define V2F_SHADOW_CASTER V2F_SHADOW_CASTER_NOPOS float4 pos : SV_POSITION
 #define TRANSFER_SHADOW_CASTER(o) TRANSFER_SHADOW_CASTER_NOPOS(o, o.pos)
 #define TRANSFER_SHADOW_CASTER_NORMALOFFSET(o) TRANSFER_SHADOW_CASTER_NOPOS(o, o.pos)
+// Unity's pre-normal-offset spelling: the same caster position here (the bias is applied alike).
+#define TRANSFER_SHADOW_CASTER_NOPOS_LEGACY(o, opos) TRANSFER_SHADOW_CASTER_NOPOS(o, opos)
 
 // ---------------------------------------------------------------------------------------------
 // Fog (docs/LIGHTING.md §7). The fog coordinate is the eye depth (clip w) in world units.
@@ -351,13 +356,18 @@ float4 UnityApplyLinearShadowBias(float4 clipPos) {
 #endif
 #define UNITY_CALC_FOG_FACTOR(coord) UNITY_CALC_FOG_FACTOR_RAW(coord)
 #if defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2)
-    #define UNITY_FOG_COORDS(idx) float1 fogCoord : TEXCOORD##idx;
+    #define UNITY_FOG_COORDS_PACKED(idx, vectype) vectype fogCoord : TEXCOORD##idx;
+    #define UNITY_FOG_COORDS(idx) UNITY_FOG_COORDS_PACKED(idx, float1)
+    // Generated surface code reads the fog coordinate into a local, then UNITY_APPLY_FOG(s it.
+    #define UNITY_EXTRACT_FOG(name) float _unity_fogCoord = name.fogCoord
     // glslang treats float1 as a scalar, whose .x is not assignable: assign the whole member.
     #define UNITY_TRANSFER_FOG(o, outpos) o.fogCoord = (outpos).w
     #define UNITY_FOG_LERP_COLOR(col, fogCol, fogFac) col.rgb = lerp((fogCol).rgb, (col).rgb, saturate(fogFac))
     #define UNITY_APPLY_FOG_COLOR(coord, col, fogCol) { UNITY_CALC_FOG_FACTOR((coord).x); UNITY_FOG_LERP_COLOR(col, fogCol, unityFogFactor); }
 #else
+    #define UNITY_FOG_COORDS_PACKED(idx, vectype)
     #define UNITY_FOG_COORDS(idx)
+    #define UNITY_EXTRACT_FOG(name)
     #define UNITY_TRANSFER_FOG(o, outpos)
     #define UNITY_APPLY_FOG_COLOR(coord, col, fogCol)
 #endif
@@ -373,12 +383,28 @@ float4 UnityApplyLinearShadowBias(float4 clipPos) {
 struct v2f_img {
     float4 pos : SV_POSITION;
     half2 uv : TEXCOORD0;
+    UNITY_VERTEX_INPUT_INSTANCE_ID
+    UNITY_VERTEX_OUTPUT_STEREO
 };
 v2f_img vert_img(appdata_img v) {
     v2f_img o;
+    UNITY_SETUP_INSTANCE_ID(v);
+    UNITY_TRANSFER_INSTANCE_ID(v, o);
     o.pos = UnityObjectToClipPos(v.vertex);
     o.uv = v.texcoord;
     return o;
+}
+
+// The legacy vertex-lit interpolants and their combine: texture * per-vertex diffuse plus
+// per-vertex specular masked by the texture's alpha (gloss); alpha = texture * diffuse alpha.
+struct v2f_vertex_lit {
+    float2 uv : TEXCOORD0;
+    fixed4 diff : COLOR0;
+    fixed4 spec : COLOR1;
+};
+inline fixed4 VertexLight(v2f_vertex_lit i, sampler2D mainTex) {
+    fixed4 texel = tex2D(mainTex, i.uv);
+    return fixed4(texel.rgb * i.diff.rgb + i.spec.rgb * texel.a, texel.a * i.diff.a);
 }
 
 // =============================================================================================
@@ -389,9 +415,10 @@ v2f_img vert_img(appdata_img v) {
 #if defined(POINT) || defined(SPOT) || defined(DIRECTIONAL) || defined(POINT_COOKIE) || defined(DIRECTIONAL_COOKIE)
 #define USING_LIGHT_MULTI_COMPILE
 #endif
-#if defined(DIRECTIONAL) || defined(DIRECTIONAL_COOKIE)
-#define USING_DIRECTIONAL_LIGHT
-#endif
+// USING_DIRECTIONAL_LIGHT: UnityShaderVariables.cginc.
+
+// Unity 4's texture-matrix transform of the vertex input `v`'s first uv (identity matrices).
+#define TRANSFORM_UV(idx) mul(UNITY_MATRIX_TEXTURE##idx, v.texcoord).xy
 
 // Alpha of opaque passes: forced to 1 (the framebuffer alpha stays meaningful).
 #define UNITY_OPAQUE_ALPHA(outputAlpha) outputAlpha = 1.0
@@ -468,6 +495,16 @@ inline float4 UnityStereoScreenSpaceUVAdjust(float4 uv, float4 scaleAndOffset) {
 inline float2 UnityStereoTransformScreenSpaceTex(float2 uv) { return uv; }
 inline float4 UnityStereoTransformScreenSpaceTex(float4 uv) { return uv; }
 inline float2 UnityStereoClamp(float2 uv) { return uv; }
+inline float2 UnityStereoClamp(float2 uv, float4 scaleAndOffset) { return uv; }
+// The adjustment itself, which Unity applies only in single-pass stereo: uv * scale + offset
+// (for a float4, to both halves).
+inline float2 UnityStereoScreenSpaceUVAdjustInternal(float2 uv, float4 scaleAndOffset) {
+    return uv * scaleAndOffset.xy + scaleAndOffset.zw;
+}
+inline float4 UnityStereoScreenSpaceUVAdjustInternal(float4 uv, float4 scaleAndOffset) {
+    return float4(UnityStereoScreenSpaceUVAdjustInternal(uv.xy, scaleAndOffset),
+                  UnityStereoScreenSpaceUVAdjustInternal(uv.zw, scaleAndOffset));
+}
 #define UnityStereoClampScaleOffset(uv, scaleAndOffset) (uv)
 #define TRANSFORM_TEX_STEREO(tex, name) TRANSFORM_TEX(tex, name)
 #define UNITY_DECLARE_SCREENSPACE_SHADOWMAP_STEREO(tex) UNITY_DECLARE_SCREENSPACE_SHADOWMAP(tex)
@@ -489,6 +526,12 @@ void UnityApplyDitherCrossFade(float2 vpos) {
     clip(fade >= 0 ? fade - threshold : threshold + fade);
 }
 #define UNITY_APPLY_DITHER_CROSSFADE(vpos) UnityApplyDitherCrossFade((vpos).xy)
+// Unity 5.6's pair: the projective screen position (x, y, w) from the vertex stage, and the
+// same dither at the pixel it projects to (no dither-mask texture here: the Bayer matrix above).
+half3 ComputeDitherScreenPos(float4 hPos) { return ComputeScreenPos(hPos).xyw; }
+void ApplyDitherCrossFade(half3 ditherScreenPos) {
+    UnityApplyDitherCrossFade(ditherScreenPos.xy / ditherScreenPos.z * _ScreenParams.xy);
+}
 #else
 #define UNITY_APPLY_DITHER_CROSSFADE(vpos)
 #endif

@@ -24,14 +24,7 @@ inline void ResetUnityGI(out UnityGI outGI) {
     outGI.indirect.specular = 0;
 }
 
-// Baked shadow mask of this light (LIGHTMAP_ON + SHADOWS_SHADOWMASK), 1 when there is none.
-inline fixed UnitySampleBakedOcclusion(float2 lightmapUV, float3 worldPos) {
-#if defined(SHADOWS_SHADOWMASK) && defined(LIGHTMAP_ON)
-    return saturate(dot(UNITY_SAMPLE_TEX2D(unity_ShadowMask, lightmapUV), unity_OcclusionMaskSelector));
-#else
-    return 1.0;
-#endif
-}
+// UnitySampleBakedOcclusion: UnityShadowLibrary.cginc (as in Unity).
 
 // Diffuse GI: light colour * atten; SH (per pixel, plus data.ambient) when the pass samples SH;
 // baked and realtime lightmaps when their keywords are on; everything times occlusion.
@@ -111,6 +104,16 @@ inline UnityGI UnityGlobalIllumination(UnityGIInput data, half occlusion, half3 
     UnityGI o_gi = UnityGI_Base(data, occlusion, normalWorld);
     o_gi.indirect.specular = UnityGI_IndirectSpecular(data, occlusion, glossIn);
     return o_gi;
+}
+// Unity 5.x signatures: the reflection lookup set up from the smoothness (roughness 1 - s, the
+// view reflected about the normal); without |reflections|, diffuse GI only (specular black).
+inline UnityGI UnityGlobalIllumination(UnityGIInput data, half occlusion, half smoothness, half3 normalWorld, bool reflections) {
+    if (!reflections) return UnityGI_Base(data, occlusion, normalWorld);
+    Unity_GlossyEnvironmentData g = UnityGlossyEnvironmentSetup(smoothness, data.worldViewDir, normalWorld, half3(0, 0, 0));
+    return UnityGlobalIllumination(data, occlusion, normalWorld, g);
+}
+inline UnityGI UnityGlobalIllumination(UnityGIInput data, half occlusion, half smoothness, half3 normalWorld) {
+    return UnityGlobalIllumination(data, occlusion, smoothness, normalWorld, true);
 }
 
 #endif // UNITY_GLOBAL_ILLUMINATION_INCLUDED

@@ -14,6 +14,20 @@
 #define UNITY_SPECCUBE_LOD_STEPS (6)
 #endif
 
+// Sampling helpers for importance-sampled reference integrals (issue #27): the bit-reversed
+// radical inverse (van der Corput sequence), the Hammersley point i of n, and an orthonormal
+// frame (tangentX, tangentY, N) around a unit normal.
+uint ReverseBits32(uint bits) { return reversebits(bits); }
+float RadicalInverse_VdC(uint bits) { return float(ReverseBits32(bits)) * 2.3283064365386963e-10; } // / 2^32
+float2 Hammersley2d(uint i, uint maxSampleCount) {
+    return float2(float(i) / float(maxSampleCount), RadicalInverse_VdC(i));
+}
+void GetLocalFrame(float3 N, out float3 tangentX, out float3 tangentY) {
+    float3 up = abs(N.z) < 0.999 ? float3(0, 0, 1) : float3(1, 0, 0);
+    tangentX = normalize(cross(up, N));
+    tangentY = cross(N, tangentX);
+}
+
 struct Unity_GlossyEnvironmentData {
     half roughness;   // perceptual roughness (1 - smoothness)
     half3 reflUVW;    // lookup direction (reflected view vector, world space)

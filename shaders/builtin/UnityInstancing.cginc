@@ -27,4 +27,43 @@
     #define UnityObjectToClipPos UnityObjectToClipPosInstanced
 #endif
 
+// ---------------------------------------------------------------------------------------------
+// More of Unity's instancing API (issue #27, docs/BUILTIN_API.md).
+// ---------------------------------------------------------------------------------------------
+// Unity 5.6's spelling of the per-instance block, and the plain block of 2017.4+.
+#define UNITY_INSTANCING_CBUFFER_START(name) UNITY_INSTANCING_BUFFER_START(name)
+#define UNITY_INSTANCING_CBUFFER_END CBUFFER_END
+#define UNITY_INSTANCING_CBUFFER_SCOPE_BEGIN(name) CBUFFER_START(name)
+#define UNITY_INSTANCING_CBUFFER_SCOPE_END CBUFFER_END
+// Unity 2020.3 merges its built-in per-instance blocks; here each property is its own array.
+#define UNITY_ACCESS_MERGED_INSTANCED_PROP(arr, var) UNITY_ACCESS_INSTANCED_PROP(arr, var)
+
+// The DEFAULT_ spellings Unity keeps so that a shader may redefine the plain ones.
+#define DEFAULT_UNITY_SETUP_INSTANCE_ID(input) UNITY_SETUP_INSTANCE_ID(input)
+#define DEFAULT_UNITY_VERTEX_OUTPUT_STEREO UNITY_VERTEX_OUTPUT_STEREO
+#define DEFAULT_UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(output) UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(output)
+#define DEFAULT_UNITY_TRANSFER_VERTEX_OUTPUT_STEREO(input, output) UNITY_TRANSFER_VERTEX_OUTPUT_STEREO(input, output)
+#define DEFAULT_UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX(input) UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX(input)
+// One eye per pass (no single-pass stereo): the eye-index plumbing is empty, as the stereo
+// macros of VarcInstancing.hlsl.
+#define UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX
+#define UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
+#define DEFAULT_UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX UNITY_VERTEX_OUTPUT_STEREO_EYE_INDEX
+#define DEFAULT_UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output) UNITY_INITIALIZE_OUTPUT_STEREO_EYE_INDEX(output)
+
+#if defined(UNITY_INSTANCING_ENABLED)
+    // The runtime draws every instanced batch with firstInstance = 0, so SV_InstanceID is
+    // already the index into the per-instance arrays.
+    static const int unity_BaseInstanceID = 0;
+    void UnitySetupInstanceID(uint inputInstanceID) { unity_InstanceID = inputInstanceID + unity_BaseInstanceID; }
+    // The compound matrices: UNITY_MATRIX_MVP & co. (UnityShaderVariables.cginc) are computed
+    // where they are used, from the instance's unity_ObjectToWorld defined above, so there is
+    // nothing to precompute; the _Instanced names are those same expressions.
+    void UnitySetupCompoundMatrices() {}
+    #define unity_MatrixMVP_Instanced UNITY_MATRIX_MVP
+    #define unity_MatrixMV_Instanced UNITY_MATRIX_MV
+    #define unity_MatrixTMV_Instanced UNITY_MATRIX_T_MV
+    #define unity_MatrixITMV_Instanced UNITY_MATRIX_IT_MV
+#endif
+
 #endif // UNITY_INSTANCING_INCLUDED

@@ -202,6 +202,64 @@ static const int unity_StereoEyeIndex = 0;
 #define unity_LightColor2 unity_LightColor[2]
 #define unity_LightColor3 unity_LightColor[3]
 
+// ---------------------------------------------------------------------------------------------
+// More of Unity's variables (issue #27, docs/BUILTIN_API.md).
+// ---------------------------------------------------------------------------------------------
+// Set when the variant renders a directional light (forward passes' light keywords).
+#if defined(DIRECTIONAL) || defined(DIRECTIONAL_COOKIE)
+#define USING_DIRECTIONAL_LIGHT
+#endif
+// Fixed-function texture matrices: the identity since Unity 5.
+#define UNITY_MATRIX_TEXTURE0 float4x4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1)
+#define UNITY_MATRIX_TEXTURE1 UNITY_MATRIX_TEXTURE0
+#define UNITY_MATRIX_TEXTURE2 UNITY_MATRIX_TEXTURE0
+#define UNITY_MATRIX_TEXTURE3 UNITY_MATRIX_TEXTURE0
+#define glstate_matrix_transpose_modelview0 UNITY_MATRIX_T_MV
+
+// Light probe proxy volumes: varc has none, so UNITY_LIGHT_PROBE_PROXY_VOLUME stays undefined
+// and the runtime leaves this block zero (unity_ProbeVolumeParams.x = 0: "use the SH probes").
+// Declared so that shaders sampling a volume where Unity would still compile.
+UNITY_DECLARE_TEX3D_FLOAT(unity_ProbeVolumeSH);
+CBUFFER_START(UnityProbeVolume)
+    float4 unity_ProbeVolumeParams;       // (enabled, 1 = global space, texel size x, 0)
+    float4x4 unity_ProbeVolumeWorldToObject;
+    float3 unity_ProbeVolumeSizeInv;
+    float3 unity_ProbeVolumeMin;
+CBUFFER_END
+
+// The legacy shadow colour of Unity 4 (unused by the built-in pipeline since; zero here).
+CBUFFER_START(UnityLegacyShadowColor)
+    fixed4 unity_ShadowColor;
+CBUFFER_END
+
+// Single-pass stereo matrices, declared where Unity declares them (USING_STEREO_MATRICES: a
+// variant with UNITY_SINGLE_PASS_STEREO or stereo instancing/multiview). varc renders one eye
+// per pass and its runtime does not fill this block: such variants compile, with eye 0's values
+// expected in the mono variables above.
+#if defined(UNITY_SINGLE_PASS_STEREO) || defined(UNITY_STEREO_INSTANCING_ENABLED) || defined(UNITY_STEREO_MULTIVIEW_ENABLED)
+#define USING_STEREO_MATRICES
+#endif
+#if defined(USING_STEREO_MATRICES)
+CBUFFER_START(UnityStereoGlobals)
+    float4x4 unity_StereoMatrixP[2];
+    float4x4 unity_StereoMatrixV[2];
+    float4x4 unity_StereoMatrixInvV[2];
+    float4x4 unity_StereoMatrixVP[2];
+    float4x4 unity_StereoCameraProjection[2];
+    float4x4 unity_StereoCameraInvProjection[2];
+    float4x4 unity_StereoWorldToCamera[2];
+    float4x4 unity_StereoCameraToWorld[2];
+    float3 unity_StereoWorldSpaceCameraPos[2];
+    float4 unity_StereoScaleOffset[2];
+CBUFFER_END
+CBUFFER_START(UnityStereoEyeIndices)
+    float4 unity_StereoEyeIndices[2];
+CBUFFER_END
+CBUFFER_START(UnityStereoSeparation)
+    float4 unity_HalfStereoSeparation;   // Unity 2018.4+: half the eye separation, for effects
+CBUFFER_END
+#endif
+
 // UnityObjectToClipPos for programs that include nothing else (as in Unity).
 #include "UnityShaderUtilities.cginc"
 

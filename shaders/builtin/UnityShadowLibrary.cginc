@@ -167,4 +167,24 @@ float3 UnityCombineShadowcoordComponents(float2 baseUV, float2 deltaUV, float de
     return float3(baseUV + deltaUV, depth + dot(deltaUV, receiverPlaneDepthBias.xy));
 }
 
+// Baked shadow mask (LIGHTMAP_ON + SHADOWS_SHADOWMASK): all four channels, and this light's
+// channel (unity_OcclusionMaskSelector); 1 when there is none. worldPos is for light probe
+// proxy volumes, which varc does not have.
+inline fixed4 UnityGetRawBakedOcclusions(float2 lightmapUV, float3 worldPos) {
+#if defined(SHADOWS_SHADOWMASK) && defined(LIGHTMAP_ON)
+    return UNITY_SAMPLE_TEX2D(unity_ShadowMask, lightmapUV);
+#else
+    return fixed4(1, 1, 1, 1);
+#endif
+}
+// Without light probe proxy volumes (none in varc) a probe-lit object's occlusion is its probe's.
+half4 LPPV_SampleProbeOcclusion(float3 worldPos) { return unity_ProbesOcclusion; }
+inline fixed UnitySampleBakedOcclusion(float2 lightmapUV, float3 worldPos) {
+#if defined(SHADOWS_SHADOWMASK) && defined(LIGHTMAP_ON)
+    return saturate(dot(UNITY_SAMPLE_TEX2D(unity_ShadowMask, lightmapUV), unity_OcclusionMaskSelector));
+#else
+    return 1.0;
+#endif
+}
+
 #endif // UNITY_BUILTIN_SHADOW_LIBRARY_INCLUDED

@@ -8,6 +8,7 @@
 #define UNITY_STANDARD_BRDF_INCLUDED
 
 #include "UnityCG.cginc"
+#include "UnityStandardConfig.cginc"
 #include "UnityStandardUtils.cginc"
 #include "UnityLightingCommon.cginc"
 
@@ -16,6 +17,12 @@
 // ---------------------------------------------------------------------------------------------
 inline half Pow4(half x) { return x * x * x * x; }
 inline half Pow5(half x) { return x * x * x * x * x; }
+inline float2 Pow4(float2 x) { return x * x * x * x; }
+inline half3 Pow4(half3 x) { return x * x * x * x; }
+inline half4 Pow4(half4 x) { return x * x * x * x; }
+inline half2 Pow5(half2 x) { return x * x * x * x * x; }
+inline half3 Pow5(half3 x) { return x * x * x * x * x; }
+inline half4 Pow5(half4 x) { return x * x * x * x * x; }
 inline half DotClamped(half3 a, half3 b) { return max(0.0h, dot(a, b)); }
 inline half LambertTerm(half3 normal, half3 lightDir) { return DotClamped(normal, lightDir); }
 inline half BlinnTerm(half3 normal, half3 halfDir) { return DotClamped(normal, halfDir); }
@@ -68,6 +75,31 @@ inline float GGXTerm(float NdotH, float roughness) {
 // ---------------------------------------------------------------------------------------------
 // The BRDF (docs/LIGHTING.md §2). Returns (rgb, 1).
 // ---------------------------------------------------------------------------------------------
+// Older BRDF terms (issue #27) some custom lighting functions call, with their textbook meaning.
+// Schlick's Smith visibility 1 / (G1(NdotL) * G1(NdotV)), G1(x) = x (1 - k) + k, without the
+// 1/4 (1e-5 keeps the grazing limit finite).
+inline half SmithVisibilityTerm(half NdotL, half NdotV, half k) {
+    half gL = NdotL * (1 - k) + k;
+    half gV = NdotV * (1 - k) + k;
+    return 1.0 / (gL * gV + 1e-5f);
+}
+// The same for a Beckmann distribution: k = roughness * sqrt(2 / pi), and the 1/4 included.
+inline half SmithBeckmannVisibilityTerm(half NdotL, half NdotV, half roughness) {
+    return SmithVisibilityTerm(NdotL, NdotV, roughness * 0.797884560802865) * 0.25;
+}
+// Energy-normalised Blinn-Phong lobe: (n + 2) / (2 pi) * NdotH^n.
+inline half NDFBlinnPhongNormalizedTerm(half NdotH, half n) {
+    return (n + 2.0) * (0.5 / UNITY_PI) * pow(NdotH, n);
+}
+// The Blinn-Phong exponent equivalent to a roughness: n = 2 / roughness^2 - 2 (both >= 1e-4).
+inline half PerceptualRoughnessToSpecPower(half perceptualRoughness) {
+    half m = PerceptualRoughnessToRoughness(perceptualRoughness);
+    half sq = max(1e-4f, m * m);
+    return max(2.0 / sq - 2.0, 1e-4f);
+}
+// A cheaper Fresnel blend: the fourth power of (1 - cosA) instead of Schlick's fifth.
+inline half3 FresnelLerpFast(half3 F0, half3 F90, half cosA) { return lerp(F0, F90, Pow4(1 - cosA)); }
+
 half4 BRDF1_Unity_PBS(half3 diffColor, half3 specColor, half oneMinusReflectivity, half smoothness,
                       float3 normal, float3 viewDir, UnityLight light, UnityIndirect gi)
 {

@@ -22,4 +22,24 @@
 #define UNITY_REQUIRE_FRAG_WORLDPOS 1
 #endif
 
+// What varc's Standard code does, under Unity's switch names (issue #27): energy conservation
+// by the specular colour's largest component (UnityStandardUtils.cginc), the tangent frame used
+// as interpolated (not re-orthonormalised), six mip steps of reflection-probe roughness
+// (UnityImageBasedLighting.cginc) and the ambient SH split between vertex and pixel.
+#ifndef UNITY_CONSERVE_ENERGY
+#define UNITY_CONSERVE_ENERGY 1
+#endif
+#ifndef UNITY_CONSERVE_ENERGY_MONOCHROME
+#define UNITY_CONSERVE_ENERGY_MONOCHROME 1
+#endif
+#ifndef UNITY_TANGENT_ORTHONORMALIZE
+#define UNITY_TANGENT_ORTHONORMALIZE 0
+#endif
+#ifndef UNITY_SPECCUBE_LOD_STEPS
+#define UNITY_SPECCUBE_LOD_STEPS (6)
+#endif
+#ifndef UNITY_SAMPLE_FULL_SH_PER_PIXEL
+#define UNITY_SAMPLE_FULL_SH_PER_PIXEL 0
+#endif
+
 #endif // UNITY_STANDARD_CONFIG_INCLUDED

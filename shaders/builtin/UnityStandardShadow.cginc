@@ -71,6 +71,14 @@ half ShadowCasterAlpha(float2 uv) {
     return alpha;
 }
 
+// The stereo eye index of the caster (empty: one eye per pass).
+struct VertexOutputStereoShadowCaster {
+    UNITY_VERTEX_OUTPUT_STEREO
+};
+// Token pasting through one level of expansion (e.g. a workflow's setup name and a suffix).
+#define SHADOW_JOIN2(a, b) a##b
+#define SHADOW_JOIN(a, b) SHADOW_JOIN2(a, b)
+
 void vertShadowCaster(VertexInput v,
 #ifdef UNITY_STANDARD_USE_SHADOW_OUTPUT_STRUCT
     out VertexOutputShadowCaster o,

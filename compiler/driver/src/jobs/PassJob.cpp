@@ -12,6 +12,7 @@
 #include "varc/driver/PassDefines.h"
 #include "varc/frontend/EmptyMacroArguments.h"
 #include "varc/frontend/HlslRewrites.h"
+#include "varc/frontend/LegacyInstancedPropAccess.h"
 #include "varc/frontend/MacroRedefinitions.h"
 #include "varc/frontend/StagePruner.h"
 #include "varc/variants/KeywordList.h"
@@ -110,6 +111,17 @@ StageResult preprocessStage(const PassJob& job, Stage stage, const std::string& 
          pre.log.find("unexpected '#'") != std::string::npos)) {
         const std::string& expanded =
             job.rewrites->apply("empty macro arguments", text, frontend::expandEmptyMacroArguments);
+        if (expanded != text) {
+            text = expanded;
+            pre = preprocessProgram({text, preamble, languageOf(job), stage, entry});
+        }
+    }
+    // Unity 5.6's one-argument UNITY_ACCESS_INSTANCED_PROP(name): given a block name, as the
+    // two-argument form UnityInstancing.cginc defines (only when the call stopped glslang).
+    if (!pre.ok && hlsl && pre.log.find("Too few args in Macro") != std::string::npos) {
+        const std::string& expanded =
+            job.rewrites->apply("one-argument instanced property access", text,
+                                frontend::expandLegacyInstancedPropAccess);
         if (expanded != text) {
             text = expanded;
             pre = preprocessProgram({text, preamble, languageOf(job), stage, entry});
