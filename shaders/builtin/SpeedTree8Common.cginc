@@ -56,13 +56,15 @@ half _SubsurfaceIndirect;  // the share of indirect light that passes through th
 #endif
 
 // color: _Color with the vertex's ambient occlusion in rgb and the hue variation amount in a.
-// varc's surface passes leave `facing` at 0 (they fill no VFACE member), which reads as a front
-// face.
+// facing: Unity declares it `: VFACE` for its surface generator to fill. glslang's HLSL front end
+// drops members with a built-in semantic from a struct (reading IN.facing would not compile),
+// and varc's surface passes fill no VFACE member, so it is a plain member left at 0, which
+// reads as a front face.
 struct Input {
     half2 uv_MainTex : TEXCOORD0;
     fixed4 color : COLOR;
 #ifdef EFFECT_BACKSIDE_NORMALS
-    fixed facing : VFACE;
+    fixed facing;
 #endif
 };
 
