@@ -317,8 +317,9 @@ float3 RippleFrond(float3 vPos, inout float3 vDirection, float fU, float fV,
 
 // The whole tree bending downwind (Y up, the tree's base at the origin): the horizontal offset
 // wind.xz * _ST_WindGlobal.y * (height / reference)^exponent * (adherence + (1 - adherence) *
-// sway), sway in [0, 1]; with bPreserveShape the result is scaled back to the vertex's distance
-// from the base, so the top sinks as it bends. Never upwind, never below a zero height.
+// sway), sway in [0, 1]: never upwind, nothing below a zero height. With bPreserveShape the
+// result is scaled back to the vertex's distance from the base (a bend, not a stretch: the crown
+// above the trunk sinks as it leans).
 float3 GlobalWind(float3 vPos, float3 vInstancePos, bool bPreserveShape,
                   float3 vRotatedWindVector, float time) {
     float exponent = _ST_WindGlobal.w > 0.0 ? _ST_WindGlobal.w : 1.0;
