@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// Value tests of varc's SpeedTree include files, whole vertices: OffsetSpeedTreeVertex of
-// SpeedTree 7 and 8 trees (a calm tree does not move, wind moves it, the LOD blend) and
-// SpeedTreeBillboardVert (the billboard's documented geometry), on lavapipe over the grid of
-// tests/vulkan/helpers/SpeedTreeValues.shader.
+// Value tests of varc's SpeedTree include files, whole vertices and surfaces:
+// OffsetSpeedTreeVertex of SpeedTree 7 and 8 trees (a calm tree does not move, wind moves it,
+// the LOD blend), SpeedTree 7's surface path and SpeedTreeBillboardVert (the billboard's
+// documented geometry), on lavapipe over the grid of tests/vulkan/helpers/SpeedTreeValues.shader.
 //
-// api-value-tested: SpeedTreeBillboardVert
+// api-value-tested: SpeedTreeBillboardVert SpeedTreeFrag SPEEDTREE_COPY_FRAG
 #include "SpeedTreeValueTest.h"
 
 namespace varc::render::speedtree {
@@ -86,6 +86,29 @@ TEST_F(SpeedTreeValueTest, WindMovesTrees) {
         }
         EXPECT_GE(moved, static_cast<int>(kSize * kSize * 3 / 4)) << keyword;
     }
+}
+
+// SpeedTree 7's surface path for a branch with hue variation (the test binds white textures):
+// SpeedTreeVert passes the UV and _Color times the vertex's occlusion, and the hue amount
+// saturate(frac(tree base . 1 + 0.1 (x + z)) * _HueVariation.a); SpeedTreeFrag shifts white
+// towards _HueVariation.rgb at constant brightness; SPEEDTREE_COPY_FRAG copies albedo and alpha.
+TEST_F(SpeedTreeValueTest, SurfacePath) {
+    ShaderValues values;
+    values.set("_Color", glm::vec4(0.8f, 0.6f, 0.4f, 0.9f));
+    values.set("_HueVariation", glm::vec4(0.2f, 0.9f, 0.1f, 0.5f));
+    values.set("unity_ObjectToWorld", glm::mat4(1.0f));
+    expectFormula(
+        "ST7_SURFACE",
+        [](double u, double v) {
+            Vec3 p = position(u, v), hue{0.2, 0.9, 0.1}, color{0.8 * u, 0.6 * u, 0.4 * u};
+            double amount = clamp01(frac(0.1 * (p[0] + p[2])) * 0.5);
+            Vec3 shifted = add({1.0, 1.0, 1.0}, add(hue, {1.0, 1.0, 1.0}, -1.0), amount);
+            double brightest = std::max({shifted[0], shifted[1], shifted[2]});
+            Vec4 out{0.0, 0.0, 0.0, 0.9 + u + v};
+            for (size_t c = 0; c < 3; ++c) out[c] = clamp01(shifted[c] / brightest) * color[c];
+            return out;
+        },
+        4, 1e-4, 1e-3, values);
 }
 
 // Billboards: a quad of width unity_BillboardSize.x times the width scale, from -bottom to

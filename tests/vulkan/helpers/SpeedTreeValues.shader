@@ -11,7 +11,7 @@ Shader "Test/SpeedTreeValues" {
             #pragma vertex vert
             #pragma fragment frag
             #pragma target 3.0
-            #pragma multi_compile ST_WAVES ST_UNPACK ST_ROTATE ST_COMPOSE ST_ROLL_TWITCH ST_OSCILLATE ST_BRANCH ST_GLOBAL ST_GLOBAL_SHAPE ST_LEAF ST_FROND ST_TUMBLE ST_FROND2 ST_PALM ST_LEAFWIND ST7_LEAF ST7_FROND ST7_BRANCH ST8_TREE ST_BILLBOARD ST_BILLBOARD_FRAME ST_BILLBOARD_CAMPOS
+            #pragma multi_compile ST_WAVES ST_UNPACK ST_ROTATE ST_COMPOSE ST_ROLL_TWITCH ST_OSCILLATE ST_BRANCH ST_GLOBAL ST_GLOBAL_SHAPE ST_LEAF ST_FROND ST_TUMBLE ST_FROND2 ST_PALM ST_LEAFWIND ST7_LEAF ST7_FROND ST7_BRANCH ST8_TREE ST7_SURFACE ST_BILLBOARD ST_BILLBOARD_FRAME ST_BILLBOARD_CAMPOS
             #if defined(ST7_LEAF) || defined(ST7_FROND) || defined(ST7_BRANCH) || defined(ST8_TREE)
                 #define LOD_FADE_PERCENTAGE
             #endif
@@ -21,6 +21,9 @@ Shader "Test/SpeedTreeValues" {
                 #define GEOM_TYPE_FROND
             #elif defined(ST7_BRANCH)
                 #define GEOM_TYPE_BRANCH
+            #elif defined(ST7_SURFACE)
+                #define GEOM_TYPE_BRANCH
+                #define EFFECT_HUE_VARIATION
             #elif defined(ST_BILLBOARD_CAMPOS)
                 #define BILLBOARD_FACE_CAMERA_POS
             #endif
@@ -28,7 +31,7 @@ Shader "Test/SpeedTreeValues" {
                 #define ENABLE_WIND
                 #define _WINDQUALITY_PALM
                 #include "SpeedTree8Common.cginc"
-            #elif defined(ST7_LEAF) || defined(ST7_FROND) || defined(ST7_BRANCH) || defined(ST_BILLBOARD) || defined(ST_BILLBOARD_FRAME) || defined(ST_BILLBOARD_CAMPOS)
+            #elif defined(ST7_LEAF) || defined(ST7_FROND) || defined(ST7_BRANCH) || defined(ST7_SURFACE) || defined(ST_BILLBOARD) || defined(ST_BILLBOARD_FRAME) || defined(ST_BILLBOARD_CAMPOS)
                 #define ENABLE_WIND
                 #include "SpeedTreeBillboardCommon.cginc"
             #else
@@ -129,6 +132,18 @@ Shader "Test/SpeedTreeValues" {
                 float3 before = data.normal;
                 OffsetSpeedTreeVertex(data, _StLod);
                 return float4(data.vertex.xyz, length(data.normal - before));
+            #elif defined(ST7_SURFACE)
+                SpeedTreeVB data = (SpeedTreeVB)0;
+                data.vertex = float4(p, 1.0);
+                data.texcoord = float4(u, v, 0.0, 0.0);
+                data.color = half4(u, 1.0, 1.0, 1.0);
+                Input input;
+                SpeedTreeVert(data, input);
+                SpeedTreeFragOut fragment;
+                SpeedTreeFrag(input, fragment);
+                struct { fixed3 Albedo; fixed Alpha; } surface;
+                SPEEDTREE_COPY_FRAG(surface, fragment)
+                return float4(surface.Albedo, surface.Alpha + input.mainTexUV.x + input.mainTexUV.y);
             #elif defined(ST8_TREE)
                 appdata_full data = (appdata_full)0;
                 data.vertex = float4(p, 1.0);
