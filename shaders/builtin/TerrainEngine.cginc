@@ -52,8 +52,12 @@ struct appdata_tree_billboard {
 // Periodic helpers of the wind animation, per component.
 // SmoothCurve: the smoothstep polynomial 3x^2 - 2x^3 of x in [0, 1].
 inline float4 SmoothCurve(float4 x) { return x * x * (3.0 - 2.0 * x); }
-// TriangleWave: 1 at integers, 0 at half integers, linear in between (period 1).
+// TriangleWave: 1 at integers, 0 at half integers, linear in between (period 1). SpeedTreeWind.cginc
+// defines the same function: whichever file comes first defines it.
+#ifndef VARC_TRIANGLE_WAVE_DEFINED
+#define VARC_TRIANGLE_WAVE_DEFINED
 inline float4 TriangleWave(float4 x) { return abs(frac(x + 0.5) * 2.0 - 1.0); }
+#endif
 inline float4 SmoothTriangleWave(float4 x) { return SmoothCurve(TriangleWave(x)); }
 
 // Sine and cosine of each component of val.
