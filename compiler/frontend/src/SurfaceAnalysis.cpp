@@ -3,6 +3,7 @@
 #include "varc/frontend/SurfaceAnalysis.h"
 
 #include <algorithm>
+#include <regex>
 
 #include "varc/core/Trim.h"
 
@@ -159,13 +160,18 @@ bool assignsNormal(std::string_view body, std::string_view object) {
 }
 
 bool readLightingShape(const std::vector<std::string>& parameters, LightingShape& shape) {
-    bool gi = !parameters.empty() && parameterType(parameters.back()).find("UnityGI") !=
-                                         std::string::npos;
-    if (gi && parameters.size() == 2) shape = LightingShape::Gi;
-    else if (gi && parameters.size() == 3) shape = LightingShape::GiViewDir;
-    else if (!gi && parameters.size() == 3) shape = LightingShape::Legacy;
-    else if (!gi && parameters.size() == 4) shape = LightingShape::LegacyViewDir;
-    else return false;
+    bool gi = !parameters.empty() &&
+              parameterType(parameters.back()).find("UnityGI") != std::string::npos;
+    if (gi && parameters.size() == 2)
+        shape = LightingShape::Gi;
+    else if (gi && parameters.size() == 3)
+        shape = LightingShape::GiViewDir;
+    else if (!gi && parameters.size() == 3)
+        shape = LightingShape::Legacy;
+    else if (!gi && parameters.size() == 4)
+        shape = LightingShape::LegacyViewDir;
+    else
+        return false;
     return true;
 }
 
@@ -282,6 +288,23 @@ std::optional<std::vector<std::string>> structMembers(std::string_view text,
     return members;
 }
 
+namespace {
+
+// The Input member with a face semantic, if any (SurfaceFacts::faceMember).
+void readFaceMember(std::string_view inputBody, SurfaceFacts& facts) {
+    static const std::regex kFace(R"((\w+)\s+(\w+)\s*:\s*(VFACE|SV_IsFrontFace)\b)",
+                                  std::regex::icase);
+    std::string body(inputBody);
+    std::smatch match;
+    if (!std::regex_search(body, match, kFace)) return;
+    facts.faceIsBool = match[1].str() == "bool";
+    facts.faceMember = match[2].str();
+    // HLSL semantics are case-insensitive; the generated code names the one written.
+    facts.faceSemantic = match[3].str();
+}
+
+}  // namespace
+
 std::optional<SurfaceFacts> analyzeSurface(const shaderlab::SurfaceProgram& program,
                                            std::string_view text, DiagnosticSink& sink) {
     SurfaceFacts facts;
@@ -290,11 +313,11 @@ std::optional<SurfaceFacts> analyzeSurface(const shaderlab::SurfaceProgram& prog
     const std::string& source = facts.programText;
     auto surf = functionParameters(source, program.function);
     if (!surf || surf->size() != 2) {
-        sink.error(program.pragma,
-                   "the surface function '" + program.function + "' of '#pragma surface' " +
-                       (surf ? "must have the shape 'void " + program.function +
-                                   "(Input IN, inout SurfaceOutput o)'"
-                             : "is not defined"));
+        sink.error(program.pragma, "the surface function '" + program.function +
+                                       "' of '#pragma surface' " +
+                                       (surf ? "must have the shape 'void " + program.function +
+                                                   "(Input IN, inout SurfaceOutput o)'"
+                                             : "is not defined"));
         return std::nullopt;
     }
     facts.outputType = parameterType((*surf)[1]);
@@ -309,12 +332,14 @@ std::optional<SurfaceFacts> analyzeSurface(const shaderlab::SurfaceProgram& prog
     std::optional<std::string_view> inputBody = structBody(source, "Input");
     facts.inputHasInternalData =
         inputBody && findWord(*inputBody, "INTERNAL_DATA", 0) != std::string_view::npos;
-    facts.outputMembers = structMembers(source, facts.outputType).value_or(
-        std::vector<std::string>{});
+    if (inputBody) readFaceMember(*inputBody, facts);
+    facts.outputMembers =
+        structMembers(source, facts.outputType).value_or(std::vector<std::string>{});
     if (!readVertexFunction(program, facts, sink)) return std::nullopt;
-    facts.vertexInputMembers = structMembers(source, facts.vertexInputType).value_or(
-        std::vector<std::string>{"vertex", "tangent", "normal", "texcoord", "texcoord1",
-                                 "texcoord2", "texcoord3", "color"});
+    facts.vertexInputMembers =
+        structMembers(source, facts.vertexInputType)
+            .value_or(std::vector<std::string>{"vertex", "tangent", "normal", "texcoord",
+                                               "texcoord1", "texcoord2", "texcoord3", "color"});
     std::string lighting = "Lighting" + program.lightingModel;
     auto parameters = functionParameters(source, lighting);
     if (!parameters || !readLightingShape(*parameters, facts.lighting)) {

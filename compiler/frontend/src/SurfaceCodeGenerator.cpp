@@ -68,9 +68,12 @@ std::string vertexField(const PassPlan& plan, std::string_view field, std::strin
 
 std::string passDefine(SurfacePassKind kind) {
     switch (kind) {
-    case SurfacePassKind::ForwardBase: return "UNITY_PASS_FORWARDBASE";
-    case SurfacePassKind::ForwardAdd: return "UNITY_PASS_FORWARDADD";
-    case SurfacePassKind::ShadowCaster: return "UNITY_PASS_SHADOWCASTER";
+        case SurfacePassKind::ForwardBase:
+            return "UNITY_PASS_FORWARDBASE";
+        case SurfacePassKind::ForwardAdd:
+            return "UNITY_PASS_FORWARDADD";
+        case SurfacePassKind::ShadowCaster:
+            return "UNITY_PASS_SHADOWCASTER";
     }
     return "";
 }
@@ -93,13 +96,16 @@ void writeKeywordPragmas(const PassPlan& plan, CodeWriter& out) {
 
 void writeNormalMacros(const PassPlan& plan, CodeWriter& out) {
     if (plan.tangentSpace) {
-        out.line("#define INTERNAL_DATA float3 internalSurfaceTtoW0; float3 internalSurfaceTtoW1; "
-                 "float3 internalSurfaceTtoW2;");
-        out.line("#define WorldNormalVector(data, normal) float3(dot((data).internalSurfaceTtoW0, "
-                 "normal), dot((data).internalSurfaceTtoW1, normal), "
-                 "dot((data).internalSurfaceTtoW2, normal))");
-        out.line("#define WorldReflectionVector(data, normal) reflect((data).worldRefl, "
-                 "WorldNormalVector(data, normal))");
+        out.line(
+            "#define INTERNAL_DATA float3 internalSurfaceTtoW0; float3 internalSurfaceTtoW1; "
+            "float3 internalSurfaceTtoW2;");
+        out.line(
+            "#define WorldNormalVector(data, normal) float3(dot((data).internalSurfaceTtoW0, "
+            "normal), dot((data).internalSurfaceTtoW1, normal), "
+            "dot((data).internalSurfaceTtoW2, normal))");
+        out.line(
+            "#define WorldReflectionVector(data, normal) reflect((data).worldRefl, "
+            "WorldNormalVector(data, normal))");
     } else {
         out.line("#define INTERNAL_DATA");
         out.line("#define WorldNormalVector(data, normal) (normal)");
@@ -118,6 +124,11 @@ std::string writeBefore(const PassPlan& plan) {
         out.line(std::string("#include \"") + file + "\"");
     }
     writeNormalMacros(plan, out);
+    // glslang drops a struct member with a system-value semantic from the struct, so Input's
+    // face member gets a user semantic while the program's text is read; the fragment program
+    // fills it from its own SV_IsFrontFace parameter (after the #undef in the code after).
+    if (!plan.facts.faceMember.empty())
+        out.line("#define " + plan.facts.faceSemantic + " varc_input_face");
     out.line("#pragma vertex varc_surf_vert");
     out.line("#pragma fragment varc_surf_frag");
     writeKeywordPragmas(plan, out);
@@ -152,8 +163,8 @@ void writeAlphaTestProperty(const PassPlan& plan, CodeWriter& out) {
 // the legacy shapes always) and VARC_SURF_LIGHTMAP_UV (the (s, gi) models under a lightmap).
 void writeBaseSwitches(const PassPlan& plan, CodeWriter& out) {
     if (!plan.base()) return;
-    bool gi = plan.facts.lighting == LightingShape::Gi ||
-              plan.facts.lighting == LightingShape::GiViewDir;
+    bool gi =
+        plan.facts.lighting == LightingShape::Gi || plan.facts.lighting == LightingShape::GiViewDir;
     if (!plan.program.options.noAmbient) {
         out.line(gi ? "#if UNITY_SHOULD_SAMPLE_SH" : "#if 1");
         out.line("#define VARC_SURF_AMBIENT 1");
@@ -264,10 +275,11 @@ void writeVertexProgram(const PassPlan& plan, CodeWriter& out) {
         out.line("#endif");
         if (!plan.program.options.noVertexLights) {
             out.line("#if defined(VARC_SURF_AMBIENT) && defined(VERTEXLIGHT_ON)");
-            out.line("    o.vertexLights = Shade4PointLights(unity_4LightPosX0, unity_4LightPosY0, "
-                     "unity_4LightPosZ0, unity_LightColor[0].rgb, unity_LightColor[1].rgb, "
-                     "unity_LightColor[2].rgb, unity_LightColor[3].rgb, unity_4LightAtten0, "
-                     "worldPos, worldNormal);");
+            out.line(
+                "    o.vertexLights = Shade4PointLights(unity_4LightPosX0, unity_4LightPosY0, "
+                "unity_4LightPosZ0, unity_LightColor[0].rgb, unity_LightColor[1].rgb, "
+                "unity_LightColor[2].rgb, unity_LightColor[3].rgb, unity_4LightAtten0, "
+                "worldPos, worldNormal);");
             out.line("#endif");
         }
     }
@@ -285,9 +297,12 @@ void writeVertexProgram(const PassPlan& plan, CodeWriter& out) {
 
 std::string surfacePassLightMode(SurfacePassKind kind) {
     switch (kind) {
-    case SurfacePassKind::ForwardBase: return "ForwardBase";
-    case SurfacePassKind::ForwardAdd: return "ForwardAdd";
-    case SurfacePassKind::ShadowCaster: return "ShadowCaster";
+        case SurfacePassKind::ForwardBase:
+            return "ForwardBase";
+        case SurfacePassKind::ForwardAdd:
+            return "ForwardAdd";
+        case SurfacePassKind::ShadowCaster:
+            return "ShadowCaster";
     }
     return "";
 }
@@ -295,8 +310,8 @@ std::string surfacePassLightMode(SurfacePassKind kind) {
 shaderlab::SurfaceOptions::Alpha effectiveAlpha(const shaderlab::SurfaceProgram& program) {
     Alpha alpha = program.options.alpha;
     if (alpha != Alpha::Blend) return alpha;
-    bool physical = program.lightingModel == "Standard" ||
-                    program.lightingModel == "StandardSpecular";
+    bool physical =
+        program.lightingModel == "Standard" || program.lightingModel == "StandardSpecular";
     return physical ? Alpha::Premultiply : Alpha::Fade;
 }
 
@@ -304,6 +319,7 @@ shaderlab::GeneratedCode generateSurfaceCode(const shaderlab::SurfaceProgram& pr
                                              const SurfaceFacts& facts, SurfacePassKind kind) {
     PassPlan plan = makePlan(program, facts, kind);
     CodeWriter after;
+    if (!plan.facts.faceMember.empty()) after.line("#undef " + plan.facts.faceSemantic);
     writeTextureScales(plan, after);
     writeAlphaTestProperty(plan, after);
     writeBaseSwitches(plan, after);

@@ -34,6 +34,9 @@ void writeInputMembers(const PassPlan& plan, CodeWriter& out) {
             out.line(target + "i.screenPos;");
         } else if (member == "color") {
             out.line(target + "i.vertexColor;");
+        } else if (member == plan.facts.faceMember) {
+            out.line(target +
+                     (plan.facts.faceIsBool ? "varcFrontFace;" : "varcFrontFace ? 1 : -1;"));
         }
     }
     if (plan.tangentSpace && plan.facts.inputHasInternalData) {
@@ -154,8 +157,9 @@ void writeLitFragmentEnd(const PassPlan& plan, CodeWriter& out) {
 }  // namespace
 
 void writeFragmentProgram(const PassPlan& plan, CodeWriter& out) {
-    out.line(std::string(plan.caster() ? "float4" : "fixed4") +
-             " varc_surf_frag(varc_surf_v2f i) : SV_Target {");
+    const bool face = plan.surfaceCall && !plan.facts.faceMember.empty();
+    out.line(std::string(plan.caster() ? "float4" : "fixed4") + " varc_surf_frag(varc_surf_v2f i" +
+             (face ? ", bool varcFrontFace : SV_IsFrontFace" : "") + ") : SV_Target {");
     if (!plan.surfaceCall) {
         out.line("    SHADOW_CASTER_FRAGMENT(i)");
         out.line("}");

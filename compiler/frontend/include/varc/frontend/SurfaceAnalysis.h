@@ -18,19 +18,25 @@ namespace varc::frontend {
 enum class LightingShape { Gi, GiViewDir, Legacy, LegacyViewDir };
 
 struct SurfaceFacts {
-    std::vector<std::string> inputMembers;   // member names of `struct Input`, in order
-    bool inputHasInternalData = false;        // `INTERNAL_DATA` written in Input
-    std::string outputType = "SurfaceOutput"; // the surface function's second parameter type
-    std::vector<std::string> outputMembers;   // member names of outputType, when found
-    bool writesNormal = false;                // the surface function assigns o.Normal
-    bool surfaceDiscards = false;             // the surface function calls clip() or discards
+    std::vector<std::string> inputMembers;  // member names of `struct Input`, in order
+    bool inputHasInternalData = false;      // `INTERNAL_DATA` written in Input
+    // The Input member declared with the face semantic (`fixed facing : VFACE`, or
+    // `bool facing : SV_IsFrontFace`), which the fragment program fills from the rasteriser:
+    // +1 / -1 for VFACE, true / false for SV_IsFrontFace. Empty when there is none.
+    std::string faceMember;
+    std::string faceSemantic;                  // "VFACE" or "SV_IsFrontFace"
+    bool faceIsBool = false;                   // the member is declared `bool`
+    std::string outputType = "SurfaceOutput";  // the surface function's second parameter type
+    std::vector<std::string> outputMembers;    // member names of outputType, when found
+    bool writesNormal = false;                 // the surface function assigns o.Normal
+    bool surfaceDiscards = false;              // the surface function calls clip() or discards
     std::string vertexInputType = "appdata_full";
     std::vector<std::string> vertexInputMembers;  // member names of vertexInputType
-    bool vertexWritesInput = false;           // vertex:FN has the (inout T v, out Input o) shape
+    bool vertexWritesInput = false;  // vertex:FN has the (inout T v, out Input o) shape
     LightingShape lighting = LightingShape::Gi;
-    bool hasGiFunction = false;               // `Lighting<MODEL>_GI` is defined
-    std::string programText;                  // the analysed text, comments and #pragma
-                                              // lines blanked
+    bool hasGiFunction = false;  // `Lighting<MODEL>_GI` is defined
+    std::string programText;     // the analysed text, comments and #pragma
+                                 // lines blanked
 
     bool hasInputMember(std::string_view name) const;
     // Whether |name| appears as a whole word in the analysed text outside comments and
@@ -49,8 +55,7 @@ std::optional<std::vector<std::string>> functionParameters(std::string_view text
 // skipped, semantics and array sizes dropped); nullopt when no such struct is defined.
 // Example: "struct Input { float2 uv_MainTex : TEXCOORD0; float3 viewDir; };" ->
 // {"uv_MainTex", "viewDir"}.
-std::optional<std::vector<std::string>> structMembers(std::string_view text,
-                                                      std::string_view name);
+std::optional<std::vector<std::string>> structMembers(std::string_view text, std::string_view name);
 
 // |text| with // and /* */ comments replaced by spaces (newlines kept).
 std::string withoutComments(std::string_view text);
