@@ -28,8 +28,8 @@ std::vector<Word> wordsOf(std::string_view text, SourceLocation at) {
         size_t start = i;
         while (i < text.size() && text[i] != ' ' && text[i] != '\t' && text[i] != '\r') ++i;
         if (i > start) {
-            words.push_back({text.substr(start, i - start),
-                             at.column + static_cast<uint32_t>(start)});
+            words.push_back(
+                {text.substr(start, i - start), at.column + static_cast<uint32_t>(start)});
         }
     }
     return words;
@@ -37,17 +37,16 @@ std::vector<Word> wordsOf(std::string_view text, SourceLocation at) {
 
 // Options varc accepts and does not act on: lightmaps, meta passes, instancing, interpolation
 // and code-size hints, the deferred and legacy paths varc generates no pass for.
-constexpr std::array<std::string_view, 10> kIgnoredOptions = {
-    "nometa",     "noinstancing", "nolppv",         "halfasview",      "interpolateview",
-    "approxview", "dualforward",  "softvegetation", "dithercrossfade", "addprepass"};
+constexpr std::array<std::string_view, 9> kIgnoredOptions = {
+    "nometa",     "noinstancing", "nolppv",         "halfasview", "interpolateview",
+    "approxview", "dualforward",  "softvegetation", "addprepass"};
 
 // Options that remove keywords of the forward shortcuts (docs/KEYWORDS.md §4): passed on to them.
 constexpr std::array<std::string_view, 6> kShortcutOptions = {
     "nolightmap", "nodirlightmap", "nodynlightmap", "noshadowmask", "novertexlights", "noshadow"};
 
 bool isIgnored(std::string_view name) {
-    return std::find(kIgnoredOptions.begin(), kIgnoredOptions.end(), name) !=
-           kIgnoredOptions.end();
+    return std::find(kIgnoredOptions.begin(), kIgnoredOptions.end(), name) != kIgnoredOptions.end();
 }
 
 struct Flag {
@@ -61,7 +60,7 @@ bool applyFlag(std::string_view name, SurfaceOptions& options) {
         kShortcutOptions.end()) {
         options.shortcutOptions.emplace_back(name);
     }
-    static constexpr std::array<Flag, 8> kFlags = {{
+    static constexpr std::array<Flag, 9> kFlags = {{
         {"keepalpha", &SurfaceOptions::keepAlpha},
         {"addshadow", &SurfaceOptions::addShadow},
         {"fullforwardshadows", &SurfaceOptions::fullForwardShadows},
@@ -70,6 +69,7 @@ bool applyFlag(std::string_view name, SurfaceOptions& options) {
         {"novertexlights", &SurfaceOptions::noVertexLights},
         {"nofog", &SurfaceOptions::noFog},
         {"noshadow", &SurfaceOptions::noShadow},
+        {"dithercrossfade", &SurfaceOptions::ditherCrossFade},
     }};
     for (const Flag& flag : kFlags) {
         if (flag.word == name) {
@@ -81,8 +81,8 @@ bool applyFlag(std::string_view name, SurfaceOptions& options) {
         options.alpha = SurfaceOptions::Alpha::Blend;
         return true;
     }
-    return isIgnored(name) || std::find(kShortcutOptions.begin(), kShortcutOptions.end(),
-                                        name) != kShortcutOptions.end();
+    return isIgnored(name) || std::find(kShortcutOptions.begin(), kShortcutOptions.end(), name) !=
+                                  kShortcutOptions.end();
 }
 
 // Options with a value that varc accepts with a warning: they change nothing it generates.
@@ -93,20 +93,31 @@ bool isUnsupportedValueOption(std::string_view name) {
 
 // Applies `name:value`. Returns an error message, or "" when applied.
 std::string applyValue(std::string_view name, std::string_view value, SurfaceOptions& options) {
-    if (name == "vertex") options.vertexFunction = std::string(value);
-    else if (name == "finalcolor") options.finalColorFunction = std::string(value);
-    else if (name == "alphatest") options.alphaTestProperty = std::string(value);
+    if (name == "vertex")
+        options.vertexFunction = std::string(value);
+    else if (name == "finalcolor")
+        options.finalColorFunction = std::string(value);
+    else if (name == "alphatest")
+        options.alphaTestProperty = std::string(value);
     else if (name == "alpha") {
-        if (value == "blend" || value == "auto") options.alpha = SurfaceOptions::Alpha::Blend;
-        else if (value == "fade") options.alpha = SurfaceOptions::Alpha::Fade;
-        else if (value == "premul") options.alpha = SurfaceOptions::Alpha::Premultiply;
-        else return "unknown value '" + std::string(value) + "' of 'alpha' (blend, fade, premul)";
+        if (value == "blend" || value == "auto")
+            options.alpha = SurfaceOptions::Alpha::Blend;
+        else if (value == "fade")
+            options.alpha = SurfaceOptions::Alpha::Fade;
+        else if (value == "premul")
+            options.alpha = SurfaceOptions::Alpha::Premultiply;
+        else
+            return "unknown value '" + std::string(value) + "' of 'alpha' (blend, fade, premul)";
     } else if (name == "decal") {
-        if (value == "add") options.decal = SurfaceOptions::Decal::Add;
-        else if (value == "blend") options.decal = SurfaceOptions::Decal::Blend;
-        else return "unknown value '" + std::string(value) + "' of 'decal' (add, blend)";
+        if (value == "add")
+            options.decal = SurfaceOptions::Decal::Add;
+        else if (value == "blend")
+            options.decal = SurfaceOptions::Decal::Blend;
+        else
+            return "unknown value '" + std::string(value) + "' of 'decal' (add, blend)";
     } else if (name == "exclude_path") {
-        if (value == "forward") options.excludeForward = true;
+        if (value == "forward")
+            options.excludeForward = true;
         else if (value != "deferred" && value != "prepass") {
             return "unknown value '" + std::string(value) +
                    "' of 'exclude_path' (deferred, forward, prepass)";
@@ -152,8 +163,9 @@ bool parseSurfaceOptions(std::string_view text, SourceLocation at, SurfaceProgra
                          DiagnosticSink& sink) {
     std::vector<Word> words = wordsOf(text, at);
     if (words.size() < 2) {
-        sink.error(at, "'#pragma surface' needs a surface function and a lighting model: "
-                       "'#pragma surface FUNC MODEL [options]'");
+        sink.error(at,
+                   "'#pragma surface' needs a surface function and a lighting model: "
+                   "'#pragma surface FUNC MODEL [options]'");
         return false;
     }
     out.function = std::string(words[0].text);
@@ -174,8 +186,8 @@ bool parseSurfaceOptions(std::string_view text, SourceLocation at, SurfaceProgra
                                     "' is accepted and not acted on: varc generates no "
                                     "tessellation, G-buffer or prepass code");
         } else {
-            message = applyValue(word.text.substr(0, colon), word.text.substr(colon + 1),
-                                 out.options);
+            message =
+                applyValue(word.text.substr(0, colon), word.text.substr(colon + 1), out.options);
         }
         if (!message.empty()) {
             sink.error(where, message);
@@ -185,8 +197,8 @@ bool parseSurfaceOptions(std::string_view text, SourceLocation at, SurfaceProgra
     return true;
 }
 
-std::optional<SurfaceProgram> parseSurfaceProgram(const ProgramBlock& block,
-                                                  SourceLocation pragma, DiagnosticSink& sink) {
+std::optional<SurfaceProgram> parseSurfaceProgram(const ProgramBlock& block, SourceLocation pragma,
+                                                  DiagnosticSink& sink) {
     // The pragma's line within the block, and the column where the line starts.
     std::string_view text = block.text;
     size_t lineStart = 0;

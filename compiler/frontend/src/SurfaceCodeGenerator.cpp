@@ -92,6 +92,8 @@ void writeKeywordPragmas(const PassPlan& plan, CodeWriter& out) {
     }
     if (plan.caster()) out.line("#pragma multi_compile_shadowcaster");
     if (plan.fog()) out.line("#pragma multi_compile_fog");
+    // As Unity: every generated pass of a `dithercrossfade` program fades between LOD levels.
+    if (options.ditherCrossFade) out.line("#pragma multi_compile _ LOD_FADE_CROSSFADE");
 }
 
 void writeNormalMacros(const PassPlan& plan, CodeWriter& out) {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // parseSurfaceOptions: the words of `#pragma surface FUNC MODEL [options]`.
-#include "SurfacePragma.h"
-
 #include <gtest/gtest.h>
+
+#include "SurfacePragma.h"
 
 namespace varc::shaderlab {
 namespace {
@@ -17,8 +17,8 @@ struct Parsed {
 
 Parsed parseWords(std::string_view text) {
     Parsed parsed;
-    parsed.ok = parseSurfaceOptions(text, SourceLocation{3, 10, 20}, parsed.program,
-                                    parsed.diagnostics);
+    parsed.ok =
+        parseSurfaceOptions(text, SourceLocation{3, 10, 20}, parsed.program, parsed.diagnostics);
     return parsed;
 }
 
@@ -36,12 +36,13 @@ TEST(SurfacePragma, ReadsFunctionModelAndValueOptions) {
 TEST(SurfacePragma, ReadsFlagsAndIgnoresACommentAfterThem) {
     Parsed parsed = parseWords(
         " surf Lambert keepalpha addshadow fullforwardshadows noforwardadd noambient "
-        "novertexlights nofog noshadow nolightmap nometa exclude_path:deferred // alpha:blend");
+        "novertexlights nofog noshadow nolightmap nometa dithercrossfade exclude_path:deferred "
+        "// alpha:blend");
     ASSERT_TRUE(parsed.ok) << parsed.diagnostics.diagnostics().at(0).message;
     const SurfaceOptions& options = parsed.program.options;
     EXPECT_TRUE(options.keepAlpha && options.addShadow && options.fullForwardShadows &&
                 options.noForwardAdd && options.noAmbient && options.noVertexLights &&
-                options.noFog && options.noShadow);
+                options.noFog && options.noShadow && options.ditherCrossFade);
     EXPECT_EQ(options.shortcutOptions,
               (std::vector<std::string>{"novertexlights", "noshadow", "nolightmap"}));
     EXPECT_FALSE(options.excludeForward);
@@ -60,7 +61,8 @@ TEST(SurfacePragma, ReportsAnUnknownOptionAtItsColumn) {
     Parsed parsed = parseWords(" surf Lambert  glossy");
     EXPECT_FALSE(parsed.ok);
     ASSERT_EQ(parsed.diagnostics.diagnostics().size(), 1u);
-    EXPECT_EQ(parsed.diagnostics.diagnostics()[0].message, "unknown surface shader option 'glossy'");
+    EXPECT_EQ(parsed.diagnostics.diagnostics()[0].message,
+              "unknown surface shader option 'glossy'");
     EXPECT_EQ(parsed.diagnostics.diagnostics()[0].location, (SourceLocation{3, 10, 35}));
 }
 

@@ -160,6 +160,8 @@ void writeFragmentProgram(const PassPlan& plan, CodeWriter& out) {
     const bool face = plan.surfaceCall && !plan.facts.faceMember.empty();
     out.line(std::string(plan.caster() ? "float4" : "fixed4") + " varc_surf_frag(varc_surf_v2f i" +
              (face ? ", bool varcFrontFace : SV_IsFrontFace" : "") + ") : SV_Target {");
+    if (plan.program.options.ditherCrossFade)
+        out.line("    UNITY_APPLY_DITHER_CROSSFADE(i.pos.xy);");
     if (!plan.surfaceCall) {
         out.line("    SHADOW_CASTER_FRAGMENT(i)");
         out.line("}");

@@ -66,6 +66,7 @@ struct SurfaceOptions {
     bool noVertexLights = false;
     bool noFog = false;
     bool noShadow = false;
+    bool ditherCrossFade = false;    // `dithercrossfade`: LOD_FADE_CROSSFADE variants, dithered
     bool excludeForward = false;     // `exclude_path:forward`
     // The options that remove keywords of the forward shortcuts (`nolightmap`, `nodirlightmap`,
     // `nodynlightmap`, `noshadowmask`, `novertexlights`, `noshadow`), in the order written.
