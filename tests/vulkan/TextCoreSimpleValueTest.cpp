@@ -5,13 +5,15 @@
 // GlslInclude}Values.shader, pixel centre (u, v) as input) and is compared with the formula
 // stated in the include file, computed here.
 //
+// clang-format off
 // api-value-tested: BRDF3DirectSimple TransformToTangentSpace TangentSpaceLightingInput
-// api-value-tested: MetallicSetup_Reflectivity SpecularSetup_Reflectivity
-// RoughnessSetup_Reflectivity api-value-tested: SmithGGXVisibilityTerm CookTorranceVisibilityTerm
-// KelemenVisibilityTerm api-value-tested: ModifiedKelemenVisibilityTerm SebLagardeFresnelTerm
-// LazarovFresnelTerm api-value-tested: RDFBlinnPhongNormalizedTerm RoughnessToSpecPower DotClamped
-// LambertTerm BlinnTerm api-value-tested: saturate GetStereoMatrixVP WorldSpaceViewDir
-// ObjSpaceViewDir api-value-tested: WorldSpaceLightDir ObjSpaceLightDir
+// api-value-tested: MetallicSetup_Reflectivity SpecularSetup_Reflectivity RoughnessSetup_Reflectivity
+// api-value-tested: SmithGGXVisibilityTerm CookTorranceVisibilityTerm KelemenVisibilityTerm
+// api-value-tested: ModifiedKelemenVisibilityTerm SebLagardeFresnelTerm LazarovFresnelTerm
+// api-value-tested: RDFBlinnPhongNormalizedTerm RoughnessToSpecPower DotClamped LambertTerm BlinnTerm
+// api-value-tested: saturate GetStereoMatrixVP WorldSpaceViewDir ObjSpaceViewDir
+// api-value-tested: WorldSpaceLightDir ObjSpaceLightDir
+// clang-format on
 #include <gtest/gtest.h>
 
 #include <algorithm>
