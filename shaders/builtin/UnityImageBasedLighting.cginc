@@ -58,4 +58,9 @@ half3 Unity_GlossyEnvironment(UNITY_ARGS_TEXCUBE(tex), half4 hdr, Unity_GlossyEn
     return DecodeHDR(rgbm, hdr);
 }
 
+// The 5.x Unity_GlossyEnvironment overload (UnityDeprecated.cginc).
+#define INCLUDE_UNITY_IMAGE_BASED_LIGHTING_DEPRECATED
+#include "UnityDeprecated.cginc"
+#undef INCLUDE_UNITY_IMAGE_BASED_LIGHTING_DEPRECATED
+
 #endif // UNITY_IMAGE_BASED_LIGHTING_INCLUDED

@@ -23,9 +23,6 @@ inline half4 Pow4(half4 x) { return x * x * x * x; }
 inline half2 Pow5(half2 x) { return x * x * x * x * x; }
 inline half3 Pow5(half3 x) { return x * x * x * x * x; }
 inline half4 Pow5(half4 x) { return x * x * x * x * x; }
-inline half DotClamped(half3 a, half3 b) { return max(0.0h, dot(a, b)); }
-inline half LambertTerm(half3 normal, half3 lightDir) { return DotClamped(normal, lightDir); }
-inline half BlinnTerm(half3 normal, half3 halfDir) { return DotClamped(normal, halfDir); }
 // x / |x|, with |x|^2 clamped to >= 0.001 so a zero vector stays finite.
 inline float3 Unity_SafeNormalize(float3 inVec) {
     float dp3 = max(0.001f, dot(inVec, inVec));
@@ -36,6 +33,11 @@ inline float SmoothnessToPerceptualRoughness(float smoothness) { return (1 - smo
 inline float PerceptualRoughnessToRoughness(float perceptualRoughness) { return perceptualRoughness * perceptualRoughness; }
 inline half RoughnessToPerceptualRoughness(half roughness) { return sqrt(roughness); }
 inline half SmoothnessToRoughness(half smoothness) { return (1 - smoothness) * (1 - smoothness); }
+
+// DotClamped, LambertTerm, BlinnTerm and the 5.x BRDF terms (UnityDeprecated.cginc).
+#define INCLUDE_UNITY_STANDARD_BRDF_DEPRECATED
+#include "UnityDeprecated.cginc"
+#undef INCLUDE_UNITY_STANDARD_BRDF_DEPRECATED
 
 // Schlick 1994: F(cos) = F0 + (1 - F0)(1 - cos)^5.
 inline half3 FresnelTerm(half3 F0, half cosA) {

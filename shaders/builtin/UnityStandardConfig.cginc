@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // varc built-in: UnityStandardConfig.cginc. Configuration switches of the Standard shader family.
-// varc ships one quality level: the full per-pixel path with the BRDF of UnityStandardBRDF.cginc.
-// Written for varc.
+// varc ships the full per-pixel path with the BRDF of UnityStandardBRDF.cginc and the simple forward
+// path (UNITY_STANDARD_SIMPLE). Written for varc.
 #ifndef UNITY_STANDARD_CONFIG_INCLUDED
 #define UNITY_STANDARD_CONFIG_INCLUDED
 
-// No "simple" (mobile) variant of the Standard shader.
+// The full Standard path unless a shader defines UNITY_STANDARD_SIMPLE 1 before its includes
+// (UnityStandardCoreForward.cginc then takes UnityStandardCoreForwardSimple.cginc).
 #ifndef UNITY_STANDARD_SIMPLE
 #define UNITY_STANDARD_SIMPLE 0
 #endif
