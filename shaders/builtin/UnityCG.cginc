@@ -355,8 +355,10 @@ float4 UnityApplyLinearShadowBias(float4 clipPos) {
     #define UNITY_CALC_FOG_FACTOR_RAW(coord) float unityFogFactor = 0.0
 #endif
 #define UNITY_CALC_FOG_FACTOR(coord) UNITY_CALC_FOG_FACTOR_RAW(coord)
+// The packed form declares its member in every variant: shaders keep other data in the vector's
+// other components (the Standard shader's simple path keeps its reflection vector in yzw).
+#define UNITY_FOG_COORDS_PACKED(idx, vectype) vectype fogCoord : TEXCOORD##idx;
 #if defined(FOG_LINEAR) || defined(FOG_EXP) || defined(FOG_EXP2)
-    #define UNITY_FOG_COORDS_PACKED(idx, vectype) vectype fogCoord : TEXCOORD##idx;
     #define UNITY_FOG_COORDS(idx) UNITY_FOG_COORDS_PACKED(idx, float1)
     // Generated surface code reads the fog coordinate into a local, then UNITY_APPLY_FOG(s it.
     #define UNITY_EXTRACT_FOG(name) float _unity_fogCoord = name.fogCoord
@@ -365,7 +367,6 @@ float4 UnityApplyLinearShadowBias(float4 clipPos) {
     #define UNITY_FOG_LERP_COLOR(col, fogCol, fogFac) col.rgb = lerp((fogCol).rgb, (col).rgb, saturate(fogFac))
     #define UNITY_APPLY_FOG_COLOR(coord, col, fogCol) { UNITY_CALC_FOG_FACTOR((coord).x); UNITY_FOG_LERP_COLOR(col, fogCol, unityFogFactor); }
 #else
-    #define UNITY_FOG_COORDS_PACKED(idx, vectype)
     #define UNITY_FOG_COORDS(idx)
     #define UNITY_EXTRACT_FOG(name)
     #define UNITY_TRANSFER_FOG(o, outpos)

@@ -33,7 +33,6 @@ Shader "Case/SpeedTree8Like" {
         CGPROGRAM
         #pragma surface SpeedTreeSurf SpeedTreeSubsurface vertex:SpeedTreeVert dithercrossfade nodirlightmap nodynlightmap noshadowmask nolightmap nofog noforwardadd novertexlights noshadow
         #pragma target 3.0
-        #pragma multi_compile_vertex __ LOD_FADE_PERCENTAGE
         #pragma instancing_options assumeuniformscaling maxcount:50
         #pragma shader_feature_local _WINDQUALITY_NONE _WINDQUALITY_FASTEST _WINDQUALITY_FAST _WINDQUALITY_BETTER _WINDQUALITY_BEST _WINDQUALITY_PALM
         #pragma shader_feature_local EFFECT_BILLBOARD
