@@ -16,11 +16,11 @@
 #include <set>
 #include <sstream>
 
-#include "varc/cli/DirectMode.h"
 #include "Session.h"
 #include "varc/cli/BuildReport.h"
 #include "varc/cli/CacheCommands.h"
 #include "varc/cli/DiagnosticOutput.h"
+#include "varc/cli/DirectMode.h"
 #include "varc/cli/DriverOptions.h"
 #include "varc/cli/ExplainReport.h"
 #include "varc/cli/ExplainText.h"
@@ -35,6 +35,7 @@
 #include "varc/core/AtomicFile.h"
 #include "varc/driver/CompileDriver.h"
 #include "varc/driver/Depfile.h"
+#include "varc/driver/OptimizerWorker.h"
 #include "varc/driver/PackAssembler.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/frontend/VariantLimit.h"
@@ -232,9 +233,9 @@ bool writeBuildFiles(const BuildCommandOptions& options, const pack::PackContent
 }
 
 // A direct hit: the recorded pack and depfile written, and the summary.
-int finishDirectHit(const BuildCommandOptions& options, DirectMode& direct,
-                    const std::string& pack, std::chrono::steady_clock::time_point start,
-                    Session& session, std::ostream& out) {
+int finishDirectHit(const BuildCommandOptions& options, DirectMode& direct, const std::string& pack,
+                    std::chrono::steady_clock::time_point start, Session& session,
+                    std::ostream& out) {
     if (!writeOutputs(options, pack, direct.manifest().dependencies, session)) {
         return kExitFailure;
     }
@@ -472,6 +473,9 @@ int runCommand(const CommandOptions& command, std::ostream& out, std::ostream& e
 }  // namespace
 
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    // The hidden worker mode (driver::OptimizerPool spawns it), before any option parsing.
+    if (argc == 2 && argv[1] == driver::kOptimizerWorkerCommand)
+        return driver::runOptimizerWorker(STDIN_FILENO);
     ParsedCommandLine parsed = parseCommandLine(argc, argv, out, err);
     if (!parsed.command) return parsed.exitCode;
     return runCommand(*parsed.command, out, err);
