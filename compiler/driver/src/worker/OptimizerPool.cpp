@@ -61,9 +61,10 @@ size_t OptimizerPool::spawnedCount() const {
 }
 
 std::string currentExecutablePath() {
+    // The link itself, not its target: exec'ing it runs the very file this process runs, even
+    // once a rebuild has replaced or deleted it at its path (the target then reads "(deleted)").
     std::error_code error;
-    std::filesystem::path path = std::filesystem::read_symlink("/proc/self/exe", error);
-    return error ? std::string() : path.string();
+    return std::filesystem::exists("/proc/self/exe", error) ? "/proc/self/exe" : std::string();
 }
 
 }  // namespace varc::driver

@@ -53,7 +53,7 @@ private:
     size_t mSpawned = 0;
 };
 
-// The path of the running executable (/proc/self/exe resolved), or empty when unknown.
+// A path that runs the running executable ("/proc/self/exe"), or empty when there is none.
 std::string currentExecutablePath();
 
 }  // namespace varc::driver
