@@ -29,7 +29,10 @@ includes::SourcePathMap sourcePathMap(const CompileOptions& compile,
 // The optimiser's worker pool: varc itself, re-executed (OptimizerWorker.h). Environment knobs
 // (for diagnosis and tests, not everyday options): VARC_OPTIMIZER_WORKERS=0 optimises in this
 // process; VARC_WORKER_TIMEOUT=SECONDS bounds one program's optimisation (default 300).
+bool gOptimizerWorkersEnabled = false;  // set once by main, before any thread starts
+
 std::shared_ptr<driver::OptimizerPool> optimizerPool() {
+    if (!gOptimizerWorkersEnabled) return nullptr;
     const char* workers = std::getenv("VARC_OPTIMIZER_WORKERS");
     if (workers && std::string_view(workers) == "0") return nullptr;
     std::string executable = driver::currentExecutablePath();
@@ -43,6 +46,8 @@ std::shared_ptr<driver::OptimizerPool> optimizerPool() {
 }
 
 }  // namespace
+
+void enableOptimizerWorkers() { gOptimizerWorkersEnabled = true; }
 
 driver::BuildOptions toBuildOptions(const CompileOptions& compile,
                                     const ShaderInputOptions& input) {
