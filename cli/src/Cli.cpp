@@ -2,6 +2,8 @@
 // The `varc` command-line tool as a library: option parsing, then one command.
 #include "varc/cli/Cli.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <memory>
@@ -25,6 +27,7 @@
 #include "varc/core/AsciiCase.h"
 #include "varc/core/AtomicFile.h"
 #include "varc/driver/CompileDriver.h"
+#include "varc/driver/OptimizerWorker.h"
 #include "varc/frontend/ShaderLoader.h"
 #include "varc/frontend/VariantLimit.h"
 
@@ -259,6 +262,9 @@ int runCommand(const CommandOptions& command, std::ostream& out, std::ostream& e
 }  // namespace
 
 int runCli(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    // The hidden worker mode (driver::OptimizerPool spawns it), before any option parsing.
+    if (argc == 2 && argv[1] == driver::kOptimizerWorkerCommand)
+        return driver::runOptimizerWorker(STDIN_FILENO);
     ParsedCommandLine parsed = parseCommandLine(argc, argv, out, err);
     if (!parsed.command) return parsed.exitCode;
     return runCommand(*parsed.command, out, err);

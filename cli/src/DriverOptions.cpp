@@ -2,7 +2,9 @@
 // Options -> driver::BuildOptions for `build` and `explain`.
 #include "varc/cli/DriverOptions.h"
 
+#include <cstdlib>
 #include <filesystem>
+#include <string_view>
 #include <system_error>
 
 #include "varc/cli/CacheCommands.h"
@@ -24,7 +26,28 @@ includes::SourcePathMap sourcePathMap(const CompileOptions& compile,
     return map;
 }
 
+// The optimiser's worker pool: varc itself, re-executed (OptimizerWorker.h). Environment knobs
+// (for diagnosis and tests, not everyday options): VARC_OPTIMIZER_WORKERS=0 optimises in this
+// process; VARC_WORKER_TIMEOUT=SECONDS bounds one program's optimisation (default 300).
+bool gOptimizerWorkersEnabled = false;  // set once by main, before any thread starts
+
+std::shared_ptr<driver::OptimizerPool> optimizerPool() {
+    if (!gOptimizerWorkersEnabled) return nullptr;
+    const char* workers = std::getenv("VARC_OPTIMIZER_WORKERS");
+    if (workers && std::string_view(workers) == "0") return nullptr;
+    std::string executable = driver::currentExecutablePath();
+    if (executable.empty()) return nullptr;
+    int timeoutSeconds = 300;
+    if (const char* timeout = std::getenv("VARC_WORKER_TIMEOUT")) {
+        int seconds = std::atoi(timeout);
+        if (seconds > 0) timeoutSeconds = seconds;
+    }
+    return std::make_shared<driver::OptimizerPool>(std::move(executable), timeoutSeconds * 1000);
+}
+
 }  // namespace
+
+void enableOptimizerWorkers() { gOptimizerWorkersEnabled = true; }
 
 driver::BuildOptions toBuildOptions(const CompileOptions& compile,
                                     const ShaderInputOptions& input) {
@@ -37,6 +60,7 @@ driver::BuildOptions toBuildOptions(const CompileOptions& compile,
     options.shard = compile.shard;
     options.cache = openCacheLevels(compile.cacheLevels);
     options.sourcePaths = sourcePathMap(compile, input);
+    options.optimizerPool = optimizerPool();
     return options;
 }
 

@@ -4,10 +4,12 @@
 #include <new>
 
 #include "varc/cli/Cli.h"
+#include "varc/cli/DriverOptions.h"
 #include "varc/core/AtomicFile.h"
 
 int main(int argc, char** argv) {
     varc::removeTemporariesOnTerminationSignals();
+    varc::cli::enableOptimizerWorkers();
     try {
         return varc::cli::runCli(argc, argv, std::cout, std::cerr);
     } catch (const std::bad_alloc&) {

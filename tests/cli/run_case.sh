@@ -10,6 +10,7 @@
 #   stderr         optional: the exact expected standard error
 #   stderr.grep    optional: lines that must each appear in standard error (fixed strings)
 #   stdout.grep    optional: lines that must each appear in standard output
+#   env            optional: NAME=VALUE lines, set in the command's environment only
 #   setup          optional: bash run first (cwd = repo root) with $VARC, $CASE and $TMP set
 #   verify         optional: bash run last, same environment; the case fails unless it exits 0
 #                  (for checks on files the command wrote, or on what it must not have written)
@@ -33,7 +34,13 @@ if [ -f "$case_dir/setup" ]; then
     VARC=$varc CASE=$case_dir TMP=$tmp bash "$case_dir/setup" || { echo "setup failed"; exit 1; }
 fi
 
-"$varc" "${args[@]}" > "$tmp/stdout" 2> "$tmp/stderr"
+environment=()
+if [ -f "$case_dir/env" ]; then
+    while IFS= read -r line || [ -n "$line" ]; do
+        [ -n "$line" ] && environment+=("$line")
+    done < "$case_dir/env"
+fi
+env "${environment[@]}" "$varc" "${args[@]}" > "$tmp/stdout" 2> "$tmp/stderr"
 code=$?
 expected_exit=$(cat "$case_dir/exit" 2>/dev/null || echo 0)
 status=0

@@ -73,6 +73,31 @@ std::optional<std::string> validateSpirv(const std::vector<uint32_t>& spirv) {
     return message.empty() ? std::string("invalid SPIR-V") : message;
 }
 
+// glslang's HLSL output is not valid Vulkan SPIR-V until legalised (opaque values in
+// structs and function parameters, pointers to them, relaxed block layout): the validator's
+// before-legalisation mode accepts exactly that and still refuses malformed modules, which would
+// otherwise reach the optimiser (one such module crashed it: issue #27). The block layout check
+// is skipped here: it was most of this validation's cost (Unity's cbuffers are large), and
+// validateSpirv checks the layout of the module that ships.
+std::optional<std::string> validateBeforeLegalization(const std::vector<uint32_t>& spirv) {
+    spvtools::SpirvTools tools(kTargetEnv);
+    std::string message;
+    tools.SetMessageConsumer(collectInto(message));
+    spvtools::ValidatorOptions options;
+    options.SetBeforeHlslLegalization(true);
+    options.SetRelaxBlockLayout(true);
+    options.SetSkipBlockLayout(true);
+    if (tools.Validate(spirv.data(), spirv.size(), options)) return std::nullopt;
+    return message.empty() ? std::string("invalid SPIR-V") : message;
+}
+
+OptimizeOutcome validateAndOptimize(const std::vector<uint32_t>& spirv, OptimizationLevel level) {
+    OptimizeOutcome outcome;
+    outcome.invalidInput = validateBeforeLegalization(spirv);
+    if (!outcome.invalidInput) outcome.optimized = optimizeSpirv(spirv, level);
+    return outcome;
+}
+
 std::string spirvToolsVersionString() { return spvSoftwareVersionString(); }
 
 }  // namespace varc::driver

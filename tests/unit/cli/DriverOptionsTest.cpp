@@ -26,6 +26,8 @@ TEST(DriverOptionsTest, NoFlagsGiveTheDriversDefaults) {
     EXPECT_EQ(options.keepPrunedSources, defaults.keepPrunedSources);
     EXPECT_EQ(options.cache, nullptr) << "no level, no cache";
     EXPECT_FALSE(options.progress);
+    // Only the varc executable enables the workers (they re-execute it): not this test binary.
+    EXPECT_EQ(options.optimizerPool, nullptr);
 }
 
 TEST(DriverOptionsTest, EveryFlagIsCopied) {

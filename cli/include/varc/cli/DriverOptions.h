@@ -16,6 +16,12 @@ namespace varc::cli {
 // keepPrunedSources. CompileOptions{} gives the driver's defaults.
 driver::BuildOptions toBuildOptions(const CompileOptions& compile, const ShaderInputOptions& input);
 
+// Lets toBuildOptions give the driver an optimiser pool that re-executes this program as its
+// workers (`__optimizer-worker`, which runCli serves). Only the `varc` executable calls it: a test
+// binary linking the CLI library would otherwise spawn copies of itself. Without it SPIRV-Tools
+// runs in-process.
+void enableOptimizerWorkers();
+
 // "-O0", "-O" or "-Os": how the flag, and the pack's build fingerprint, name |level|.
 std::string optimizationFlag(driver::OptimizationLevel level);
 

@@ -37,27 +37,74 @@ std::vector<std::string> splitWords(std::string_view text) {
     return words;
 }
 
-// glslang's output for one program text: compiled, then (when it compiled) optimised and
-// validated.
+// glslang's output for one program text: compiled, then (when it compiled) validated as it
+// stands, optimised and validated again.
 struct Attempt {
     CompileOutput compiled;
     SpirvResult optimized;
-    std::optional<std::string> invalid;  // the validator's message
+    std::optional<std::string> invalid;   // the validator's message, on glslang's output or ours
+    bool invalidInput = false;            // |invalid| is about glslang's output
+    std::optional<std::string> crashed;   // the optimiser worker's fate when it gave no outcome
+    std::optional<std::string> fellBack;  // why legalisation alone replaced -O/-Os
 };
 
+// The optimisation recipe |level| names, for messages.
+std::string recipeName(OptimizationLevel level) {
+    switch (level) {
+        case OptimizationLevel::None:
+            return "legalisation (-O0)";
+        case OptimizationLevel::Performance:
+            return "-O recipe";
+        case OptimizationLevel::Size:
+            return "-Os recipe";
+    }
+    return "optimiser";
+}
+
+// validateAndOptimize of |spirv|, in this process or in a worker of |options|' pool. When a
+// worker dies on -O/-Os, legalisation alone is a safe fallback (every module needs it, and it
+// is a subset of the passes that crashed): it is tried once, and the attempt says why.
+void optimizeInto(Attempt& attempt, const std::vector<uint32_t>& spirv,
+                  const BuildOptions& options) {
+    OptimizationLevel level = options.optimization;
+    if (!options.optimizerPool) {
+        OptimizeOutcome outcome = validateAndOptimize(spirv, level);
+        attempt.invalid = std::move(outcome.invalidInput);
+        attempt.invalidInput = attempt.invalid.has_value();
+        attempt.optimized = std::move(outcome.optimized);
+        return;
+    }
+    IsolatedOutcome isolated = options.optimizerPool->optimize(spirv, level);
+    if (!isolated.outcome && level != OptimizationLevel::None) {
+        std::string first = "the SPIR-V optimiser worker " + isolated.failure + " running the " +
+                            recipeName(level) + " on this program";
+        isolated = options.optimizerPool->optimize(spirv, OptimizationLevel::None);
+        if (isolated.outcome)
+            attempt.fellBack = first;
+        else
+            attempt.crashed = first + ", and " + isolated.failure + " again on legalisation alone";
+    } else if (!isolated.outcome) {
+        attempt.crashed = "the SPIR-V optimiser worker " + isolated.failure + " running " +
+                          recipeName(level) + " on this program";
+    }
+    if (!isolated.outcome) return;
+    attempt.invalid = std::move(isolated.outcome->invalidInput);
+    attempt.invalidInput = attempt.invalid.has_value();
+    attempt.optimized = std::move(isolated.outcome->optimized);
+}
+
 Attempt compileAndValidate(const StageProgram& program, const std::string& text,
-                           OptimizationLevel level) {
+                           const BuildOptions& options) {
     Attempt attempt;
     // glslang's preprocessed output keeps the lines above `#version`; the compile needs it first.
-    const std::string source = program.language == shaderlab::ProgramLanguage::Glsl
-                                   ? hoistGlslVersion(text)
-                                   : text;
+    const std::string source =
+        program.language == shaderlab::ProgramLanguage::Glsl ? hoistGlslVersion(text) : text;
     attempt.compiled =
         compileProgram({source, "", program.language, program.stage, program.entryPoint});
     if (!attempt.compiled.ok) return attempt;
     attempt.compiled.spirv = splitMatrixExtendedMath(attempt.compiled.spirv);
-    attempt.optimized = optimizeSpirv(attempt.compiled.spirv, level);
-    if (!attempt.optimized.ok) return attempt;
+    optimizeInto(attempt, attempt.compiled.spirv, options);
+    if (attempt.crashed || attempt.invalid || !attempt.optimized.ok) return attempt;
     attempt.optimized.spirv = markConstantImageOffsets(attempt.optimized.spirv);
     attempt.invalid = validateSpirv(attempt.optimized.spirv);
     return attempt;
@@ -133,7 +180,7 @@ std::vector<std::string> unknownVariables(const std::string& log) {
 // Unity accepts are accepted.
 Attempt compileWithRewrites(const StageProgram& program, const std::string& text,
                             const BuildOptions& options) {
-    Attempt attempt = compileAndValidate(program, text, options.optimization);
+    Attempt attempt = compileAndValidate(program, text, options);
     std::vector<std::string> calls, unknownNames;
     bool scalarAnyAll = false;
     std::string previous = text;
@@ -144,7 +191,7 @@ Attempt compileWithRewrites(const StageProgram& program, const std::string& text
         std::string rewritten = frontend::hoistLoopVariables(
             frontend::rewriteHlslForGlslang(text, calls, scalarAnyAll), unknownNames);
         if (rewritten == previous) break;
-        attempt = compileAndValidate(program, rewritten, options.optimization);
+        attempt = compileAndValidate(program, rewritten, options);
         previous = std::move(rewritten);
     }
     return attempt;
@@ -203,16 +250,28 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
         if (!diagnostic.location.isKnown()) diagnostic.location = program.origin;
     }
     if (!compiled.ok) return result;
+    if (attempt.crashed) return fail(*attempt.crashed + " (please report it with this shader)");
+    if (attempt.invalid && attempt.invalidInput)
+        return fail("glslang's SPIR-V is invalid (refused before optimising): " + *attempt.invalid);
     SpirvResult& optimized = attempt.optimized;
     if (!optimized.ok) return fail("SPIR-V optimisation failed: " + optimized.message);
     if (attempt.invalid) return fail("generated SPIR-V is invalid: " + *attempt.invalid);
+    if (attempt.fellBack) {
+        result.diagnostics.push_back(
+            {Severity::Warning,
+             program.origin,
+             *attempt.fellBack + "; built it with legalisation alone (unoptimised)",
+             {}});
+    }
     std::optional<SemanticsByLocation> semantics = hlslSemantics(compiled.spirv);
     std::optional<pack::ProgramReflection> reflection;
     if (semantics) reflection = reflectSpirv(optimized.spirv, *semantics, vertex);
     if (!reflection) return fail("cannot reflect the generated SPIR-V");
     SpirvResult stripped = stripDebugInfo(optimized.spirv);
     if (!stripped.ok) return fail("cannot strip SPIR-V debug names: " + stripped.message);
-    if (cache) {
+    // A fallback's module is not what the cache key promises (-O/-Os): it is not stored, so the
+    // next build tries the recipe again and warns again.
+    if (cache && !attempt.fellBack) {
         onCacheFailure(cache->store(
             *key, {optimized.spirv, stripped.spirv, std::move(*semantics), compiled.log}));
     }

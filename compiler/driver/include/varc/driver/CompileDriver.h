@@ -12,6 +12,7 @@
 
 #include "varc/cache/CacheChain.h"
 #include "varc/core/Diagnostic.h"
+#include "varc/driver/OptimizerPool.h"
 #include "varc/driver/ShardPlan.h"
 #include "varc/driver/SpirvOptimizer.h"
 #include "varc/frontend/ShaderLoader.h"
@@ -46,6 +47,10 @@ struct BuildOptions {
     // compiled again, programs compiled are stored there. nullptr = no cache. BuildOutput reports
     // the levels' statistics; the driver adds their warnings to the diagnostics.
     std::shared_ptr<cache::CacheChain> cache;
+    // Where SPIRV-Tools runs (validation before legalisation and the optimiser): in these worker
+    // processes, so a crash or hang in it is an error for one program (and -O/-Os fall back to
+    // legalisation alone with a warning); nullptr = in this process. `varc` sets it.
+    std::shared_ptr<OptimizerPool> optimizerPool;
     // A pass with more variants is an error before anything is enumerated (VariantLimit.h).
     uint64_t maxVariantsPerPass = frontend::kDefaultMaxVariantsPerPass;
     // Keep the distinct pruned stage sources (BuildOutput::prunedSources) and which one each

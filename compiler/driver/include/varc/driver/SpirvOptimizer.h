@@ -33,6 +33,21 @@ SpirvResult stripDebugInfo(const std::vector<uint32_t>& spirv);
 // Validates |spirv| for Vulkan 1.0; returns the validator's message, or nullopt when valid.
 std::optional<std::string> validateSpirv(const std::vector<uint32_t>& spirv);
 
+// Validates glslang's output as the optimiser receives it (before HLSL legalisation, with the
+// relaxed block layout); returns the validator's message, or nullopt when valid.
+std::optional<std::string> validateBeforeLegalization(const std::vector<uint32_t>& spirv);
+
+// What validateAndOptimize made of one module: either the input was refused, or it was
+// optimised (which may still fail, as optimized.ok and optimized.message say).
+struct OptimizeOutcome {
+    std::optional<std::string> invalidInput;  // the validator's message on glslang's output
+    SpirvResult optimized;                    // set when the input was valid
+};
+
+// validateBeforeLegalization, then, for a valid module, optimizeSpirv: the unit of work an
+// optimiser worker process runs (OptimizerWorker.h), also run in-process.
+OptimizeOutcome validateAndOptimize(const std::vector<uint32_t>& spirv, OptimizationLevel level);
+
 // "v2023.1" for pack headers.
 std::string spirvToolsVersionString();
 
