@@ -49,9 +49,8 @@ Attempt compileAndValidate(const StageProgram& program, const std::string& text,
                            OptimizationLevel level) {
     Attempt attempt;
     // glslang's preprocessed output keeps the lines above `#version`; the compile needs it first.
-    const std::string source = program.language == shaderlab::ProgramLanguage::Glsl
-                                   ? hoistGlslVersion(text)
-                                   : text;
+    const std::string source =
+        program.language == shaderlab::ProgramLanguage::Glsl ? hoistGlslVersion(text) : text;
     attempt.compiled =
         compileProgram({source, "", program.language, program.stage, program.entryPoint});
     if (!attempt.compiled.ok) return attempt;
@@ -225,6 +224,12 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
 double threadCpuSeconds() {
     timespec now{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+    return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
+}
+
+double processCpuSeconds() {
+    timespec now{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
     return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
 }
 
