@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // The staged summary `varc build` prints.
 #include "varc/cli/BuildReport.h"
-#include "varc/cli/VariantReport.h"
 
 #include <iomanip>
 #include <ostream>
 #include <sstream>
 
+#include "varc/cli/VariantReport.h"
 #include "varc/core/JoinWords.h"
 #include "varc/variants/PassKeywords.h"
 
@@ -162,6 +162,10 @@ Json buildReportJson(const std::vector<frontend::LoadedShader>& shaders,
             {"programs", sizes.modules},
             {"compiled_sources", build.compiledSources},
             {"preprocessed", build.preprocessedPrograms},
+            {"keyword_projections", build.keywordProjections},
+            {"projection_walks", build.projectionWalks},
+            {"unprojected_stages", build.unprojectedStages},
+            {"frontend_seconds", build.frontendSeconds},
             {"cached_sources", build.cachedSources},
             {"cached_stage_sources", build.cachedStageSources},
             // Programs glslang compiled in this build (0 when the cache served them all).

@@ -56,6 +56,7 @@ driver::BuildOptions toBuildOptions(const CompileOptions& compile,
     options.jobs = compile.jobs;
     options.keepGoing = compile.keepGoing;
     options.debugNames = compile.debugNames;
+    options.projectKeywords = !compile.noKeywordProjection;
     options.maxVariantsPerPass = compile.maxVariants;
     options.shard = compile.shard;
     options.cache = openCacheLevels(compile.cacheLevels);

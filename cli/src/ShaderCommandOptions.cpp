@@ -110,6 +110,9 @@ void addBuildOutputs(CLI::App& cmd, BuildCommandOptions& options) {
     cmd.add_flag("-g,--debug-names", options.compile.debugNames,
                  "Keep OpName/OpMemberName in the SPIR-V (bigger packs; for GPU debuggers)");
     addMaxVariants(cmd, options.compile.maxVariants);
+    cmd.add_flag("--no-keyword-projection", options.compile.noKeywordProjection,
+                 "Preprocess each variant's keywords, not only those its branches look up "
+                 "(same pack; for measuring and checking)");
 }
 
 }  // namespace

@@ -8,7 +8,8 @@
 //     point, and intern the text -> source ids (identical programs found before glslang runs).
 //     Defines the pass text never names are dropped first (ObservedDefines.h), so variants and
 //     stages that differ only in those share one preprocessing and one pruning;
-//     (driver/PassJob.h);
+//     (driver/PassJob.h). Keywords the preprocessor never looks up in a variant's branches are
+//     dropped too (KeywordProjection.h): one preprocessing per distinct projection;
 //  2. per distinct source: glslang -> SPIRV-Tools optimise -> validate, in parallel, or the
 //     program cache (driver/ProgramCompiler.h);
 //  3. intern the SPIR-V bytes -> program ids, in enumeration order, and derive the statistics.
@@ -21,6 +22,7 @@
 
 namespace varc::driver {
 
+using detail::processCpuSeconds;
 using detail::ProgramBuilder;
 
 std::optional<BuildOutput> buildPrograms(const std::vector<frontend::LoadedShader>& shaders,
@@ -32,7 +34,9 @@ std::optional<BuildOutput> buildPrograms(const std::vector<frontend::LoadedShade
     // that all errors are reported at once.
     bool ok = builder.plan(shaders, sink);
     builder.chooseShardUnits();
+    const double frontendStart = processCpuSeconds();
     if (ok || options.keepGoing) ok = builder.internSources() && ok;
+    const double frontendSeconds = processCpuSeconds() - frontendStart;
     if (ok || options.keepGoing) ok = builder.compileSources() && ok;
     builder.flushCacheWriteBacks();
     builder.flushDiagnostics(sink);
@@ -44,6 +48,8 @@ std::optional<BuildOutput> buildPrograms(const std::vector<frontend::LoadedShade
     if (!ok) return std::nullopt;
     BuildOutput output = builder.assemble();
     output.preprocessedPrograms = builder.preprocessedPrograms();
+    builder.projectionStats(output);
+    output.frontendSeconds = frontendSeconds;
     output.cachedStageSources = builder.cachedStageSources();
     output.cacheLevels = builder.cacheStats();
     return output;

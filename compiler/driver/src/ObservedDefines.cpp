@@ -198,10 +198,13 @@ bool ObservedNames::mayObserve(std::string_view name) const {
     return mPastesTokens && isFormable(name);
 }
 
+bool ObservedNames::mayPaste(std::string_view name) const {
+    return mObservesAll || isPastedEnd(name) || (mPastesTokens && isFormable(name));
+}
+
 void dropUnobservedMacros(std::vector<PredefinedMacro>& macros, const ObservedNames& names) {
     std::erase_if(macros, [&names](const PredefinedMacro& macro) {
-        return macro.kind == PredefinedMacro::Kind::Define &&
-               !names.mayObserve(macro.identifier());
+        return macro.kind == PredefinedMacro::Kind::Define && !names.mayObserve(macro.identifier());
     });
 }
 

@@ -64,6 +64,9 @@ struct CompileOptions {
     driver::OptimizationLevel optimization = driver::OptimizationLevel::Performance;  // -O0|-O|-Os
     bool keepGoing = false;   // --keep-going
     bool debugNames = false;  // -g, --debug-names
+    // --no-keyword-projection: preprocess once per variant's observed defines, as before the
+    // keyword projection (BuildOptions::projectKeywords); same pack, for measuring and checking.
+    bool noKeywordProjection = false;
     driver::ShardSpec shard;  // --shard K/N (1/1: all)
     // The program cache's levels in order: --cache-dir DIR (or $VARC_CACHE_DIR) as a folder
     // level, then each --cache URL (or $VARC_CACHE's).

@@ -4,6 +4,7 @@
 #include <xxhash.h>
 
 #include <algorithm>
+#include <map>
 
 #include "varc/driver/CompileDriver.h"
 #include "varc/driver/GlslLegacyPreamble.h"
@@ -56,11 +57,40 @@ bool collectStages(PassJob& job, DiagnosticSink& sink) {
     return true;
 }
 
-// The preamble of one (variant, stage) without the defines the pass text cannot observe.
+void setUpProjections(PassJob& job) {
+    const variants::KeywordTable& table = job.pass->space->table();
+    std::optional<ObservedNames> own;
+    const ObservedNames& names = job.observed ? *job.observed : own.emplace(job.text);
+    variants::VariantKey formable;
+    for (size_t k = 0; k < table.size(); ++k)
+        if (names.mayPaste(table.name(k))) formable.set(k);
+    auto text = std::make_shared<const ProjectionText>(job.text, table.names(), formable);
+    // Stages whose preambles differ only in macros the text cannot name (the stage macros,
+    // mostly) walk alike: they share one projection, and so its walks.
+    std::map<std::string, std::shared_ptr<KeywordProjection>> byBase;
+    for (const auto& [stage, entry] : job.stages) {
+        DefineContext context{
+            job.pass->pass->lightMode(), job.pass->keywords.target, languageOf(job), stage, {}};
+        std::vector<PredefinedMacro> macros = predefinedMacros(context);
+        dropUnobservedMacros(macros, names);
+        if (job.userDefines) job.userDefines->adopt(macros);
+        std::string base = writePreamble(macros);
+        if (languageOf(job) == shaderlab::ProgramLanguage::Glsl)
+            base += legacyGlslPreamble(job.text, stage);
+        std::shared_ptr<KeywordProjection>& projection = byBase[base];
+        if (!projection) projection = std::make_shared<KeywordProjection>(text, base);
+        job.projections.push_back(projection);
+    }
+}
+
 std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex) {
     const auto& [stage, entry] = job.stages[stageIndex];
+    variants::VariantKey key = job.keys[variant];
+    if (!job.projections.empty()) {
+        if (auto observed = job.projections[stageIndex]->observedOf(key)) key = *observed;
+    }
     DefineContext context{job.pass->pass->lightMode(), job.pass->keywords.target, languageOf(job),
-                          stage, job.pass->space->table().namesOf(job.keys[variant])};
+                          stage, job.pass->space->table().namesOf(key)};
     std::vector<PredefinedMacro> macros = predefinedMacros(context);
     if (job.observed) dropUnobservedMacros(macros, *job.observed);
     if (job.userDefines) job.userDefines->adopt(macros);

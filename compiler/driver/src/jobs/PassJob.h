@@ -16,6 +16,7 @@
 #include "jobs/TextRewriteMemo.h"
 #include "varc/core/Diagnostic.h"
 #include "varc/core/Stage.h"
+#include "varc/driver/KeywordProjection.h"
 #include "varc/driver/ObservedDefines.h"
 #include "varc/driver/ProgramCache.h"
 #include "varc/driver/UserDefines.h"
@@ -39,7 +40,9 @@ struct PassJob {
     std::string text;  // the expanded source, in the front end's #line convention
     std::optional<ObservedNames> observed;   // the macro names |text| can see; none: keep all
     std::optional<UserDefines> userDefines;  // the macros |text| defines itself
-    ProgramCacheKey textHash;                // of |text|, when a program cache is used
+    // Per stage: which keywords each variant's preprocessing looks up; empty: all are kept.
+    std::vector<std::shared_ptr<KeywordProjection>> projections;
+    ProgramCacheKey textHash;  // of |text|, when a program cache is used
     // |text|'s variant-independent rewrites, shared by the job's variants (and its copies).
     std::shared_ptr<TextRewriteMemo> rewrites = std::make_shared<TextRewriteMemo>();
     // sourceIds[variant * stages.size() + stageIndex]
@@ -73,7 +76,11 @@ std::string contextOf(const PassJob& job, Stage stage, size_t variant);
 // The stages a pass compiles, from its #pragma vertex/fragment/...; reports missing entries.
 bool collectStages(PassJob& job, DiagnosticSink& sink);
 
-// The preamble of one (variant, stage) without the defines the pass text cannot observe.
+// Sets up |job|'s keyword projections (one per stage), after its stages and text are known.
+void setUpProjections(PassJob& job);
+
+// The preamble of one (variant, stage) without the defines the pass text cannot observe, nor
+// the keywords its preprocessing does not look up in that variant.
 std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex);
 
 // What glslang's preprocessing of |job|'s text depends on besides the text: the preamble, and

@@ -96,6 +96,7 @@ bool ProgramBuilder::plan(const std::vector<frontend::LoadedShader>& shaders,
             if (mOptions.shareUnobservedDefines) job.observed.emplace(job.text);
             job.userDefines.emplace(job.text);
             if (mCache) job.textHash = ProgramCache::hashText(job.text);
+            if (mOptions.projectKeywords) setUpProjections(job);
             mJobs.push_back(std::move(job));
         }
     }
@@ -140,9 +141,8 @@ bool ProgramBuilder::internChunk(size_t jobIndex, size_t firstItem, size_t count
     return !(mGrouper.hasErrors() && !mOptions.keepGoing);
 }
 
-ProgramBuilder::ChunkPlan ProgramBuilder::planChunk(const PassJob& job,
-                                                                  size_t firstItem,
-                                                                  size_t count) const {
+ProgramBuilder::ChunkPlan ProgramBuilder::planChunk(const PassJob& job, size_t firstItem,
+                                                    size_t count) const {
     const size_t stages = job.stages.size();
     ChunkPlan chunk;
     chunk.itemKeys.resize(count);
@@ -228,7 +228,7 @@ void ProgramBuilder::preprocessAndPrune(const PassJob& job, ChunkPlan& chunk) {
 }
 
 void ProgramBuilder::internItems(size_t jobIndex, size_t firstItem, size_t count,
-                                        ChunkPlan& chunk) {
+                                 ChunkPlan& chunk) {
     const size_t stages = mJobs[jobIndex].stages.size();
     for (size_t i = 0; i < count; ++i) {
         size_t item = firstItem + i;
@@ -271,6 +271,18 @@ bool ProgramBuilder::internSources() {
         }
     }
     return !mGrouper.hasErrors();
+}
+
+void ProgramBuilder::projectionStats(BuildOutput& output) const {
+    for (const PassJob& job : mJobs) {
+        std::set<const KeywordProjection*> seen;  // stages may share one
+        for (const std::shared_ptr<KeywordProjection>& projection : job.projections) {
+            if (!seen.insert(projection.get()).second) continue;
+            output.keywordProjections += projection->projections();
+            output.projectionWalks += projection->walks();
+            output.unprojectedStages += projection->usable() ? 0 : 1;
+        }
+    }
 }
 
 void ProgramBuilder::noteCacheFailure(const Status& stored) const {

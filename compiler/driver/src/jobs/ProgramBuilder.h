@@ -58,6 +58,8 @@ public:
     void flushDiagnostics(DiagnosticSink& sink) const { mGrouper.flush(sink); }
 
     size_t preprocessedPrograms() const { return mPreprocessed; }
+    // Adds the keyword projections' counts to |output|.
+    void projectionStats(BuildOutput& output) const;
     const std::string& cacheError() const { return mCacheError; }
     std::vector<cache::CacheLevelStats> cacheStats() const {
         return mCache ? mCache->chain().stats() : std::vector<cache::CacheLevelStats>{};

@@ -43,5 +43,7 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
 
 // CPU time of the calling thread: unlike wall time, not inflated by other processes.
 double threadCpuSeconds();
+// CPU time of the whole process (every thread).
+double processCpuSeconds();
 
 }  // namespace varc::driver::detail

@@ -36,6 +36,10 @@ struct BuildOptions {
     // variants differing only in them share one preprocessing. Off only to check that it
     // changes no program.
     bool shareUnobservedDefines = true;
+    // Keep in each (variant, stage)'s preamble only the keywords its preprocessing looks up
+    // (KeywordProjection.h): one preprocessing per distinct projection. Off only to check that
+    // it changes no program.
+    bool projectKeywords = true;
     // Preprocess, prune and compile only this shard's share of the variants (ShardPlan.h: units
     // of whole variants, chosen before preprocessing); the other variants' stages name
     // placeholders (varc/pack/PartialPack.h) for `varc merge` to fill from the other parts.
@@ -96,10 +100,17 @@ struct BuildOutput {
     std::vector<std::string> prunedSources;
     size_t compiledSources = 0;       // glslang compilations
     size_t preprocessedPrograms = 0;  // glslang preprocessing runs (before pruning)
-    size_t cachedSources = 0;         // of compiledSources, taken from the program cache
-    size_t cachedStageSources = 0;    // pruned (variant, stage) sources taken from it
-    size_t items = 0;                 // (variant, stage) items of every pass built
-    size_t otherShardItems = 0;       // of items, left to other shards (--shard)
+    // Distinct keyword projections over every pass and stage the analysis decided
+    // (KeywordProjection.h; stages whose preambles differ only in macros the text cannot name
+    // share one), the walks of the text that found them, and the projections it gave up on
+    // (every observed keyword kept there).
+    size_t keywordProjections = 0, projectionWalks = 0, unprojectedStages = 0;
+    // Process CPU time of phase 1 (preprocessing, pruning, interning): all threads. Measured.
+    double frontendSeconds = 0;
+    size_t cachedSources = 0;       // of compiledSources, taken from the program cache
+    size_t cachedStageSources = 0;  // pruned (variant, stage) sources taken from it
+    size_t items = 0;               // (variant, stage) items of every pass built
+    size_t otherShardItems = 0;     // of items, left to other shards (--shard)
     std::vector<cache::CacheLevelStats> cacheLevels;  // per cache level, in order (none: empty)
     // Sum over compiled sources of their in-process compile CPU time (glslang, optimiser,
     // validator, reflection), excluding preprocessing and dedup: divided by the thread count, the

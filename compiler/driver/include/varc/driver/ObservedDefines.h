@@ -31,6 +31,9 @@ public:
 
     // Thread-safe (the answers for formed names are kept, shared by copies).
     bool mayObserve(std::string_view name) const;
+    // Whether token pasting (`##`) may form |name|: such a name can be looked up wherever a
+    // paste happens, which the keyword projection does not follow.
+    bool mayPaste(std::string_view name) const;
 
 private:
     struct StringHash {
