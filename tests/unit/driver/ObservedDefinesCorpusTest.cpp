@@ -74,7 +74,9 @@ std::pair<size_t, size_t> compareBuilds(const BuildOptions& a, const BuildOption
     auto second = buildPrograms(shaders, sourceMap, b, diagnostics);
     EXPECT_TRUE(first && second);
     if (!first || !second) return {0, 0};
-    if (sameSourceCount) EXPECT_EQ(first->compiledSources, second->compiledSources);
+    if (sameSourceCount) {
+        EXPECT_EQ(first->compiledSources, second->compiledSources);
+    }
     if (a.keepPrunedSources && b.keepPrunedSources) expectSameSources(*first, *second);
     EXPECT_EQ(first->programs.size(), second->programs.size());
     for (size_t i = 0; i < std::min(first->programs.size(), second->programs.size()); ++i) {
