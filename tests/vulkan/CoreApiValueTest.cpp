@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "FormulaComparison.h"
 #include "QuadDrawTest.h"
 #include "varc/scene/LightTextures.h"
 
@@ -54,26 +55,9 @@ protected:
         };
         image::Image image = drawQuad(pass, {keyword}, {}, textures);
         ASSERT_EQ(image.width(), kSize) << keyword;
-        double worst = 0;
-        std::string where;
-        for (uint32_t y = 0; y < kSize; ++y) {
-            for (uint32_t x = 0; x < kSize; ++x) {
-                double u = (x + 0.5) / kSize, v = (y + 0.5) / kSize;
-                Vec4 want = formula(u, v);
-                std::array<float, 4> got = image.pixelFloat(x, y);
-                for (size_t c = 0; c < static_cast<size_t>(channels); ++c) {
-                    double error =
-                        std::abs(got[c] - want[c]) / (absolute + relative * std::abs(want[c]));
-                    if (error > worst) {
-                        worst = error;
-                        where = "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                ") channel " + std::to_string(c) + ": GPU " +
-                                std::to_string(got[c]) + ", CPU " + std::to_string(want[c]);
-                    }
-                }
-            }
-        }
-        EXPECT_LE(worst, 1.0) << keyword << ": worst " << where;
+        testing::FormulaComparison result =
+            testing::compareWithFormula(image, formula, channels, absolute, relative);
+        EXPECT_LE(result.worst, 1.0) << keyword << ": worst " << result.where;
     }
 };
 

@@ -24,6 +24,7 @@
 #include <functional>
 #include <string>
 
+#include "FormulaComparison.h"
 #include "QuadDrawTest.h"
 #include "varc/reader/Pack.h"
 #include "varc/reader/PassView.h"
@@ -93,28 +94,10 @@ protected:
         };
         image::Image image = drawQuad(pass, {keyword}, {}, textures);
         ASSERT_EQ(image.width(), kSize) << keyword;
-        double worst = 0, largest = 0;
-        std::string where;
-        for (uint32_t y = 0; y < kSize; ++y) {
-            for (uint32_t x = 0; x < kSize; ++x) {
-                double u = (x + 0.5) / kSize, v = (y + 0.5) / kSize;
-                Vec4 want = formula(u, v);
-                std::array<float, 4> got = image.pixelFloat(x, y);
-                for (int c = 0; c < channels; ++c) {
-                    double w = want[static_cast<size_t>(c)], g = got[static_cast<size_t>(c)];
-                    double error = std::abs(g - w) / (absolute + relative * std::abs(w));
-                    largest = std::max(largest, std::abs(w));
-                    if (error > worst) {
-                        worst = error;
-                        where = "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                ") channel " + std::to_string(c) + ": GPU " + std::to_string(g) +
-                                ", CPU " + std::to_string(w);
-                    }
-                }
-            }
-        }
-        EXPECT_LE(worst, 1.0) << keyword << ": worst " << where;
-        EXPECT_GT(largest, 0.05) << keyword << ": the expected values are all near zero";
+        testing::FormulaComparison result =
+            testing::compareWithFormula(image, formula, channels, absolute, relative);
+        EXPECT_LE(result.worst, 1.0) << keyword << ": worst " << result.where;
+        EXPECT_GT(result.largest, 0.05) << keyword << ": the expected values are all near zero";
     }
 };
 

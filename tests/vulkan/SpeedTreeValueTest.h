@@ -13,6 +13,7 @@
 #include <functional>
 #include <string>
 
+#include "FormulaComparison.h"
 #include "QuadDrawTest.h"
 #include "varc/reader/ShaderView.h"
 
@@ -117,28 +118,10 @@ protected:
                        double absolute, double relative, const ShaderValues& values) {
         image::Image image = run(keyword, values);
         ASSERT_EQ(image.width(), kSize) << keyword;
-        double worst = 0, largest = 0;
-        std::string where;
-        for (uint32_t y = 0; y < kSize; ++y) {
-            for (uint32_t x = 0; x < kSize; ++x) {
-                double u = (x + 0.5) / kSize, v = (y + 0.5) / kSize;
-                Vec4 want = formula(u, v);
-                std::array<float, 4> got = image.pixelFloat(x, y);
-                for (size_t c = 0; c < static_cast<size_t>(channels); ++c) {
-                    double error =
-                        std::abs(got[c] - want[c]) / (absolute + relative * std::abs(want[c]));
-                    largest = std::max(largest, std::abs(want[c]));
-                    if (error > worst) {
-                        worst = error;
-                        where = "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                ") channel " + std::to_string(c) + ": GPU " +
-                                std::to_string(got[c]) + ", CPU " + std::to_string(want[c]);
-                    }
-                }
-            }
-        }
-        EXPECT_LE(worst, 1.0) << keyword << ": worst " << where;
-        EXPECT_GT(largest, 0.05) << keyword << ": the expected values are all near zero";
+        testing::FormulaComparison result =
+            testing::compareWithFormula(image, formula, channels, absolute, relative);
+        EXPECT_LE(result.worst, 1.0) << keyword << ": worst " << result.where;
+        EXPECT_GT(result.largest, 0.05) << keyword << ": the expected values are all near zero";
     }
 
     // Values of the wind uniforms the formula groups use.
