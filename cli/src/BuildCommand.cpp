@@ -219,6 +219,8 @@ void printBuildSummary(const BuildCommandOptions& options, const driver::ShardSp
     if (options.json) {
         nlohmann::ordered_json report = buildReportJson(shaders, build, sizes, seconds);
         if (direct) report["direct"] = directJson(*direct);
+        if (options.compile.sampleVariants > 0)
+            report["sample_variants"] = options.compile.sampleVariants;
         if (!shard.whole()) {
             report["shard"] = {{"shard", shard.text()},
                                {"compiled", build.compiledSources},
@@ -234,6 +236,11 @@ void printBuildSummary(const BuildCommandOptions& options, const driver::ShardSp
             << " of " << build.items << " variant stages (" << build.compiledSources
             << " distinct programs); the partial pack holds placeholders for the others "
             << "(join the parts with `varc merge`)\n";
+    }
+    if (options.compile.sampleVariants > 0) {
+        out << "Sampled: at most " << options.compile.sampleVariants
+            << " variants of each pass were built (--sample-variants); this pack is a check, "
+               "not one to ship\n";
     }
     if (direct) out << directSummaryLine(*direct) << "\n";
     out << "wrote " << options.outputPath << "\n";

@@ -37,6 +37,7 @@ std::string optionLines(const BuildCommandOptions& options) {
     text += "compression-level " + std::to_string(options.compressionLevel) + "\n";
     text += "shard " + compile.shard.text() + "\n";
     text += "max-variants " + std::to_string(compile.maxVariants) + "\n";
+    text += "sample-variants " + std::to_string(compile.sampleVariants) + "\n";
     text += "keep-going " + std::to_string(compile.keepGoing) + "\n";
     return text;
 }

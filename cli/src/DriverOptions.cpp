@@ -58,6 +58,7 @@ driver::BuildOptions toBuildOptions(const CompileOptions& compile,
     options.debugNames = compile.debugNames;
     options.projectKeywords = !compile.noKeywordProjection;
     options.maxVariantsPerPass = compile.maxVariants;
+    options.sampleVariantsPerPass = compile.sampleVariants;
     options.shard = compile.shard;
     options.cache = openCacheLevels(compile.cacheLevels);
     options.sourcePaths = sourcePathMap(compile, input);

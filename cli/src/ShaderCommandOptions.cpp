@@ -110,6 +110,11 @@ void addBuildOutputs(CLI::App& cmd, BuildCommandOptions& options) {
     cmd.add_flag("-g,--debug-names", options.compile.debugNames,
                  "Keep OpName/OpMemberName in the SPIR-V (bigger packs; for GPU debuggers)");
     addMaxVariants(cmd, options.compile.maxVariants);
+    cmd.add_option("--sample-variants", options.compile.sampleVariants,
+                   "Build at most N variants per pass, spread evenly over its variants (first and "
+                   "last included): a quick check that every pass compiles, not a pack to ship")
+        ->type_name("N")
+        ->check(CLI::PositiveNumber);
     cmd.add_flag("--no-keyword-projection", options.compile.noKeywordProjection,
                  "Preprocess each variant's keywords, not only those its branches look up "
                  "(same pack; for measuring and checking)");

@@ -61,6 +61,7 @@ struct ShaderInputOptions {
 struct CompileOptions {
     unsigned jobs = kAllCores;                                    // -j N
     uint64_t maxVariants = frontend::kDefaultMaxVariantsPerPass;  // --max-variants N per pass
+    uint64_t sampleVariants = 0;  // --sample-variants N per pass (0: every variant)
     driver::OptimizationLevel optimization = driver::OptimizationLevel::Performance;  // -O0|-O|-Os
     bool keepGoing = false;   // --keep-going
     bool debugNames = false;  // -g, --debug-names

@@ -18,6 +18,7 @@
 #include "varc/driver/StageEffects.h"
 #include "varc/frontend/VariantLimit.h"
 #include "varc/pack/PartialPack.h"
+#include "varc/variants/VariantSample.h"
 
 namespace varc::driver::detail {
 
@@ -89,6 +90,7 @@ bool ProgramBuilder::plan(const std::vector<frontend::LoadedShader>& shaders,
             }
             // A project's plan lists what ships; without one every declared variant does.
             job.keys = job.pass->plan ? job.pass->plan->keys : job.pass->space->enumerate();
+            job.keys = variants::sampleEvenly(std::move(job.keys), mOptions.sampleVariantsPerPass);
             job.text = languageOf(job) == shaderlab::ProgramLanguage::Glsl
                            ? toGlslLineConvention(hoistGlslVersion(job.pass->source.text))
                            : job.pass->source.text;

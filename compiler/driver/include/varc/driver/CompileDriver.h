@@ -57,6 +57,10 @@ struct BuildOptions {
     std::shared_ptr<OptimizerPool> optimizerPool;
     // A pass with more variants is an error before anything is enumerated (VariantLimit.h).
     uint64_t maxVariantsPerPass = frontend::kDefaultMaxVariantsPerPass;
+    // At most this many variants of each pass are built, spread evenly over its enumeration order
+    // (variants::sampleEvenly): a quick check that every pass compiles, not a pack to ship; the
+    // other variants are left out of the pack. 0 = every variant.
+    uint64_t sampleVariantsPerPass = 0;
     // Keep the distinct pruned stage sources (BuildOutput::prunedSources) and which one each
     // variant's stage compiled (CompiledPass::variantSources), for `varc explain`.
     bool keepPrunedSources = false;
