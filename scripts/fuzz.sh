@@ -28,27 +28,50 @@ cmake --build "$build" -j "$(nproc)" --target varc_fuzzers
 # UBSan findings are errors, not warnings; glslang's process-wide pools are freed at exit.
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
-status=0
-for target in "${targets[@]}"; do
-    work="$build/corpus/$target" findings="$build/findings/$target"
+# fuzzOne TARGET: runs one target for $seconds; its report goes to $build/TARGET.report and its
+# exit status is the run's (0 clean, 1 a finding).
+fuzzOne() {
+    local target=$1
+    local work="$build/corpus/$target" findings="$build/findings/$target"
     mkdir -p "$work" "$findings"
+    local seeds=() dict=()
     if [ "$target" = pack_reader ]; then
         "$build/tests/fuzz/varc_pack_fuzz_seed" "$work"
-        seeds=()
     else
         seeds=("$root/tests/fuzz/corpus/$target")
     fi
-    dict=()
     [ -f "$root/tests/fuzz/dict/$target.dict" ] && dict=(-dict="$root/tests/fuzz/dict/$target.dict")
-    echo "fuzz: $target for ${seconds}s"
     if ! "$build/tests/fuzz/varc_${target}_fuzzer" "$work" "${seeds[@]}" "${dict[@]}" \
             -max_total_time="$seconds" -max_len=20000 -timeout=20 -rss_limit_mb=4096 \
             -artifact_prefix="$findings/" -print_final_stats=1 > "$build/$target.log" 2>&1; then
-        echo "fuzz: $target FAILED; see $build/$target.log and $findings/"
-        tail -40 "$build/$target.log"
-        status=1
-    else
-        grep -E '^stat::number_of_executed_units|^#[0-9]+ *DONE' "$build/$target.log" | tail -2
+        { echo "fuzz: $target FAILED; see $build/$target.log and $findings/"
+          tail -40 "$build/$target.log"; } > "$build/$target.report"
+        return 1
     fi
+    { echo "fuzz: $target clean for ${seconds}s"
+      grep -E '^stat::number_of_executed_units|^#[0-9]+ *DONE' "$build/$target.log" | tail -2
+    } > "$build/$target.report"
+}
+
+# Each target is one single-threaded libFuzzer process: as many run at once as there are cores,
+# so every target still gets its full $seconds while the job's wall time shrinks.
+status=0
+running=0
+for target in "${targets[@]}"; do
+    if [ "$running" -ge "$(nproc)" ]; then
+        wait -n || status=1
+        running=$((running - 1))
+    fi
+    echo "fuzz: $target for ${seconds}s"
+    rm -f "$build/$target.report"
+    fuzzOne "$target" &
+    running=$((running + 1))
+done
+while [ "$running" -gt 0 ]; do
+    wait -n || status=1
+    running=$((running - 1))
+done
+for target in "${targets[@]}"; do
+    cat "$build/$target.report" 2>/dev/null || { echo "fuzz: $target wrote no report"; status=1; }
 done
 exit $status

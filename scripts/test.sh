@@ -10,6 +10,15 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
+# timed LABEL CMD...: runs CMD and says how long it took; the README's CI figures come from these
+# lines of a CI run.
+timed() {
+    local label=$1 start=$SECONDS rc=0
+    shift
+    "$@" || rc=$?
+    echo "test: $label took $((SECONDS - start)) s"
+    return $rc
+}
 if [ "${1:-}" = --sanitize ]; then
     build=${VARC_SANITIZE_BUILD_DIR:-$root/build-san}
     cxx=$(command -v clang++-14 || command -v clang++ || true)
@@ -18,7 +27,8 @@ if [ "${1:-}" = --sanitize ]; then
     # which the tests ignore), built by clang at -O1 with line tables only: 3-4x less compile
     # time than g++ -O2 -g with the sanitizers, and no second build of the libraries for the
     # fuzzers. Warnings are the normal job's gate (g++ with -Werror), so they stay warnings here.
-    VARC_BUILD_DIR=$build "$root/scripts/build.sh" -DCMAKE_CXX_COMPILER="$cxx" \
+    timed "sanitizer build" env VARC_BUILD_DIR="$build" "$root/scripts/build.sh" \
+        -DCMAKE_CXX_COMPILER="$cxx" \
         -DVARC_SANITIZE="address;undefined" -DVARC_BUILD_FUZZERS=ON -DVARC_BUILD_BENCH=OFF \
         -DVARC_WERROR=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG"
     # Sanitizer reports are errors. Leak detection runs on every test that does not draw; the
@@ -29,22 +39,23 @@ if [ "${1:-}" = --sanitize ]; then
     # Packaging (label install: cmake install, cpack, an engine built against the prefix) is
     # the normal job's; it holds no code the sanitizers would see run.
     export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
-    (cd "$build" && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
-        ctest --output-on-failure -j "$(nproc)" -LE "vulkan|compat|install")
+    timed "sanitizer tests that do not draw" env ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+        ctest --test-dir "$build" --output-on-failure -j "$(nproc)" -LE "vulkan|compat|install"
     # The compatibility corpus builds several times slower under the sanitizers: there it runs
     # for crashes, hangs and unmapped messages only, with small variant spaces. Its property
     # check (compat.properties, label compat) is left out: it draws ~45 packs on lavapipe,
     # whose JIT runs many times slower under ASan, and the renderer code it drives is the code
     # the vulkan-labelled property tests (library, seeds, mutants) already run here.
-    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 bash "$root/tests/compat/corpus.sh" \
+    timed "sanitizer corpus" env ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+        bash "$root/tests/compat/corpus.sh" \
         "$build/varc" "$root/../shared/compat" "$root/docs/COMPATIBILITY.md" \
         "$build/compat-crashes" --crashes-only
-    (cd "$build" && ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 \
-        ctest --output-on-failure -j "$(nproc)" -L vulkan)
+    timed "sanitizer tests that draw" env ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 \
+        ctest --test-dir "$build" --output-on-failure -j "$(nproc)" -L vulkan
     export VARC_FUZZ_BUILD_DIR=$build VARC_FUZZ_REUSE_BUILD=1
-    exec "$root/scripts/fuzz.sh"
+    timed "fuzzers" "$root/scripts/fuzz.sh"
+    exit 0
 fi
-"$root/scripts/build.sh"
+timed build "$root/scripts/build.sh"
 build=${VARC_BUILD_DIR:-$root/build}
-cd "$build"
-ctest --output-on-failure -j "$(nproc)"
+timed tests ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
