@@ -73,13 +73,17 @@ half SpecularSetup_ShadowGetOneMinusReflectivity(half2 uv) {
 #endif
     return 1 - SpecularStrength(specColor);
 }
-#ifndef UNITY_SETUP_BRDF_INPUT
-#define UNITY_SETUP_BRDF_INPUT SpecularSetup
-#endif
 // Token pasting through one level of expansion (e.g. a workflow's setup name and a suffix).
 #define SHADOW_JOIN2(a, b) a##b
 #define SHADOW_JOIN(a, b) SHADOW_JOIN2(a, b)
+// The workflow the shader names (Unity's Standard shaders #define UNITY_SETUP_BRDF_INPUT);
+// without one, the metallic workflow (what varc's caster and its CPU reference,
+// runtime/reference MaterialResolver.cpp, have always assumed), without defining the name.
+#ifdef UNITY_SETUP_BRDF_INPUT
 #define SHADOW_ONEMINUSREFLECTIVITY SHADOW_JOIN(UNITY_SETUP_BRDF_INPUT, _ShadowGetOneMinusReflectivity)
+#else
+#define SHADOW_ONEMINUSREFLECTIVITY MetallicSetup_ShadowGetOneMinusReflectivity
+#endif
 
 struct VertexInput {
     float4 vertex : POSITION;
