@@ -9,6 +9,7 @@
 // api-value-tested: BRDF2_Unity_PBS UnityStandardDataApplyWeightToGbuffer MetallicRough
 // api-value-tested: NormalizePerPixelNormal WorldNormal Hash ImportanceSampleGGXDir
 // api-value-tested: ImportanceSampleGGX ImportanceSampleCosDir
+// api-value-tested: SubtractMainLightWithRealtimeAttenuationFromLightmap DecodeDirectionalSpecularLightmap
 // clang-format on
 #include <gtest/gtest.h>
 
@@ -228,6 +229,44 @@ TEST_F(StandardPbsValueTest, ImportanceSampleGgxWeight) {
             return Vec4{vh, nl, w, std::sqrt(1 - u)};
         },
         4, 2e-4, 2e-3);
+}
+
+// Subtractive mode: min(lm, lerp(max(lm - NdotL (1 - atten) lightColor, shadowColor), lm,
+// _LightShadowData.x)) with lm = (u, v, 0.5), atten = v, the light along +z.
+TEST_F(StandardPbsValueTest, SubtractMainLightFromLightmap) {
+    ShaderValues values;
+    values.set("_LightColor0", glm::vec4(1.0f, 0.8f, 0.6f, 1.0f));
+    values.set("_WorldSpaceLightPos0", glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
+    values.set("unity_ShadowColor", glm::vec4(0.1f, 0.2f, 0.3f, 1.0f));
+    values.set("_LightShadowData", glm::vec4(0.3f, 0.0f, 0.0f, 0.0f));
+    expectFormula(
+        "API_SUBTRACT",
+        [](double u, double v) {
+            Vec3 n = normalize({u - 0.5, 0.3, 1.0});
+            Vec3 lm{u, v, 0.5}, light{1.0, 0.8, 0.6}, shadow{0.1, 0.2, 0.3};
+            Vec4 out{0, 0, 0, 0};
+            for (int c = 0; c < 3; ++c) {
+                double rs = std::max(lm[c] - saturate(n[2]) * (1 - v) * light[c], shadow[c]);
+                out[c] = std::min(lm[c], lerp(rs, lm[c], 0.3));
+            }
+            return out;
+        },
+        3, 1e-4, 1e-3, values);
+}
+
+// Separate directional lightmaps: dir = dirTex.xyz * 2 - 1, d = saturate(|dir|); the light gets
+// color * d along dir / |dir|, the remainder color * (1 - d) is returned.
+TEST_F(StandardPbsValueTest, DecodeDirectionalSpecularLightmap) {
+    expectFormula(
+        "API_DIRSPEC",
+        [](double u, double v) {
+            Vec3 dir{2 * u - 1, 2 * v - 1, 0.6};
+            double len = std::sqrt(dot(dir, dir)), d = saturate(len);
+            Vec3 unit{dir[0] / len, dir[1] / len, dir[2] / len};
+            double ndotl = saturate(dot(normalize({0.2, 0.3, 1.0}), unit));
+            return Vec4{u * (1 - d), v * d, unit[0], ndotl};
+        },
+        4, 1e-4, 1e-3);
 }
 
 }  // namespace

@@ -10,7 +10,7 @@ Shader "Test/StandardPbsValues" {
             CGPROGRAM
             #pragma vertex vert
             #pragma fragment frag
-            #pragma multi_compile API_HSV API_BRDF3 API_BRDF2 API_GBUFFER_WEIGHT API_METALLIC_ROUGH API_IBL_DIR API_IBL_WEIGHT
+            #pragma multi_compile API_HSV API_BRDF3 API_BRDF2 API_GBUFFER_WEIGHT API_METALLIC_ROUGH API_IBL_DIR API_IBL_WEIGHT API_SUBTRACT API_DIRSPEC
             #include "UnityStandardCore.cginc"
             #include "UnityMetaPass.cginc"
             struct Interpolators {
@@ -48,6 +48,14 @@ Shader "Test/StandardPbsValues" {
                 half4 g0 = half4(u, v, 0.3, 0.9), g1 = half4(0.2, u, v, 0.5), g2 = half4(v, 0.1, u, 1.0);
                 UnityStandardDataApplyWeightToGbuffer(g0, g1, g2, 0.25 + 0.5 * u);
                 return float4(g0.r, g0.a, g1.a, g2.b);
+            #elif defined(API_SUBTRACT)
+                half3 n = normalize(half3(u - 0.5, 0.3, 1.0));
+                return float4(SubtractMainLightWithRealtimeAttenuationFromLightmap(half3(u, v, 0.5), v, 0, n), 0);
+            #elif defined(API_DIRSPEC)
+                UnityLight light;
+                half3 rest = DecodeDirectionalSpecularLightmap(half3(u, v, 0.5), half4(u, v, 0.8, 1.0),
+                                                               normalize(half3(0.2, 0.3, 1.0)), false, 0, light);
+                return float4(rest.x, light.color.y, light.dir.x, light.ndotl);
             #elif defined(API_IBL_DIR) || defined(API_IBL_WEIGHT)
                 float3 N = float3(0, 0, 1), tX = float3(1, 0, 0), tY = float3(0, 1, 0);
                 float3 V = normalize(float3(0.2, 0.1, 1.0));
