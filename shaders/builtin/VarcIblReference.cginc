@@ -7,7 +7,7 @@
 // visibility is SmithJointGGXVisibilityTerm. Written for varc from the textbook formulas
 // (Karis 2013, "Real Shading in Unreal Engine 4"; Walter et al. 2007).
 #if !defined(UNITY_IMAGE_BASED_LIGHTING_INCLUDED)
-#include "UnityImageBasedLighting.cginc" // includes this file again, after what it needs
+#error "VarcIblReference.cginc is a part of UnityImageBasedLighting.cginc: include that file instead"
 #elif !defined(VARC_IBL_REFERENCE_INCLUDED)
 #define VARC_IBL_REFERENCE_INCLUDED
 

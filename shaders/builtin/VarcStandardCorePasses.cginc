@@ -4,7 +4,7 @@
 // UnityStandardCore.cginc's header comment). Written for varc from the documented behaviour of
 // the Standard shader.
 #if !defined(UNITY_STANDARD_CORE_INCLUDED)
-#include "UnityStandardCore.cginc" // includes this file again, after the declarations it needs
+#error "VarcStandardCorePasses.cginc is a part of UnityStandardCore.cginc: include that file instead"
 #elif !defined(VARC_STANDARD_CORE_PASSES_INCLUDED)
 #define VARC_STANDARD_CORE_PASSES_INCLUDED
 
