@@ -133,4 +133,17 @@ void UnityDeferredCalculateLightParams(unity_v2f_deferred i, out float3 outWorld
     outFadeDist = fadeDist;
 }
 
+// The G-buffer's fifth target: the baked shadowmask of each texel (SHADOWS_SHADOWMASK).
+sampler2D _CameraGBufferTexture4;
+// Baked occlusion of the current light at uv: the shadowmask channel unity_OcclusionMaskSelector
+// picks, or 1 without SHADOWS_SHADOWMASK.
+half UnityDeferredSampleShadowMask(float2 uv) {
+    half shadowMaskAttenuation = 1.0;
+#if defined(SHADOWS_SHADOWMASK)
+    half4 shadowMask = tex2D(_CameraGBufferTexture4, uv);
+    shadowMaskAttenuation = saturate(dot(shadowMask, unity_OcclusionMaskSelector));
+#endif
+    return shadowMaskAttenuation;
+}
+
 #endif // UNITY_DEFERRED_LIBRARY_INCLUDED

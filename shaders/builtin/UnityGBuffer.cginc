@@ -35,4 +35,13 @@ UnityStandardData UnityStandardDataFromGbuffer(half4 inGBuffer0, half4 inGBuffer
     return data;
 }
 
+// Weighted layers (e.g. decals) summed into the G-buffer with additive blending: every
+// linearly encoded value is scaled by the weight (diffuse rgb, specular rgb and smoothness,
+// normal rgb); occlusion (gbuffer0.a) is left as is.
+void UnityStandardDataApplyWeightToGbuffer(inout half4 inOutGBuffer0, inout half4 inOutGBuffer1, inout half4 inOutGBuffer2, half alpha) {
+    inOutGBuffer0.rgb *= alpha;
+    inOutGBuffer1 *= alpha;
+    inOutGBuffer2.rgb *= alpha;
+}
+
 #endif // UNITY_GBUFFER_INCLUDED

@@ -116,4 +116,33 @@ inline UnityGI UnityGlobalIllumination(UnityGIInput data, half occlusion, half s
     return UnityGlobalIllumination(data, occlusion, smoothness, normalWorld, true);
 }
 
+// Subtractive lighting mode: the main light is baked into the lightmap, so a realtime shadow
+// must darken it. The light's estimated contribution where it is shadowed,
+// NdotL * (1 - attenuation) * _LightColor0, is subtracted, kept above unity_ShadowColor, faded
+// back to the lightmap by _LightShadowData.x (1 - shadow strength), and never brighter than
+// the lightmap.
+inline half3 SubtractMainLightWithRealtimeAttenuationFromLightmap(half3 lightmap, half attenuation, half4 bakedColorTex, half3 normalWorld) {
+    half ndotl = saturate(dot(normalWorld, _WorldSpaceLightPos0.xyz));
+    half3 estimatedShadowedLight = ndotl * (1 - attenuation) * _LightColor0.rgb;
+    half3 realtimeShadow = max(lightmap - estimatedShadowedLight, unity_ShadowColor.rgb);
+    realtimeShadow = lerp(realtimeShadow, lightmap, _LightShadowData.x);
+    return min(lightmap, realtimeShadow);
+}
+
+// Unity 5's "separate" directional lightmaps, which split a lightmap texel into a directional
+// light for the specular BRDF and a non-directional remainder. The direction is
+// dirTex.xyz * 2 - 1 and its length d in [0, 1] the directional share: o_light gets colour
+// color * d, the unit direction and its NdotL; the function returns the remainder
+// color * (1 - d). (varc's lightmaps are never in this format; realtimeNormalTex, the normal
+// Unity's realtime GI used for them, is not needed for this split.)
+inline half3 DecodeDirectionalSpecularLightmap(half3 color, half4 dirTex, half3 normalWorld, bool isRealtimeLightmap,
+                                              fixed4 realtimeNormalTex, out UnityLight o_light) {
+    half3 dir = dirTex.xyz * 2 - 1;
+    half d = saturate(length(dir));
+    o_light.dir = d > 0 ? dir / max(length(dir), 1e-4) : normalWorld;
+    o_light.color = color * d;
+    o_light.ndotl = saturate(dot(normalWorld, o_light.dir));
+    return color * (1 - d);
+}
+
 #endif // UNITY_GLOBAL_ILLUMINATION_INCLUDED

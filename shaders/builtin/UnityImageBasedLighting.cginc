@@ -63,4 +63,7 @@ half3 Unity_GlossyEnvironment(UNITY_ARGS_TEXCUBE(tex), half4 hdr, Unity_GlossyEn
 #include "UnityDeprecated.cginc"
 #undef INCLUDE_UNITY_IMAGE_BASED_LIGHTING_DEPRECATED
 
+// Reference integrals (importance sampling, DFG, pre-filtered radiance, diffuse/specular IBL).
+#include "VarcIblReference.cginc"
+
 #endif // UNITY_IMAGE_BASED_LIGHTING_INCLUDED

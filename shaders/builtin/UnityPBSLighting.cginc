@@ -25,6 +25,29 @@
     BRDF1_Unity_PBS(diffColor, specColor, (half)(oneMinusReflectivity), (half)(smoothness), normal, viewDir, light, gi)
 #endif
 
+// Extra indirect light of Unity 5's "separate" directional lightmaps (DIRLIGHTMAP_SEPARATE,
+// removed in 2017): varc has no such lightmaps, so the term is zero in every variant.
+inline half3 BRDF_Unity_Indirect(half3 baseColor, half3 specColor, half oneMinusReflectivity, half smoothness,
+                                 half3 normal, half3 viewDir, half occlusion, UnityGI gi) {
+    return half3(0, 0, 0);
+}
+#if !defined(UNITY_BRDF_GI)
+#define UNITY_BRDF_GI BRDF_Unity_Indirect
+#endif
+
+// Surface-shader GI of a SurfaceOutputStandard(Specular) s: the probe lookup data from its
+// smoothness and normal, then UnityGlobalIllumination (diffuse only in deferred passes whose
+// reflections come from the reflection buffers).
+#define UNITY_GLOSSY_ENV_FROM_SURFACE(x, s, data) \
+    Unity_GlossyEnvironmentData x = UnityGlossyEnvironmentSetup(s.Smoothness, data.worldViewDir, s.Normal, half3(0, 0, 0));
+#if defined(UNITY_PASS_DEFERRED) && UNITY_ENABLE_REFLECTION_BUFFERS
+#define UNITY_GI(x, s, data) x = UnityGlobalIllumination(data, s.Occlusion, s.Normal);
+#else
+#define UNITY_GI(x, s, data) \
+    UNITY_GLOSSY_ENV_FROM_SURFACE(g, s, data); \
+    x = UnityGlobalIllumination(data, s.Occlusion, s.Normal, g);
+#endif
+
 // ---------------------------------------------------------------------------------------------
 // Surface outputs and the Standard lighting functions (forward use).
 // ---------------------------------------------------------------------------------------------

@@ -131,8 +131,82 @@ half4 BRDF1_Unity_PBS(half3 diffColor, half3 specColor, half oneMinusReflectivit
     return half4(color, 1);
 }
 
-// varc ships one BRDF; the quality tiers of Unity's Standard shader all map to it.
-#define BRDF2_Unity_PBS BRDF1_Unity_PBS
-#define BRDF3_Unity_PBS BRDF1_Unity_PBS
+// BRDF1 takes |N.V| for back-facing view directions (Unity's switch; 1 would clamp instead).
+#define UNITY_HANDLE_CORRECTLY_NEGATIVE_NDOTV 0
+
+// The cheaper tiers Unity picks for lower shader targets (UNITY_PBS_USE_BRDF2 / _BRDF3), in
+// varc's units (diffuse without 1/pi, specular times pi, docs/LIGHTING.md §2).
+// BRDF2: GGX with visibility and Fresnel folded into one term (the "optimised mobile GGX" of
+// SIGGRAPH 2015): spec = a^2 / (4 d^2 max(0.1, LdotH^2) (a + 0.5)), d = NdotH^2 (a^2 - 1) + 1,
+// a = (1 - smoothness)^2, clamped to [0, 100]; indirect specular faded by
+// 1 - a * perceptualRoughness * (0.6 - 0.08 perceptualRoughness) towards the grazing colour
+// with the fourth-power Fresnel.
+half4 BRDF2_Unity_PBS(half3 diffColor, half3 specColor, half oneMinusReflectivity, half smoothness,
+                      float3 normal, float3 viewDir, UnityLight light, UnityIndirect gi)
+{
+    float3 halfDir = Unity_SafeNormalize(float3(light.dir) + viewDir);
+    half nl = saturate(dot(normal, light.dir));
+    float nh = saturate(dot(normal, halfDir));
+    half nv = saturate(dot(normal, viewDir));
+    float lh = saturate(dot(light.dir, halfDir));
+    half perceptualRoughness = SmoothnessToPerceptualRoughness(smoothness);
+    half roughness = PerceptualRoughnessToRoughness(perceptualRoughness);
+    float a2 = roughness * roughness;
+    float d = nh * nh * (a2 - 1.0f) + 1.00001f;
+    float specularTerm = a2 / (max(0.1f, lh * lh) * (roughness + 0.5f) * (d * d) * 4.0f);
+    specularTerm = clamp(specularTerm, 0.0, 100.0);
+#if defined(_SPECULARHIGHLIGHTS_OFF)
+    specularTerm = 0.0;
+#endif
+    half surfaceReduction = 1.0 - roughness * perceptualRoughness * (0.6 - 0.08 * perceptualRoughness);
+    half grazingTerm = saturate(smoothness + (1 - oneMinusReflectivity));
+    half3 color = (diffColor + specularTerm * specColor) * light.color * nl
+                + gi.diffuse * diffColor
+                + surfaceReduction * gi.specular * FresnelLerpFast(specColor, grazingTerm, nv);
+    return half4(color, 1);
+}
+
+// BRDF3 direct part: diffuse plus a normalised Phong lobe on the mirror direction,
+// (n + 2) / 2 * RdotL^n with RdotL^n = rlPow4^(n / 4) and n = 2 / a^2 - 2 (a = (1 - s)^2,
+// clamped to [1e-4, 10000]). Unity reads the lobe from the lookup texture unity_NHxRoughness;
+// varc evaluates it (the texture is declared for shaders that sample it themselves).
+half3 BRDF3_Direct(half3 diffColor, half3 specColor, half rlPow4, half smoothness) {
+    half r = 1 - smoothness;
+    half a = r * r;
+    half n = clamp(2.0 / max(a * a, 1e-4) - 2.0, 1e-4, 10000.0);
+    half specular = (n + 2.0) * 0.5 * pow(max(rlPow4, 0.0), n * 0.25);
+#if defined(_SPECULARHIGHLIGHTS_OFF)
+    specular = 0.0;
+#endif
+    return diffColor + specular * specColor;
+}
+// BRDF3 indirect part: diffuse GI times albedo, and the environment towards the grazing colour
+// by fresnelTerm.
+half3 BRDF3_Indirect(half3 diffColor, half3 specColor, UnityIndirect indirect, half grazingTerm, half fresnelTerm) {
+    half3 c = indirect.diffuse * diffColor;
+#if !defined(_GLOSSYREFLECTIONS_OFF)
+    c += indirect.specular * lerp(specColor, grazingTerm, fresnelTerm);
+#endif
+    return c;
+}
+// BRDF3: R = reflect(-viewDir, normal); rlPow4 = max(0, R.L)^4, fresnelTerm = (1 - NdotV)^4.
+half4 BRDF3_Unity_PBS(half3 diffColor, half3 specColor, half oneMinusReflectivity, half smoothness,
+                      float3 normal, float3 viewDir, UnityLight light, UnityIndirect gi)
+{
+    float3 reflDir = reflect(-viewDir, normal);
+    half nl = saturate(dot(normal, light.dir));
+    half nv = saturate(dot(normal, viewDir));
+    half rlPow4 = Pow4(max(0.0, (half)dot(reflDir, light.dir)));
+    half fresnelTerm = Pow4(1 - nv);
+    half grazingTerm = saturate(smoothness + (1 - oneMinusReflectivity));
+    half3 color = BRDF3_Direct(diffColor, specColor, rlPow4, smoothness) * light.color * nl;
+    color += BRDF3_Indirect(diffColor, specColor, gi, grazingTerm, fresnelTerm);
+    return half4(color, 1);
+}
+#if defined(SHADER_API_MOBILE)
+sampler2D unity_NHxRoughness;
+#else
+sampler2D_float unity_NHxRoughness;
+#endif
 
 #endif // UNITY_STANDARD_BRDF_INCLUDED

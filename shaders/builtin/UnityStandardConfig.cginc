@@ -39,6 +39,20 @@
 #ifndef UNITY_SPECCUBE_LOD_STEPS
 #define UNITY_SPECCUBE_LOD_STEPS (6)
 #endif
+// Exponent of the roughness-to-mip mapping of an alternative probe filtering Unity documents
+// (varc's perceptualRoughnessToMipmapLevel uses the r(1.7 - 0.7r) curve, not this one).
+#ifndef UNITY_SPECCUBE_LOD_EXPONENT
+#define UNITY_SPECCUBE_LOD_EXPONENT (1.5)
+#endif
+// The Standard passes save an interpolator by keeping the world position in the .w of the
+// tangent frame rows, unless those hold the parallax view direction.
+#ifndef UNITY_PACK_WORLDPOS_WITH_TANGENT
+    #if UNITY_REQUIRE_FRAG_WORLDPOS && !defined(_PARALLAXMAP)
+        #define UNITY_PACK_WORLDPOS_WITH_TANGENT 1
+    #else
+        #define UNITY_PACK_WORLDPOS_WITH_TANGENT 0
+    #endif
+#endif
 #ifndef UNITY_SAMPLE_FULL_SH_PER_PIXEL
 #define UNITY_SAMPLE_FULL_SH_PER_PIXEL 0
 #endif

@@ -120,11 +120,7 @@ VertexOutputBaseSimple vertForwardBaseSimple(VertexInput v) {
     #endif
 #endif
     TRANSFER_SHADOW(o);
-#if defined(LIGHTMAP_ON) || defined(DYNAMICLIGHTMAP_ON)
-    o.ambientOrLightmapUV = VertexLightmapUV(v);
-#else
-    o.ambientOrLightmapUV = half4(VertexAmbient(posWorld.xyz, normalWorld), 0);
-#endif
+    o.ambientOrLightmapUV = VertexGIForward(v, posWorld.xyz, normalWorld);
     o.normalWorld.w = Pow4(1 - saturate(dot(normalWorld, -eyeVec)));
 #if !GLOSSMAP
     o.eyeVec.w = UNIFORM_REFLECTIVITY();
@@ -208,14 +204,7 @@ half4 fragForwardBaseSimpleInternal(VertexOutputBaseSimple i) {
     UNITY_LIGHT_ATTENUATION(atten, i, s.posWorld);
     half occlusion = Occlusion(i.tex.xy);
     half rl = dot(REFLECTVEC_FOR_SPECULAR(i, s), LightDirForSpecular(i, mainLight));
-#if defined(LIGHTMAP_ON) || defined(DYNAMICLIGHTMAP_ON)
-    half3 ambient = 0;
-    float4 lightmapUV = i.ambientOrLightmapUV;
-#else
-    half3 ambient = i.ambientOrLightmapUV.rgb;
-    float4 lightmapUV = 0;
-#endif
-    UnityGI gi = FragmentGI(s, occlusion, ambient, lightmapUV, atten, mainLight);
+    UnityGI gi = FragmentGI(s, occlusion, i.ambientOrLightmapUV, atten, mainLight);
     // Indirect: diffuse GI, and the environment towards the grazing colour at the vertex Fresnel.
     half3 c = s.diffColor * gi.indirect.diffuse +
               gi.indirect.specular * lerp(s.specColor, PerVertexGrazingTerm(i, s), PerVertexFresnelTerm(i));

@@ -13,12 +13,15 @@
 #include "UnityStandardConfig.cginc"
 #include "UnityStandardUtils.cginc"
 #include "UnityLightingCommon.cginc" // _SpecColor
+#include "UnityPBSLighting.cginc"
 
 // A tangent frame is interpolated when a normal map, a parallax map or directional lightmaps
 // need it.
 #if defined(_NORMALMAP) || defined(DIRLIGHTMAP_COMBINED) || defined(_PARALLAXMAP)
 #define _TANGENT_TO_WORLD 1
 #endif
+// Unity 5.6 dropped samplers on D3D9 shader model 3 (16 samplers); Vulkan has no such limit.
+#define EXCEEDS_D3D9_SM3_MAX_SAMPLER_COUNT 0
 #if defined(_DETAIL_MULX2) || defined(_DETAIL_MUL) || defined(_DETAIL_ADD) || defined(_DETAIL_LERP)
 #define _DETAIL 1
 #endif
@@ -153,6 +156,23 @@ half2 MetallicGloss(float2 uv) {
     #else
         mg.g = _Glossiness;
     #endif
+#endif
+    return mg;
+}
+
+// Roughness workflow: x = metallic (_MetallicGlossMap.r or _Metallic), y = smoothness =
+// 1 - roughness (_SpecGlossMap.r or _Glossiness, which holds the roughness in this workflow).
+half2 MetallicRough(float2 uv) {
+    half2 mg;
+#ifdef _METALLICGLOSSMAP
+    mg.r = tex2D(_MetallicGlossMap, uv).r;
+#else
+    mg.r = _Metallic;
+#endif
+#ifdef _SPECGLOSSMAP
+    mg.g = 1.0f - tex2D(_SpecGlossMap, uv).r;
+#else
+    mg.g = 1.0f - _Glossiness;
 #endif
     return mg;
 }

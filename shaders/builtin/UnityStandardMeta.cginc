@@ -5,6 +5,11 @@
 #ifndef UNITY_STANDARD_META_INCLUDED
 #define UNITY_STANDARD_META_INCLUDED
 
+// The meta pass's vertex input carries the realtime lightmap uv (VertexInput.uv2); the compile
+// driver defines this for LightMode Meta passes, Unity 5.6-2017.4's file defined it itself.
+#ifndef UNITY_PASS_META
+#define UNITY_PASS_META 1
+#endif
 #include "UnityCG.cginc"
 #include "UnityStandardInput.cginc"
 #include "UnityMetaPass.cginc"

@@ -81,15 +81,31 @@ half MetallicSetup_ShadowGetOneMinusReflectivity(half2 uv) {
     return OneMinusReflectivityFromMetallic(metallicity);
 }
 
+// The stereo eye of the caster, with single-pass instanced stereo only.
+#if defined(UNITY_STEREO_INSTANCING_ENABLED)
+#define UNITY_STANDARD_USE_STEREO_SHADOW_OUTPUT_STRUCT 1
+#endif
+#ifdef UNITY_STANDARD_USE_STEREO_SHADOW_OUTPUT_STRUCT
+struct VertexOutputStereoShadowCaster {
+    UNITY_VERTEX_OUTPUT_STEREO
+};
+#endif
+
 void vertParticleShadowCaster(VertexInput v,
 #ifdef UNITY_STANDARD_USE_SHADOW_OUTPUT_STRUCT
     out VertexOutputShadowCaster o,
+#endif
+#ifdef UNITY_STANDARD_USE_STEREO_SHADOW_OUTPUT_STRUCT
+    out VertexOutputStereoShadowCaster os,
 #endif
     out float4 opos : SV_POSITION)
 {
     UNITY_SETUP_INSTANCE_ID(v);
 #ifdef UNITY_STANDARD_USE_SHADOW_OUTPUT_STRUCT
     UNITY_INITIALIZE_OUTPUT(VertexOutputShadowCaster, o);
+#endif
+#ifdef UNITY_STANDARD_USE_STEREO_SHADOW_OUTPUT_STRUCT
+    UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(os);
 #endif
     TRANSFER_SHADOW_CASTER_NOPOS(o, opos)
 #if defined(UNITY_STANDARD_USE_SHADOW_UVS)

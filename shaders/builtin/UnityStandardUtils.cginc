@@ -6,6 +6,7 @@
 #define UNITY_STANDARD_UTILS_INCLUDED
 
 #include "UnityCG.cginc"
+#include "UnityStandardConfig.cginc"
 
 // Reflectivity of a specular colour: its largest component (docs/LIGHTING.md §1).
 half SpecularStrength(half3 specular) {
