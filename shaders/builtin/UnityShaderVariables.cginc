@@ -53,6 +53,7 @@ CBUFFER_START(UnityPerDraw)
     float4x4 unity_WorldToObject;
     float4 unity_LODFade;               // (fade, fade quantized to 16 levels, 0, 0)
     float4 unity_WorldTransformParams;  // w = -1 if the object matrix mirrors, else 1
+    float4 unity_RenderingLayer;        // x = asfloat(rendering layer mask); varc: 0 (unset)
 CBUFFER_END
 
 // ---------------------------------------------------------------------------------------------
@@ -185,9 +186,17 @@ CBUFFER_START(UnityLightmaps)
 CBUFFER_END
 
 // ---------------------------------------------------------------------------------------------
-// Stereo: varc renders one eye per pass; the eye index is the constant 0.
+// Stereo: varc renders one eye per pass; the eye index is the constant 0, except in stereo
+// instancing variants, where UnitySetupInstanceID (UnityInstancing.cginc) sets it per instance.
 // ---------------------------------------------------------------------------------------------
+#if defined(UNITY_STEREO_INSTANCING_ENABLED)
+#ifndef VARC_STEREO_EYE_INDEX_DECLARED
+#define VARC_STEREO_EYE_INDEX_DECLARED
+static uint unity_StereoEyeIndex;
+#endif
+#else
 static const int unity_StereoEyeIndex = 0;
+#endif
 
 // ---------------------------------------------------------------------------------------------
 // More legacy names.
@@ -216,8 +225,12 @@ static const int unity_StereoEyeIndex = 0;
 #define UNITY_MATRIX_TEXTURE3 UNITY_MATRIX_TEXTURE0
 #define glstate_matrix_transpose_modelview0 UNITY_MATRIX_T_MV
 
-// Light probe proxy volumes: varc has none, so UNITY_LIGHT_PROBE_PROXY_VOLUME stays undefined
-// and the runtime leaves this block zero (unity_ProbeVolumeParams.x = 0: "use the SH probes").
+// Light probe proxy volumes: varc has none, so UNITY_LIGHT_PROBE_PROXY_VOLUME is 0 (Unity's value
+// on platforms without them: code tests it with #if) and the runtime leaves this block zero
+// (unity_ProbeVolumeParams.x = 0: "use the SH probes").
+#ifndef UNITY_LIGHT_PROBE_PROXY_VOLUME
+#define UNITY_LIGHT_PROBE_PROXY_VOLUME 0
+#endif
 // Declared so that shaders sampling a volume where Unity would still compile.
 UNITY_DECLARE_TEX3D_FLOAT(unity_ProbeVolumeSH);
 CBUFFER_START(UnityProbeVolume)
