@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <glm/glm.hpp>
 #include <string>
 
 #include "FormulaComparison.h"
@@ -158,6 +159,106 @@ TEST_F(HlslSupportValueTest, DeferredLegacyModels) {
             return Vec4{0.3 * v, 0.6 * v, 0.9 * v, testNormal(u, v)[0] * 0.5 + 0.5};
         },
         4, 1e-5, 1e-4);
+}
+
+// The transforms of UnityCG.cginc with an object matrix that rotates, scales unevenly and
+// translates, a view matrix and a projection: mul(M, v) is M * v of the matrices set.
+struct Transforms {
+    glm::dmat4 objectToWorld, worldToObject, view, projection;
+    Transforms() {
+        glm::dmat4 m(1.0);
+        m[0] = {0.8, 0.6, 0.0, 0.0};  // columns: a rotation about z, scaled (2, 1, 0.5)
+        m[1] = {-0.6, 0.8, 0.0, 0.0};
+        m[0] *= 2.0;
+        m[2] = {0.0, 0.0, 0.5, 0.0};
+        m[3] = {0.5, -1.0, 2.0, 1.0};
+        objectToWorld = m;
+        worldToObject = glm::inverse(m);
+        view = glm::dmat4(1.0);
+        view[3] = {-0.25, 0.5, -4.0, 1.0};
+        projection = glm::dmat4(0.0);
+        projection[0][0] = 1.5;
+        projection[1][1] = -2.0;
+        projection[2][2] = 0.1;
+        projection[2][3] = -1.0;
+        projection[3][2] = 0.3;
+    }
+    void set(ShaderValues& values) const {
+        values.set("unity_ObjectToWorld", glm::mat4(objectToWorld));
+        values.set("unity_WorldToObject", glm::mat4(worldToObject));
+        values.set("unity_MatrixV", glm::mat4(view));
+        values.set("glstate_matrix_projection", glm::mat4(projection));
+        values.set("unity_MatrixVP", glm::mat4(projection * view));
+        values.set("_WorldSpaceCameraPos", glm::vec3(0.25f, -0.5f, 4.0f), 0.0f);
+        values.set("_ProjectionParams", glm::vec4(1.0f, 0.3f, 100.0f, 0.01f));
+    }
+};
+glm::dvec3 point(double u, double v) { return {u * 2.0 - 1.0, v, 0.5 - u}; }
+Vec4 toVec4(const glm::dvec4& a) { return {a.x, a.y, a.z, a.w}; }
+
+TEST_F(HlslSupportValueTest, Transforms) {
+    Transforms t;
+    ShaderValues values;
+    t.set(values);
+    expectFormula(
+        "HS_XFORM_VIEW", values,
+        [&t](double u, double v) {
+            glm::dvec4 view = t.view * t.objectToWorld * glm::dvec4(point(u, v), 1.0);
+            double worldViewZ = (t.view * glm::dvec4(point(u, v), 1.0)).z;
+            return Vec4{view.x, view.y, view.z, worldViewZ};
+        },
+        4, 1e-5, 1e-5);
+    expectFormula(
+        "HS_XFORM_CLIP", values,
+        [&t](double u, double v) {
+            return toVec4(t.projection * t.view * glm::dvec4(point(u, v), 1.0));
+        },
+        4, 1e-5, 1e-5);
+    expectFormula(
+        "HS_XFORM_VIEWCLIP", values,
+        [&t](double u, double v) { return toVec4(t.projection * glm::dvec4(point(u, v), 1.0)); }, 4,
+        1e-5, 1e-5);
+    expectFormula(
+        "HS_XFORM_DIR", values,
+        [&t](double u, double v) {
+            glm::dvec3 world = glm::normalize(glm::dmat3(t.objectToWorld) * point(u, v));
+            glm::dvec3 object = glm::normalize(glm::dmat3(t.worldToObject) * point(u, v));
+            return Vec4{world.x, world.y, world.z, object.x};
+        },
+        4, 1e-5, 1e-5);
+    // Normals with the inverse transpose; the view direction is the camera minus the point.
+    expectFormula(
+        "HS_XFORM_NORMAL", values,
+        [&t](double u, double v) {
+            glm::dvec3 n =
+                glm::normalize(glm::transpose(glm::dmat3(t.worldToObject)) * point(u, v));
+            return Vec4{n.x, n.y, n.z, -0.5 - point(u, v).y};
+        },
+        4, 1e-5, 1e-5);
+}
+
+// Screen positions: xy = (x, y * _ProjectionParams.x) / 2 + w / 2 (grab: y not flipped), zw kept;
+// TransformViewToProjection applies the projection's upper 2x2 / 3x3.
+TEST_F(HlslSupportValueTest, ScreenPositions) {
+    Transforms t;
+    ShaderValues values;
+    t.set(values);
+    expectFormula(
+        "HS_SCREEN", values,
+        [](double u, double v) {
+            double x = u * 2 - 1, y = v * 2 - 1, w = 1 + u;
+            return Vec4{x * 0.5 + w * 0.5, y * 0.5 * 1.0 + w * 0.5, w, y * 0.5 + w * 0.5};
+        },
+        4, 1e-6, 1e-5);
+    expectFormula(
+        "HS_VIEWPROJ", values,
+        [&t](double u, double v) {
+            glm::dvec3 p = point(u, v);
+            glm::dvec2 p2 = glm::dmat2(t.projection) * glm::dvec2(p);
+            glm::dvec3 p3 = glm::dmat3(t.projection) * p;
+            return Vec4{p2.x, p2.y, p3.y, p3.z};
+        },
+        4, 1e-6, 1e-5);
 }
 
 // Tent filters: the share of the tent over each texel, integrated here.

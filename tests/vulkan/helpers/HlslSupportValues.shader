@@ -13,7 +13,7 @@ Shader "Test/HlslSupportValues" {
             #pragma vertex vert
             #pragma fragment frag
             #pragma target 3.0
-            #pragma multi_compile HS_DEPTHNORMAL_ENC HS_DEPTHNORMAL_DEC HS_DIRLIGHTMAP HS_RNM HS_PREPASS HS_TENT3 HS_TENT5 HS_TENT7 HS_ODS HS_DXT5NM HS_DEFERRED HS_DEFERRED_GB
+            #pragma multi_compile HS_DEPTHNORMAL_ENC HS_DEPTHNORMAL_DEC HS_DIRLIGHTMAP HS_RNM HS_PREPASS HS_TENT3 HS_TENT5 HS_TENT7 HS_ODS HS_DXT5NM HS_DEFERRED HS_DEFERRED_GB HS_XFORM_VIEW HS_XFORM_CLIP HS_XFORM_VIEWCLIP HS_XFORM_DIR HS_XFORM_NORMAL HS_SCREEN HS_VIEWPROJ
             // The deferred group samples light probes, so indirect light reaches the surface.
             #if defined(HS_DEFERRED) || defined(HS_DEFERRED_GB)
             #define LIGHTPROBE_SH 1
@@ -94,6 +94,25 @@ Shader "Test/HlslSupportValues" {
                 return float4(lambert.rgb, b1.a) + float4(0, 0, 0, g0.a + g1.a - 1.0);
             #else
                 return float4(b1.rgb, b2.x) + float4(0, 0, 0, blinn.a - 1.0);
+            #endif
+            #elif defined(HS_XFORM_VIEW) || defined(HS_XFORM_CLIP) || defined(HS_XFORM_VIEWCLIP) || defined(HS_XFORM_DIR) || defined(HS_XFORM_NORMAL) || defined(HS_SCREEN) || defined(HS_VIEWPROJ)
+                // Transforms with the matrices the test sets; p varies over the quad.
+                float3 p = float3(u * 2.0 - 1.0, v, 0.5 - u);
+            #if defined(HS_XFORM_VIEW)
+                return float4(UnityObjectToViewPos(p).xy, UnityObjectToViewPos(float4(p, 1)).z, UnityWorldToViewPos(p).z);
+            #elif defined(HS_XFORM_CLIP)
+                return UnityWorldToClipPos(p);
+            #elif defined(HS_XFORM_VIEWCLIP)
+                return UnityViewToClipPos(p);
+            #elif defined(HS_XFORM_DIR)
+                return float4(UnityObjectToWorldDir(p), UnityWorldToObjectDir(p).x);
+            #elif defined(HS_XFORM_NORMAL)
+                return float4(UnityObjectToWorldNormal(p), UnityWorldSpaceViewDir(p).y);
+            #elif defined(HS_SCREEN)
+                float4 clip = float4(u * 2.0 - 1.0, v * 2.0 - 1.0, 0.3, 1.0 + u);
+                return float4(ComputeScreenPos(clip).xy, ComputeNonStereoScreenPos(clip).w, ComputeGrabScreenPos(clip).y);
+            #else
+                return float4(TransformViewToProjection(p.xy), TransformViewToProjection(p).yz);
             #endif
             #else // HS_DXT5NM
                 return float4(UnpackNormalDXT5nm(fixed4(0.3, v, 0.9, u)), 0);
