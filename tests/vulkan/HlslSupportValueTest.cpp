@@ -13,7 +13,11 @@
 // api-value-tested: _UnityInternalGetWeightPerTexel_5TexelsWideTriangleFilter
 // api-value-tested: _UnityInternalGetWeightPerTexel_7TexelsWideTriangleFilter
 // api-value-tested: ODSOffset UnpackNormalDXT5nm LightingLambert_Deferred
-// LightingBlinnPhong_Deferred
+// api-value-tested: LightingBlinnPhong_Deferred UnityObjectToViewPos UnityWorldToViewPos
+// api-value-tested: UnityWorldToClipPos UnityViewToClipPos UnityObjectToWorldDir
+// api-value-tested: UnityWorldToObjectDir UnityObjectToWorldNormal UnityWorldSpaceViewDir
+// api-value-tested: ComputeScreenPos ComputeNonStereoScreenPos ComputeGrabScreenPos
+// api-value-tested: TransformViewToProjection
 #include <gtest/gtest.h>
 
 #include <algorithm>

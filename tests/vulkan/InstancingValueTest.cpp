@@ -9,7 +9,7 @@
 // api-value-tested: UNITY_SETUP_INSTANCE_ID UnitySetupInstanceID UNITY_TRANSFER_INSTANCE_ID
 // api-value-tested: UNITY_GET_INSTANCE_ID UNITY_DEFINE_INSTANCED_PROP UNITY_ACCESS_INSTANCED_PROP
 // api-value-tested: UNITY_INSTANCING_BUFFER_START UnityObjectToClipPosInstanced
-// UnityObjectToClipPos
+// api-value-tested: UnityObjectToClipPos
 #include <gtest/gtest.h>
 
 #include <array>
