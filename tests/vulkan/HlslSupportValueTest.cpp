@@ -17,7 +17,9 @@
 // api-value-tested: UnityWorldToClipPos UnityViewToClipPos UnityObjectToWorldDir
 // api-value-tested: UnityWorldToObjectDir UnityObjectToWorldNormal UnityWorldSpaceViewDir
 // api-value-tested: ComputeScreenPos ComputeNonStereoScreenPos ComputeGrabScreenPos
-// api-value-tested: TransformViewToProjection
+// api-value-tested: TransformViewToProjection SHEvalLinearL0L1 SHEvalLinearL2 ShadeSH12Order
+// api-value-tested: ShadeSH3Order SHEvalLinearL0L1_SampleProbeVolume UnityWorldSpaceLightDir
+// api-value-tested: UnityApplyLinearShadowBias
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -263,6 +265,54 @@ TEST_F(HlslSupportValueTest, ScreenPositions) {
             return Vec4{p2.x, p2.y, p3.y, p3.z};
         },
         4, 1e-6, 1e-5);
+}
+
+// Spherical harmonics in linear space: L0 + L1 = dot(SHA, (n, 1)) per channel; L2 = dot(SHB,
+// (xy, yz, zz, zx)) + SHC * (x^2 - y^2).
+TEST_F(HlslSupportValueTest, SphericalHarmonics) {
+    const glm::vec4 ar(0.1f, 0.2f, 0.3f, 0.5f), ag(-0.2f, 0.1f, 0.4f, 0.6f),
+        ab(0.3f, -0.1f, 0.2f, 0.7f);
+    const glm::vec4 br(0.05f, 0.1f, -0.2f, 0.3f), bg(0.2f, -0.3f, 0.1f, 0.05f),
+        bb(-0.1f, 0.2f, 0.3f, 0.1f);
+    const glm::vec4 c(0.4f, -0.3f, 0.2f, 0.0f);
+    ShaderValues values;
+    values.set("unity_SHAr", ar);
+    values.set("unity_SHAg", ag);
+    values.set("unity_SHAb", ab);
+    values.set("unity_SHBr", br);
+    values.set("unity_SHBg", bg);
+    values.set("unity_SHBb", bb);
+    values.set("unity_SHC", c);
+    expectFormula(
+        "HS_SH", values,
+        [=](double u, double v) {
+            Vec3 n = testNormal(u, v);
+            glm::dvec4 n4(n[0], n[1], n[2], 1.0);
+            glm::dvec4 b(n[0] * n[1], n[1] * n[2], n[2] * n[2], n[2] * n[0]);
+            double vc = n[0] * n[0] - n[1] * n[1];
+            auto l01 = [&](const glm::vec4& a) { return glm::dot(glm::dvec4(a), n4); };
+            auto l2 = [&](const glm::vec4& bx, double cx) {
+                return glm::dot(glm::dvec4(bx), b) + cx * vc;
+            };
+            return Vec4{l01(ar), l2(bg, c.y), l01(ab), l2(br, c.x) + l01(ag)};
+        },
+        4, 1e-5, 1e-4);
+}
+
+// The direction to a point light (position - p; a directional light's w = 0 keeps xyz) and the
+// linear shadow bias: z + saturate(bias / w) * w, at most w.
+TEST_F(HlslSupportValueTest, LightDirectionAndShadowBias) {
+    ShaderValues values;
+    values.set("_WorldSpaceLightPos0", glm::vec4(1.5f, 2.0f, -1.0f, 1.0f));
+    values.set("unity_LightShadowBias", glm::vec4(0.6f, 0.0f, 0.0f, 0.0f));
+    expectFormula(
+        "HS_LIGHTDIR", values,
+        [](double u, double v) {
+            double w = 1.0 + u;
+            double z = std::min(v * 0.5 + std::clamp(0.6 / w, 0.0, 1.0) * w, w);
+            return Vec4{1.5 - (u * 2.0 - 1.0), 2.0 - v, z, 0.0};
+        },
+        3, 1e-5, 1e-4);
 }
 
 // Tent filters: the share of the tent over each texel, integrated here.
