@@ -43,7 +43,9 @@
 #if defined(STEREO_MULTIVIEW_ON) && (defined(SHADER_API_GLES3) || defined(SHADER_API_GLCORE))
 #define UNITY_STEREO_MULTIVIEW_ENABLED 1
 #endif
-#if defined(UNITY_STEREO_MULTIVIEW_ENABLED) && defined(SHADER_STAGE_VERTEX)
+// (Unity declares these in the vertex stage only; naming the stage macro here would make every
+// program's stages preprocess apart, so they are declared in every stage of a multiview variant.)
+#if defined(UNITY_STEREO_MULTIVIEW_ENABLED)
 #define UNITY_DECLARE_MULTIVIEW(number_of_views) GLOBAL_CBUFFER_START(OVR_multiview) uint gl_ViewID; uint numViews_##number_of_views; GLOBAL_CBUFFER_END
 #define UNITY_VIEWID gl_ViewID
 #endif

@@ -53,7 +53,11 @@ CBUFFER_START(UnityPerDraw)
     float4x4 unity_WorldToObject;
     float4 unity_LODFade;               // (fade, fade quantized to 16 levels, 0, 0)
     float4 unity_WorldTransformParams;  // w = -1 if the object matrix mirrors, else 1
-    float4 unity_RenderingLayer;        // x = asfloat(rendering layer mask); varc: 0 (unset)
+CBUFFER_END
+// The rendering layer mask (Unity 2018.4+), x = asfloat(mask); varc's runtime leaves it 0. Its
+// own block, so that programs that do not read it keep UnityPerDraw's layout.
+CBUFFER_START(UnityRenderingLayer)
+    float4 unity_RenderingLayer;
 CBUFFER_END
 
 // ---------------------------------------------------------------------------------------------

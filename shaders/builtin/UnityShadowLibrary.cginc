@@ -101,10 +101,11 @@ inline half UnitySampleShadowmap(float3 vec) {
 }
 #endif
 
-// Unity 4's soft-shadow tap offsets (four taps around the coordinate); varc's filters above do
-// not read them, and the runtime leaves them zero.
+// Unity 4's soft-shadow tap offsets (four taps around the coordinate): varc's filters above do
+// not read them and its runtime never sets them, so they are constant zeros (a uniform would
+// change the globals of every soft-shadow program).
 #if defined(SHADOWS_SOFT)
-float4 _ShadowOffsets[4];
+static const float4 _ShadowOffsets[4] = {float4(0, 0, 0, 0), float4(0, 0, 0, 0), float4(0, 0, 0, 0), float4(0, 0, 0, 0)};
 #endif
 // A screen-space shadow with lightmaps: the GI code mixes realtime and baked shadows.
 #if defined(SHADOWS_SCREEN) && defined(LIGHTMAP_ON)

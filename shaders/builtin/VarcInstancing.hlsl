@@ -103,11 +103,9 @@
     #define UNITY_VERTEX_OUTPUT_STEREO uint stereoTargetEyeIndexSV : SV_RenderTargetArrayIndex; nointerpolation uint stereoTargetEyeIndex : BLENDINDICES0;
     #define UNITY_INITIALIZE_VERTEX_OUTPUT_STEREO(output) (output).stereoTargetEyeIndexSV = unity_StereoEyeIndex; (output).stereoTargetEyeIndex = unity_StereoEyeIndex
     #define UNITY_TRANSFER_VERTEX_OUTPUT_STEREO(input, output) (output).stereoTargetEyeIndexSV = (input).stereoTargetEyeIndexSV; (output).stereoTargetEyeIndex = (input).stereoTargetEyeIndex
-    #if defined(SHADER_STAGE_VERTEX)
-    #define UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX(input)
-    #else
+    // For the stages after the vertex stage (whose eye UnitySetupInstanceID sets); no stage test
+    // here, so that every program's stages still preprocess alike.
     #define UNITY_SETUP_STEREO_EYE_INDEX_POST_VERTEX(input) unity_StereoEyeIndex = (input).stereoTargetEyeIndex
-    #endif
 #else
     // One eye per pass: the stereo macros expand to nothing.
     #define UNITY_VERTEX_OUTPUT_STEREO
