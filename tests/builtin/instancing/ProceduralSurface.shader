@@ -11,6 +11,9 @@ Shader "varc-tests/ProceduralSurface" {
         #pragma target 4.5
         #pragma multi_compile_instancing
         #pragma instancing_options procedural:setupInstance
+        #if defined(UNITY_PROCEDURAL_INSTANCING_ENABLED) && !defined(UNITY_INSTANCING_PROCEDURAL_FUNC)
+        #error "the generated passes must see instancing_options procedural:setupInstance"
+        #endif
         sampler2D _MainTex;
         struct Input { float2 uv_MainTex; };
         #ifdef UNITY_PROCEDURAL_INSTANCING_ENABLED
