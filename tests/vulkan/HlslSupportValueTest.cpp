@@ -19,7 +19,9 @@
 // api-value-tested: ComputeScreenPos ComputeNonStereoScreenPos ComputeGrabScreenPos
 // api-value-tested: TransformViewToProjection SHEvalLinearL0L1 SHEvalLinearL2 ShadeSH12Order
 // api-value-tested: ShadeSH3Order SHEvalLinearL0L1_SampleProbeVolume UnityWorldSpaceLightDir
-// api-value-tested: UnityApplyLinearShadowBias
+// api-value-tested: UnityApplyLinearShadowBias UnityComputeShadowFadeDistance
+// api-value-tested: UnityComputeShadowFade
+// api-value-tested: _UnityInternalGetAreaAboveFirstTexelUnderAIsocelesRectangleTriangle
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -311,6 +313,24 @@ TEST_F(HlslSupportValueTest, LightDirectionAndShadowBias) {
             double w = 1.0 + u;
             double z = std::min(v * 0.5 + std::clamp(0.6 / w, 0.0, 1.0) * w, w);
             return Vec4{1.5 - (u * 2.0 - 1.0), 2.0 - v, z, 0.0};
+        },
+        3, 1e-5, 1e-4);
+}
+
+// Shadow fade: the distance is lerp(view depth, distance to the fade centre, centre.w); the fade
+// saturate(distance * _LightShadowData.z + _LightShadowData.w).
+TEST_F(HlslSupportValueTest, ShadowFade) {
+    ShaderValues values;
+    values.set("unity_ShadowFadeCenterAndType", glm::vec4(0.5f, -1.0f, 2.0f, 0.25f));
+    values.set("_LightShadowData", glm::vec4(0.3f, 0.0f, 0.5f, -1.0f));
+    expectFormula(
+        "HS_FADE", values,
+        [](double u, double v) {
+            Vec3 p = {u * 4.0 - 2.0, v, 0.5 - u};
+            Vec3 r = {p[0] - 0.5, p[1] + 1.0, p[2] - 2.0};
+            double d = 3.0 * v + (std::sqrt(dot(r, r)) - 3.0 * v) * 0.25;
+            auto fade = [](double x) { return std::clamp(x * 0.5 - 1.0, 0.0, 1.0); };
+            return Vec4{d, fade(d), fade(4.0 * u), 0.0};
         },
         3, 1e-5, 1e-4);
 }

@@ -13,7 +13,7 @@ Shader "Test/HlslSupportValues" {
             #pragma vertex vert
             #pragma fragment frag
             #pragma target 3.0
-            #pragma multi_compile HS_DEPTHNORMAL_ENC HS_DEPTHNORMAL_DEC HS_DIRLIGHTMAP HS_RNM HS_PREPASS HS_TENT3 HS_TENT5 HS_TENT7 HS_ODS HS_DXT5NM HS_DEFERRED HS_DEFERRED_GB HS_XFORM_VIEW HS_XFORM_CLIP HS_XFORM_VIEWCLIP HS_XFORM_DIR HS_XFORM_NORMAL HS_SCREEN HS_VIEWPROJ HS_SH HS_LIGHTDIR
+            #pragma multi_compile HS_DEPTHNORMAL_ENC HS_DEPTHNORMAL_DEC HS_DIRLIGHTMAP HS_RNM HS_PREPASS HS_TENT3 HS_TENT5 HS_TENT7 HS_ODS HS_DXT5NM HS_DEFERRED HS_DEFERRED_GB HS_XFORM_VIEW HS_XFORM_CLIP HS_XFORM_VIEWCLIP HS_XFORM_DIR HS_XFORM_NORMAL HS_SCREEN HS_VIEWPROJ HS_SH HS_LIGHTDIR HS_FADE
             // The deferred group samples light probes, so indirect light reaches the surface.
             #if defined(HS_DEFERRED) || defined(HS_DEFERRED_GB)
             #define LIGHTPROBE_SH 1
@@ -124,6 +124,11 @@ Shader "Test/HlslSupportValues" {
                 float3 p = float3(u * 2.0 - 1.0, v, 0.5 - u);
                 float4 clip = float4(u, v, v * 0.5, 1.0 + u);
                 return float4(UnityWorldSpaceLightDir(p).xy, UnityApplyLinearShadowBias(clip).z, 0);
+            #elif defined(HS_FADE)
+                // The test sets unity_ShadowFadeCenterAndType and _LightShadowData.
+                float3 p = float3(u * 4.0 - 2.0, v, 0.5 - u);
+                float d = UnityComputeShadowFadeDistance(p, 3.0 * v);
+                return float4(d, UnityComputeShadowFade(d), UnityComputeShadowFade(4.0 * u), 0);
             #else // HS_DXT5NM
                 return float4(UnpackNormalDXT5nm(fixed4(0.3, v, 0.9, u)), 0);
             #endif
