@@ -78,8 +78,12 @@ bool compileWithValidator(const frontend::LoadedPass& pass,
                           const std::vector<std::string>& keywords, Stage stage,
                           const std::string& entry, const std::string& dir) {
     bool glsl = pass.pass->program->language == shaderlab::ProgramLanguage::Glsl;
-    driver::DefineContext context{pass.pass->lightMode(), pass.keywords.target,
-                                  pass.pass->program->language, stage, keywords};
+    driver::DefineContext context{pass.pass->lightMode(),
+                                  pass.keywords.target,
+                                  pass.pass->program->language,
+                                  stage,
+                                  keywords,
+                                  pass.keywords.instancingOptions};
     std::string source = driver::makePreamble(context);
     if (glsl)
         source = "#version 140\n" + source + driver::legacyGlslPreamble(pass.source.text, stage);

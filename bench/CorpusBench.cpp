@@ -102,7 +102,8 @@ void collectPrograms(const frontend::LoadedPass& pass, std::set<ValidatorProgram
         std::vector<std::string> keywords = pass.space->table().namesOf(key);
         for (const auto& [stage, entry] : stages) {
             driver::DefineContext context{pass.pass->lightMode(), pass.keywords.target,
-                                          pass.pass->program->language, stage, keywords};
+                                          pass.pass->program->language, stage, keywords,
+                                          pass.keywords.instancingOptions};
             std::vector<driver::PredefinedMacro> macros = driver::predefinedMacros(context);
             driver::dropUnobservedMacros(macros, observed);
             std::string source = driver::writePreamble(macros);

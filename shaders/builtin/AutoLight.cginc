@@ -63,6 +63,35 @@
 #define UNITY_SHADOW_COORDS(idx1) SHADOW_COORDS(idx1)
 #define UNITY_TRANSFER_SHADOW(a, coord) TRANSFER_SHADOW(a)
 
+// The forward shadow of a pixel from its position alone (Unity 2017.4+): the realtime shadow of
+// the variant's light (screen-space mask at screenPos, spot map, point cube), faded with
+// distance and mixed with the baked shadow mask at lightmapUV (UnityMixRealtimeAndBakedShadows).
+half UnityComputeForwardShadows(float2 lightmapUV, float3 worldPos, float4 screenPos) {
+    float viewZ = dot(_WorldSpaceCameraPos - worldPos, UNITY_MATRIX_V[2].xyz);
+    float fade = UnityComputeShadowFade(UnityComputeShadowFadeDistance(worldPos, viewZ));
+#if defined(SHADOWS_SCREEN)
+    half realtime = unitySampleShadow(screenPos);
+#elif defined(SHADOWS_DEPTH) && defined(SPOT)
+    half realtime = UnitySampleShadowmap(mul(unity_WorldToShadow[0], unityShadowCoord4(worldPos, 1)));
+#elif defined(SHADOWS_CUBE)
+    half realtime = UnitySampleShadowmap(worldPos - _LightPositionRange.xyz);
+#else
+    half realtime = 1.0;
+#endif
+    return UnityMixRealtimeAndBakedShadows(realtime, UnitySampleBakedOcclusion(lightmapUV, worldPos), fade);
+}
+
+// The interpolated shadow coordinate as a float4 (point lights carry a direction: w = 1; no
+// shadow: 0), for code that passes it on.
+#if defined(SHADOWS_SCREEN) || (defined(SHADOWS_DEPTH) && defined(SPOT))
+    #define READ_SHADOW_COORDS(a) (a)._ShadowCoord
+#elif defined(SHADOWS_CUBE)
+    #define READ_SHADOW_COORDS(a) unityShadowCoord4((a)._ShadowCoord.xyz, 1)
+#else
+    #define READ_SHADOW_COORDS(a) unityShadowCoord4(0, 0, 0, 0)
+#endif
+#define UNITY_READ_SHADOW_COORDS(input) READ_SHADOW_COORDS(input)
+
 // =============================================================================================
 // Light attenuation per light type (docs/LIGHTING.md §3). lc = unity_WorldToLight * worldPos.
 //   POINT              tex2D(_LightTexture0, dot(lc,lc).rr).r                       * shadow

@@ -34,6 +34,22 @@
 #define UNITY_FAST_COHERENT_DYNAMIC_BRANCHING 1
 #endif
 
+// Stereo. Unity defines UNITY_STEREO_INSTANCING_ENABLED for Vulkan variants with
+// STEREO_INSTANCING_ON (UnityInstancing.cginc gives such variants the eye index; screen-space
+// textures become arrays of one slice per eye); multiview is a GL/GLES path, never on Vulkan.
+#if defined(STEREO_INSTANCING_ON) && SHADER_TARGET >= 35
+#define UNITY_STEREO_INSTANCING_ENABLED 1
+#endif
+#if defined(STEREO_MULTIVIEW_ON) && (defined(SHADER_API_GLES3) || defined(SHADER_API_GLCORE))
+#define UNITY_STEREO_MULTIVIEW_ENABLED 1
+#endif
+// (Unity declares these in the vertex stage only; naming the stage macro here would make every
+// program's stages preprocess apart, so they are declared in every stage of a multiview variant.)
+#if defined(UNITY_STEREO_MULTIVIEW_ENABLED)
+#define UNITY_DECLARE_MULTIVIEW(number_of_views) GLOBAL_CBUFFER_START(OVR_multiview) uint gl_ViewID; uint numViews_##number_of_views; GLOBAL_CBUFFER_END
+#define UNITY_VIEWID gl_ViewID
+#endif
+
 // ---------------------------------------------------------------------------------------------
 // Precision types. glslang has no `fixed`; `half` is 32-bit unless 16-bit types are enabled.
 // ---------------------------------------------------------------------------------------------
@@ -131,8 +147,14 @@
 #define UNITY_SAMPLE_SHADOW(tex, coord) ((((coord).z) <= tex2Dlod(tex, float4((coord).xy, 0, 0)).r) ? 1.0 : 0.0)
 #define UNITY_SAMPLE_SHADOW_PROJ(tex, coord) UNITY_SAMPLE_SHADOW(tex, ((coord).xyz / (coord).w))
 // The screen-space shadow mask: .r is the final shadow attenuation of the main directional light.
+#if defined(UNITY_STEREO_INSTANCING_ENABLED) || defined(UNITY_STEREO_MULTIVIEW_ENABLED)
+// One slice per eye (unity_StereoEyeIndex, UnityShaderVariables.cginc).
+#define UNITY_DECLARE_SCREENSPACE_SHADOWMAP UNITY_DECLARE_TEX2DARRAY
+#define UNITY_SAMPLE_SCREEN_SHADOW(tex, uv) UNITY_SAMPLE_TEX2DARRAY(tex, float3((uv).xy / (uv).w, (float)unity_StereoEyeIndex)).r
+#else
 #define UNITY_DECLARE_SCREENSPACE_SHADOWMAP(tex) sampler2D tex
 #define UNITY_SAMPLE_SCREEN_SHADOW(tex, uv) tex2Dproj(tex, UNITY_PROJ_COORD(uv)).r
+#endif
 
 // Tessellation attributes under Unity's spellings (`[UNITY_domain("tri")]`), and the pixel
 // position input (`UNITY_VPOS_TYPE vpos : VPOS`): the fragment's SV_Position on modern APIs.
@@ -156,8 +178,13 @@
 #define UNITY_ARGS_TEX2D(tex) Texture2D tex, SamplerState sampler##tex
 #define UNITY_ARGS_TEXCUBE(tex) TextureCube tex, SamplerState sampler##tex
 // Screen-space textures (grab passes, camera targets): plain 2D textures in mono rendering.
+#if defined(UNITY_STEREO_INSTANCING_ENABLED) || defined(UNITY_STEREO_MULTIVIEW_ENABLED)
+#define UNITY_DECLARE_SCREENSPACE_TEXTURE UNITY_DECLARE_TEX2DARRAY
+#define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) UNITY_SAMPLE_TEX2DARRAY(tex, float3((uv).xy, (float)unity_StereoEyeIndex))
+#else
 #define UNITY_DECLARE_SCREENSPACE_TEXTURE(tex) sampler2D tex
 #define UNITY_SAMPLE_SCREENSPACE_TEXTURE(tex, uv) tex2D(tex, uv)
+#endif
 
 // Semi-transparent shadow casters dither against the 3D texture _DitherMaskLOD (SHADER_ABI.md §6).
 #define UNITY_USE_DITHER_MASK_FOR_ALPHABLENDED_SHADOWS 1
@@ -253,5 +280,174 @@ half4 tex2DprojShadow(sampler2D s, in float4 t) { return tex2DprojShadow(s, t.xy
 #define GLOBAL_CBUFFER_END CBUFFER_END
 #define CBUFFER_START_WITH_BINDING(Name, Set, Binding) CBUFFER_START(Name)
 #define DECL_WITH_BINDING(Type, Name, Set, Binding) Type Name
+
+// ---------------------------------------------------------------------------------------------
+// Compiler and platform facts of Unity's other back ends (issue #27). Unity compiles Vulkan
+// programs as D3D11-style HLSL translated by HLSLcc, and varc's glslang front end reads the same
+// dialect, so UNITY_COMPILER_HLSLCC holds here. The others describe compilers and platforms that
+// varc never targets; they sit under Unity's own conditions so that a program that tests them
+// takes the path Unity's Vulkan build takes.
+// ---------------------------------------------------------------------------------------------
+#define UNITY_COMPILER_HLSLCC 1
+#if defined(SHADER_TARGET_SURFACE_ANALYSIS)
+#define UNITY_COMPILER_CG 1
+#endif
+#if defined(SHADER_TARGET_GLSL)
+#define UNITY_COMPILER_HLSL2GLSL 1
+#endif
+#if defined(UNITY_COMPILER_HLSL2GLSL)
+#define FACE VFACE
+#endif
+// Shader model 4.0 features (integer ops, Load, texture arrays) are always there on Vulkan.
+#define UNITY_SM40_PLUS_PLATFORM 1
+// Clip depth is NOT reversed under varc (0 at the near plane: see UNITY_NEAR_CLIP_VALUE above),
+// unlike Unity's own Vulkan build; Unity's file states the reversal for these APIs, and varc's
+// Vulkan build keeps it undefined so code testing it computes depth the way varc stores it.
+#if defined(SHADER_API_D3D11) || defined(SHADER_API_PSSL) || defined(SHADER_API_XBOXONE) || defined(SHADER_API_METAL)
+#define UNITY_REVERSED_Z 1
+#endif
+#if defined(SHADER_API_GLES) || defined(SHADER_API_GLES3) || defined(SHADER_API_PSP2)
+#define UNITY_USE_RGBA_FOR_POINT_SHADOWS 1
+#endif
+#if defined(SHADER_API_PSP2)
+#define UNITY_BUGGY_TEX2DPROJ4 1
+#define UNITY_FORCE_LINEAR_READ_FOR_RGBM 1
+#endif
+#if defined(SHADER_API_D3D9)
+#define UNITY_VFACE_AFFECTED_BY_PROJECTION 1
+#endif
+// Native depth comparisons are available for shadow maps on every API but GLES2.
+#if !defined(SHADER_API_GLES) || defined(UNITY_ENABLE_NATIVE_SHADOW_LOOKUPS)
+#define SHADOWS_NATIVE 1
+#endif
+// `fixed` is `half` (see the precision types above) on every API varc targets.
+#define UNITY_FIXED_IS_HALF 1
+// Gamma-space projects read colours without sRGB conversion (UNITY_COLORSPACE_GAMMA keyword).
+#if !defined(UNITY_NO_LINEAR_COLORSPACE) && defined(UNITY_COLORSPACE_GAMMA)
+#define UNITY_NO_LINEAR_COLORSPACE 1
+#endif
+#if defined(UNITY_HDR_ON)
+#define HDR_LIGHT_PREPASS_ON 1
+#endif
+// The "off" spellings of the lightmap keywords of Unity 4, for programs that still test them.
+#if !defined(LIGHTMAP_OFF) && !defined(LIGHTMAP_ON)
+#define LIGHTMAP_OFF 1
+#endif
+#if !defined(DIRLIGHTMAP_OFF) && !defined(DIRLIGHTMAP_COMBINED)
+#define DIRLIGHTMAP_OFF 1
+#endif
+#if !defined(DYNAMICLIGHTMAP_OFF) && !defined(DYNAMICLIGHTMAP_ON)
+#define DYNAMICLIGHTMAP_OFF 1
+#endif
+// GLES2 had no unsigned matrices: Unity spells them with int there (never true under varc,
+// where glslang knows uintNxM natively).
+#if defined(SHADER_API_GLES)
+#define uint1x1 int1x1
+#define uint1x2 int1x2
+#define uint1x3 int1x3
+#define uint1x4 int1x4
+#define uint2x1 int2x1
+#define uint2x2 int2x2
+#define uint2x3 int2x3
+#define uint2x4 int2x4
+#define uint3x1 int3x1
+#define uint3x2 int3x2
+#define uint3x3 int3x3
+#define uint3x4 int3x4
+#define uint4x1 int4x1
+#define uint4x2 int4x2
+#define uint4x3 int4x3
+#define uint4x4 int4x4
+#endif
+// Unity's DXC path emulates sampler2D & co. as structs unless DXC_SAMPLER_COMPATIBILITY is set;
+// varc does not compile with DXC (glslang's sampler types are native).
+#if defined(UNITY_COMPILER_DXC) && !defined(DXC_SAMPLER_COMPATIBILITY)
+#define DXC_SAMPLER_COMPATIBILITY 1
+#endif
+// The Cg compiler of surface-shader analysis lacks the gradient forms and texture arrays.
+// (tex2D & co. with derivative arguments are the gradient forms there.)
+#if defined(UNITY_COMPILER_CG)
+#define tex2Dgrad tex2D
+#define tex3Dgrad tex3D
+#define texCUBEgrad texCUBE
+#endif
+#if defined(SHADER_TARGET_SURFACE_ANALYSIS)
+#define sampler2DArray sampler3D
+#define tex2DArray tex3D
+#define tex2DArraylod tex3Dlod
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// DX9-era spellings with their Vulkan meaning.
+// ---------------------------------------------------------------------------------------------
+// Rectangle textures: SPIR-V's SampledRect is not allowed on Vulkan, so (as on Unity's D3D11
+// path) a samplerRECT is a 2D texture sampled with normalised coordinates.
+#define samplerRECT sampler2D
+#define texRECT tex2D
+#define texRECTlod tex2Dlod
+#define texRECTbias tex2Dbias
+#define texRECTproj tex2Dproj
+// Storage qualifiers of sampler and constant declarations (PSSL needed none).
+#if defined(SHADER_API_PSSL)
+#define SAMPLER_UNIFORM
+#define SHADER_UNIFORM
+#else
+#define SAMPLER_UNIFORM uniform
+#define SHADER_UNIFORM uniform
+#endif
+// The fog coordinate and pixel position semantics of Unity 4 programs.
+#define FOGC FOG
+#define WPOS VPOS
+// The channel that holds alpha, and a single-channel read (x = sampler, y = coordinate).
+#define UNITY_ALPHA_CHANNEL a
+#define UNITY_SAMPLE_1CHANNEL(x, y) tex2D(x, y).UNITY_ALPHA_CHANNEL
+// An optimisation hint of Unity's D3D compiler: nothing for glslang.
+#define UNITY_FASTOPT
+// Advanced blend equations (KHR_blend_equation_advanced) are a GLES 3 request: nothing here.
+#define UNITY_REQUIRE_ADVANCED_BLEND(mode)
+#define UNITY_PASS_TEXCUBE_SAMPLER_LOD(tex, samplertex, lod) tex, sampler##samplertex, lod
+
+// ---------------------------------------------------------------------------------------------
+// Multisampled textures. varc's runtime renders one sample per pixel (GetRenderTargetSampleCount()
+// is 1), so an _MS texture is its single-sample form and a sample index reads sample 0.
+// ---------------------------------------------------------------------------------------------
+#define UNITY_DECLARE_DEPTH_TEXTURE_MS(tex) Texture2D<float> tex
+#define UNITY_DECLARE_TEX2DARRAY_MS(tex) Texture2DArray tex; SamplerState sampler##tex
+#define UNITY_DECLARE_TEX2DARRAY_MS_NOSAMPLER(tex) Texture2DArray tex
+
+// ---------------------------------------------------------------------------------------------
+// Framebuffer fetch. Vulkan's input attachments need a subpass that varc's runtime does not set
+// up, so (as Unity does where fetch is unavailable) each input is a texture of the same target
+// read at the fragment's pixel: v2fname is the SV_Position (pixel centre) of the fragment.
+// Every type reads as float4; INT/UINT callers convert. _MS forms ignore the sample index.
+// ---------------------------------------------------------------------------------------------
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_HALF(idx) sampler2D _UnityFBInput##idx
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_INT(idx) sampler2D _UnityFBInput##idx
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_UINT(idx) sampler2D _UnityFBInput##idx
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_FLOAT_MS(idx) sampler2D _UnityFBInput##idx
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_HALF_MS(idx) sampler2D _UnityFBInput##idx
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_INT_MS(idx) sampler2D _UnityFBInput##idx
+#define UNITY_DECLARE_FRAMEBUFFER_INPUT_UINT_MS(idx) sampler2D _UnityFBInput##idx
+#define UNITY_READ_FRAMEBUFFER_INPUT(idx, v2fname) tex2Dlod(_UnityFBInput##idx, float4((v2fname).xy * (_ScreenParams.zw - 1.0), 0, 0))
+#define UNITY_READ_FRAMEBUFFER_INPUT_MS(idx, sampleIdx, v2fname) UNITY_READ_FRAMEBUFFER_INPUT(idx, v2fname)
+#define UNITY_DXC_SUBPASS_INPUT_TYPE_INDEX(type, idx) sampler2D _UnityFBInput##idx
+#define UNITY_DXC_SUBPASS_INPUT_TYPE_INDEX_MS(type, idx) sampler2D _UnityFBInput##idx
+#if defined(SHADER_API_METAL) && defined(UNITY_NEEDS_RENDERPASS_FBFETCH_FALLBACK)
+#define UNITY_RENDERPASS_DECLARE_FALLBACK(T, idx) Texture2D<T> _UnityFBInput##idx
+#define UNITY_RENDERPASS_DECLARE_FALLBACK_MS(T, idx) Texture2D<T> _UnityFBInput##idx
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Display-orientation pre-transform (Vulkan on Android rotates the swapchain in the shader).
+// varc presents nothing: the orientation is always 0 (no rotation), and applying it is the
+// identity.
+// ---------------------------------------------------------------------------------------------
+#define UNITY_DISPLAY_ORIENTATION_PRETRANSFORM_0 0
+#define UNITY_DISPLAY_ORIENTATION_PRETRANSFORM_90 1
+#define UNITY_DISPLAY_ORIENTATION_PRETRANSFORM_180 2
+#define UNITY_DISPLAY_ORIENTATION_PRETRANSFORM_270 3
+static const int UnityDisplayOrientationPreTransform = UNITY_DISPLAY_ORIENTATION_PRETRANSFORM_0;
+#define UNITY_DISPLAY_ORIENTATION_PRETRANSFORM UnityDisplayOrientationPreTransform
+
 
 #endif // HLSL_SUPPORT_INCLUDED

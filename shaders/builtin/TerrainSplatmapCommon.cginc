@@ -49,6 +49,16 @@ void ClipHoles(float2 uv) {
 // (1 / width, 1 / height, 1 / (width - 1), 1 / (height - 1)), _TerrainHeightmapScale = the
 // terrain's size per sample (x, z) and its height (y). Heights are packed (UnpackHeightmap), the
 // normal map holds rgb = n * 0.5 + 0.5.
+// Unity 2021.3+ samples the terrain's normal map in the vertex stage with its own sampler
+// states on APIs with separate samplers (all but GL); varc's compiler pairs textures with their
+// own samplers, so these are declared for programs that name them.
+#if !(defined(SHADER_API_GLCORE) || defined(SHADER_API_GLES3) || defined(SHADER_API_GLES))
+#define TERRAIN_USE_SEPARATE_VERTEX_SAMPLER
+#endif
+#if defined(TERRAIN_USE_SEPARATE_VERTEX_SAMPLER)
+SamplerState sampler__TerrainNormalmapTexture;
+SamplerState vertex_linear_clamp_sampler;
+#endif
 #if defined(UNITY_INSTANCING_ENABLED)
 sampler2D _TerrainHeightmapTexture;
 sampler2D _TerrainNormalmapTexture;

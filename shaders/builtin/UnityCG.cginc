@@ -201,7 +201,7 @@ half3 SHEvalLinearL0L1(half4 normal) {
     x.b = dot(unity_SHAb, normal);
     return x;
 }
-// Light probe proxy volumes: varc has none (UNITY_LIGHT_PROBE_PROXY_VOLUME stays undefined, the
+// Light probe proxy volumes: varc has none (UNITY_LIGHT_PROBE_PROXY_VOLUME is 0, the
 // runtime leaves unity_ProbeVolumeParams zero), so the volume's L0/L1 is the draw's own probe SH.
 half3 SHEvalLinearL0L1_SampleProbeVolume(half4 normal, float3 worldPos) { return SHEvalLinearL0L1(normal); }
 half3 SHEvalLinearL2(half4 normal) {
@@ -658,5 +658,15 @@ inline float2 MultiplyUV(float4x4 mat, float2 inUV) {
 // Set when V2F_SHADOW_CASTER_NOPOS declares nothing: always, with depth cube maps.
 #define V2F_SHADOW_CASTER_NOPOS_IS_EMPTY
 #define SHADOWS_CUBE_IN_DEPTH_TEX
+
+// Dither-mask textures of LOD cross-fade (Unity 2019.4+ and the older name): declared for
+// programs that sample them; varc's own cross-fade uses the Bayer matrix above.
+#ifdef LOD_FADE_CROSSFADE
+sampler2D unity_DitherMask;
+sampler2D _DitherMaskLOD2D;
+#endif
+
+#include "VarcFogTbnPacking.cginc"
+#include "VarcShadowCollector.cginc"
 
 #endif // UNITY_CG_INCLUDED

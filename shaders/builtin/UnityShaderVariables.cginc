@@ -54,6 +54,11 @@ CBUFFER_START(UnityPerDraw)
     float4 unity_LODFade;               // (fade, fade quantized to 16 levels, 0, 0)
     float4 unity_WorldTransformParams;  // w = -1 if the object matrix mirrors, else 1
 CBUFFER_END
+// The rendering layer mask (Unity 2018.4+), x = asfloat(mask); varc's runtime leaves it 0. Its
+// own block, so that programs that do not read it keep UnityPerDraw's layout.
+CBUFFER_START(UnityRenderingLayer)
+    float4 unity_RenderingLayer;
+CBUFFER_END
 
 // ---------------------------------------------------------------------------------------------
 // Per draw, forward base / deferred G-buffer: light probe SH (packing: docs/SHADER_ABI.md §4.4).
@@ -185,9 +190,17 @@ CBUFFER_START(UnityLightmaps)
 CBUFFER_END
 
 // ---------------------------------------------------------------------------------------------
-// Stereo: varc renders one eye per pass; the eye index is the constant 0.
+// Stereo: varc renders one eye per pass; the eye index is the constant 0, except in stereo
+// instancing variants, where UnitySetupInstanceID (UnityInstancing.cginc) sets it per instance.
 // ---------------------------------------------------------------------------------------------
+#if defined(UNITY_STEREO_INSTANCING_ENABLED)
+#ifndef VARC_STEREO_EYE_INDEX_DECLARED
+#define VARC_STEREO_EYE_INDEX_DECLARED
+static uint unity_StereoEyeIndex;
+#endif
+#else
 static const int unity_StereoEyeIndex = 0;
+#endif
 
 // ---------------------------------------------------------------------------------------------
 // More legacy names.
@@ -216,8 +229,12 @@ static const int unity_StereoEyeIndex = 0;
 #define UNITY_MATRIX_TEXTURE3 UNITY_MATRIX_TEXTURE0
 #define glstate_matrix_transpose_modelview0 UNITY_MATRIX_T_MV
 
-// Light probe proxy volumes: varc has none, so UNITY_LIGHT_PROBE_PROXY_VOLUME stays undefined
-// and the runtime leaves this block zero (unity_ProbeVolumeParams.x = 0: "use the SH probes").
+// Light probe proxy volumes: varc has none, so UNITY_LIGHT_PROBE_PROXY_VOLUME is 0 (Unity's value
+// on platforms without them: code tests it with #if) and the runtime leaves this block zero
+// (unity_ProbeVolumeParams.x = 0: "use the SH probes").
+#ifndef UNITY_LIGHT_PROBE_PROXY_VOLUME
+#define UNITY_LIGHT_PROBE_PROXY_VOLUME 0
+#endif
 // Declared so that shaders sampling a volume where Unity would still compile.
 UNITY_DECLARE_TEX3D_FLOAT(unity_ProbeVolumeSH);
 CBUFFER_START(UnityProbeVolume)

@@ -25,7 +25,15 @@ inline float UnityShadowTentArea(float x, float h) {  // the tent's area left of
 // SHADOWS_SCREEN programs declare their own _ShadowMapTexture (AutoLight.cginc or the shader).
 // ---------------------------------------------------------------------------------------------
 #if defined(SHADOWS_DEPTH) && !defined(SHADOWS_SCREEN)
+// A program that declared the map itself says so with SHADOWMAPSAMPLER_DEFINED.
+#if !defined(SHADOWMAPSAMPLER_DEFINED)
 UNITY_DECLARE_SHADOWMAP(_ShadowMapTexture);
+#define SHADOWMAPSAMPLER_DEFINED
+#endif
+#if defined(SHADOWS_SOFT)
+// The map and its _TexelSize (UnityShaderVariables.cginc) are both there for the PCF filters.
+#define SHADOWMAPSAMPLER_AND_TEXELSIZE_DEFINED
+#endif
 
 // shadowCoord = mul(unity_WorldToShadow[0], float4(worldPos, 1)). Hard: one depth comparison at
 // the nearest texel. Soft: the 3-texel tent over the 4 x 4 texels around the coordinate.
@@ -75,6 +83,9 @@ inline half UnityCubeShadowTap(float3 vec, float depth) {
     return depth <= texCUBElod(_ShadowMapTexture, float4(vec, 0)).r ? 1.0 : 0.0;
 }
 
+// The depth stored in the cube along vec (the map's .r; varc's point-light maps are depth cubes).
+inline float SampleCubeDistance(float3 vec) { return texCUBElod(_ShadowMapTexture, float4(vec, 0)).r; }
+
 inline half UnitySampleShadowmap(float3 vec) {
     float depth = UnityCubeShadowDepth(vec);
 #if defined(SHADOWS_SOFT)
@@ -88,6 +99,17 @@ inline half UnitySampleShadowmap(float3 vec) {
 #endif
     return lerp(_LightShadowData.r, 1.0, lit);
 }
+#endif
+
+// Unity 4's soft-shadow tap offsets (four taps around the coordinate): varc's filters above do
+// not read them and its runtime never sets them, so they are constant zeros (a uniform would
+// change the globals of every soft-shadow program).
+#if defined(SHADOWS_SOFT)
+static const float4 _ShadowOffsets[4] = {float4(0, 0, 0, 0), float4(0, 0, 0, 0), float4(0, 0, 0, 0), float4(0, 0, 0, 0)};
+#endif
+// A screen-space shadow with lightmaps: the GI code mixes realtime and baked shadows.
+#if defined(SHADOWS_SCREEN) && defined(LIGHTMAP_ON)
+#define HANDLE_SHADOWS_BLENDING_IN_GI 1
 #endif
 
 // ---------------------------------------------------------------------------------------------
@@ -155,7 +177,28 @@ inline half UnitySampleShadowmap_PCF3x3Tent(float4 coord, float3 receiverPlaneDe
 inline half UnitySampleShadowmap_PCF5x5Tent(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 2.5, 3); }
 inline half UnitySampleShadowmap_PCF7x7Tent(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 3.5, 4); }
 inline half UnitySampleShadowmap_PCF3x3NoHardwareSupport(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapTent(coord, 1.5, 2); }
+// Gaussian filters: the binomial kernels (1 2 1)/4 and (1 4 6 4 1)/16, separable, over the
+// texels centred on the one holding the coordinate. 1 = lit, before the shadow strength.
+inline half VarcSampleShadowmapBinomial(float4 coord, int radius) {
+    float3 c = coord.xyz / coord.w;
+    float2 centre = floor(c.xy * _ShadowMapTexture_TexelSize.zw);
+    float kernel[5] = {1.0, 4.0, 6.0, 4.0, 1.0};
+    float norm = radius == 1 ? 16.0 : 256.0;
+    half lit = 0.0;
+    for (int j = -radius; j <= radius; ++j) {
+        for (int i = -radius; i <= radius; ++i) {
+            float w = radius == 1 ? (2.0 - abs(i)) * (2.0 - abs(j)) : kernel[i + 2] * kernel[j + 2];
+            float2 uv = (centre + float2(i, j) + 0.5) * _ShadowMapTexture_TexelSize.xy;
+            lit += w * UNITY_SAMPLE_SHADOW(_ShadowMapTexture, float3(uv, c.z));
+        }
+    }
+    return lit / norm;
+}
+half UnitySampleShadowmap_PCF3x3Gaussian(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapBinomial(coord, 1); }
+half UnitySampleShadowmap_PCF5x5Gaussian(float4 coord, float3 receiverPlaneDepthBias) { return VarcSampleShadowmapBinomial(coord, 2); }
 #endif
+
+#include "VarcShadowTentWeights.cginc"
 
 // Receiver-plane depth bias: varc's casters carry the bias (unity_LightShadowBias), so the
 // receiver's plane adds none: (0, 0, 0). A shadow coordinate offset by deltaUV texels' uv then

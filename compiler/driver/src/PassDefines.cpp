@@ -6,6 +6,7 @@
 #include <cctype>
 
 #include "varc/core/AsciiCase.h"
+#include "varc/driver/InstancingOptions.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::driver {
@@ -113,6 +114,10 @@ std::vector<PredefinedMacro> predefinedMacros(const DefineContext& context) {
         for (const char* name : kGlslangPredefinedExtensions) {
             macros.push_back({PredefinedMacro::Kind::Undef, name, ""});
         }
+    }
+    if (context.language != shaderlab::ProgramLanguage::Glsl) {
+        for (PredefinedMacro& macro : instancingOptionMacros(context.instancingOptions))
+            macros.push_back(std::move(macro));
     }
     for (const std::string& keyword : context.keywords) define(keyword, "1");
     return macros;

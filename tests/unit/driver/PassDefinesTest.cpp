@@ -2,6 +2,7 @@
 // The predefined macros: target numbers, pass macros from LightMode, stage and keyword defines.
 #include <gtest/gtest.h>
 
+#include "varc/driver/InstancingOptions.h"
 #include "varc/driver/PassDefines.h"
 #include "varc/variants/PassKeywords.h"
 
@@ -30,7 +31,8 @@ TEST(PassDefines, PreambleListsApiTargetPassStageAndKeywordsInOrder) {
                           "3.0",
                           shaderlab::ProgramLanguage::Cg,
                           Stage::Fragment,
-                          {"POINT", "SHADOWS_CUBE"}};
+                          {"POINT", "SHADOWS_CUBE"},
+                          {}};
     std::string preamble = makePreamble(context);
     std::string defines;
     for (size_t at = 0; at < preamble.size();) {
@@ -53,13 +55,45 @@ TEST(PassDefines, PreambleListsApiTargetPassStageAndKeywordsInOrder) {
 }
 
 TEST(PassDefines, GlslProgramsAlsoGetTheVertexOrFragmentSelector) {
-    DefineContext context{"", "", shaderlab::ProgramLanguage::Glsl, Stage::Vertex, {}};
+    DefineContext context{"", "", shaderlab::ProgramLanguage::Glsl, Stage::Vertex, {}, {}};
     std::string preamble = makePreamble(context);
     EXPECT_NE(preamble.find("#define VERTEX 1\n"), std::string::npos);
     EXPECT_EQ(preamble.find("FRAGMENT"), std::string::npos);
     EXPECT_NE(preamble.find("#define SHADER_TARGET 25\n"), std::string::npos);
     EXPECT_EQ(preamble.find("GetRenderTargetSampleCount"), std::string::npos);
     EXPECT_EQ(preamble.find("#undef"), std::string::npos);
+}
+
+// `#pragma instancing_options` (Unity manual, "GPU instancing"): each documented switch becomes
+// its macro, before the keywords; malformed values and unknown switches define nothing.
+TEST(PassDefines, InstancingOptionsBecomeUnityMacros) {
+    std::vector<PredefinedMacro> macros = instancingOptionMacros(
+        {"procedural:setup", "maxcount:50", "forcemaxcount:8", "assumeuniformscaling", "nomatrices",
+         "lodfade", "renderinglayer", "nolodfade", "nolightprobe", "nolightmap", "maxcount:x",
+         "procedural:", "bogus"});
+    std::string text = writePreamble(macros);
+    EXPECT_EQ(text,
+              "#define UNITY_INSTANCING_PROCEDURAL_FUNC setup\n"
+              "#define UNITY_MAX_INSTANCE_COUNT 50\n"
+              "#define UNITY_FORCE_MAX_INSTANCE_COUNT 8\n"
+              "#define UNITY_ASSUME_UNIFORM_SCALING 1\n"
+              "#define UNITY_DONT_INSTANCE_OBJECT_MATRICES 1\n"
+              "#define UNITY_INSTANCED_LOD_FADE 1\n"
+              "#define UNITY_INSTANCED_RENDERING_LAYER 1\n");
+    // The last of two counts wins.
+    EXPECT_EQ(writePreamble(instancingOptionMacros({"maxcount:10", "maxcount:20"})),
+              "#define UNITY_MAX_INSTANCE_COUNT 20\n");
+
+    DefineContext context{"",
+                          "3.5",
+                          shaderlab::ProgramLanguage::Cg,
+                          Stage::Vertex,
+                          {"INSTANCING_ON"},
+                          {"maxcount:16"}};
+    std::string preamble = makePreamble(context);
+    size_t option = preamble.find("#define UNITY_MAX_INSTANCE_COUNT 16\n");
+    ASSERT_NE(option, std::string::npos);
+    EXPECT_LT(option, preamble.find("#define INSTANCING_ON 1\n"));
 }
 
 }  // namespace

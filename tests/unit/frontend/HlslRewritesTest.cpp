@@ -95,6 +95,18 @@ TEST(HlslRewrites, MatrixSwizzlesOfSeveralElementsAreSpelledOut) {
     EXPECT_EQ(rewriteHlslForGlslang(notSwizzles), notSwizzles);
 }
 
+// Unity's procedural-instancing example inverts a scale-and-translate matrix in place: a simple
+// assignment to a swizzle stays (glslang accepts it), a compound one becomes a simple one.
+TEST(HlslRewrites, WrittenMatrixSwizzlesBecomeSimpleAssignments) {
+    std::string text =
+        "static float4x4 M;\nvoid f(float s) { M._14_24_34 *= -1; M._11_22_33 = 1.0f / "
+        "M._11_22_33; M._m00_m11 += float2(s, (s + 1)); }\n";
+    EXPECT_EQ(rewriteHlslForGlslang(text),
+              "static float4x4 M;\nvoid f(float s) { M._14_24_34 = float3(M[0][3], M[1][3], "
+              "M[2][3]) * ( -1); M._11_22_33 = 1.0f / float3(M[0][0], M[1][1], M[2][2]); "
+              "M._m00_m11 = float2(M[0][0], M[1][1]) + ( float2(s, (s + 1))); }\n");
+}
+
 TEST(HlslRewrites, HexLiteralsWiderThan32BitsKeepTheirLow32Bits) {
     std::string text =
         "uint h(uint n) { return n * 0x1376312589U + 0x0000FFFFFFFF + 0x7fffffffu; }\n";

@@ -69,8 +69,12 @@ void setUpProjections(PassJob& job) {
     // mostly) walk alike: they share one projection, and so its walks.
     std::map<std::string, std::shared_ptr<KeywordProjection>> byBase;
     for (const auto& [stage, entry] : job.stages) {
-        DefineContext context{
-            job.pass->pass->lightMode(), job.pass->keywords.target, languageOf(job), stage, {}};
+        DefineContext context{job.pass->pass->lightMode(),
+                              job.pass->keywords.target,
+                              languageOf(job),
+                              stage,
+                              {},
+                              job.pass->keywords.instancingOptions};
         std::vector<PredefinedMacro> macros = predefinedMacros(context);
         dropUnobservedMacros(macros, names);
         if (job.userDefines) job.userDefines->adopt(macros);
@@ -89,8 +93,12 @@ std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex) {
     if (!job.projections.empty()) {
         if (auto observed = job.projections[stageIndex]->observedOf(key)) key = *observed;
     }
-    DefineContext context{job.pass->pass->lightMode(), job.pass->keywords.target, languageOf(job),
-                          stage, job.pass->space->table().namesOf(key)};
+    DefineContext context{job.pass->pass->lightMode(),
+                          job.pass->keywords.target,
+                          languageOf(job),
+                          stage,
+                          job.pass->space->table().namesOf(key),
+                          job.pass->keywords.instancingOptions};
     std::vector<PredefinedMacro> macros = predefinedMacros(context);
     if (job.observed) dropUnobservedMacros(macros, *job.observed);
     if (job.userDefines) job.userDefines->adopt(macros);

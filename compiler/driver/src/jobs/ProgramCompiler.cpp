@@ -134,6 +134,7 @@ bool needsHlslRewrite(const StageProgram& program, const Attempt& attempt) {
            (log.find("condition must be a scalar integer expression") != std::string::npos ||
             log.find("can't modify a uniform") != std::string::npos ||
             log.find("Missing functionality: matrix swizzle") != std::string::npos ||
+            log.find("only simple assignment to non-simple matrix swizzle") != std::string::npos ||
             log.find("hexadecimal literal too big") != std::string::npos ||
             log.find("'member type' : Expected") != std::string::npos ||
             log.find("unknown variable") != std::string::npos ||

@@ -20,6 +20,9 @@ struct DefineContext {
     shaderlab::ProgramLanguage language = shaderlab::ProgramLanguage::Cg;
     Stage stage = Stage::Vertex;
     std::vector<std::string> keywords;  // the variant's keywords, sorted
+    // `#pragma instancing_options` switches as written ("procedural:setup", "maxcount:50");
+    // each documented one adds its macro (instancingOptionMacros) before the keywords.
+    std::vector<std::string> instancingOptions;
 };
 
 // Unity's version number that varc's built-in library behaves like (2019.4).
