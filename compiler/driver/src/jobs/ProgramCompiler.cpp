@@ -18,6 +18,7 @@
 #include "varc/frontend/EntryPointCheck.h"
 #include "varc/frontend/HlslRewrites.h"
 #include "varc/frontend/LoopVariableScope.h"
+#include "varc/frontend/OpaqueStructMembers.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::driver::detail {
@@ -197,6 +198,36 @@ Attempt compileWithRewrites(const StageProgram& program, const std::string& text
     return attempt;
 }
 
+// The error for a module the validator refused before optimising: for HLSL with a texture or
+// sampler inside a struct (what glslang's texture-sampler transform cannot combine), one at that
+// member naming the construct; otherwise the validator's own message at the program's block.
+std::vector<Diagnostic> invalidModuleDiagnostics(const StageProgram& program,
+                                                 const std::string& invalid,
+                                                 const includes::SourceMap& sourceMap) {
+    if (program.language != shaderlab::ProgramLanguage::Glsl) {
+        if (auto member = frontend::findOpaqueStructMember(program.text)) {
+            // Through glslang's log format for the mapping to the user's file:line:col.
+            std::vector<Diagnostic> found = parseGlslangLog(
+                "ERROR: " + std::to_string(member->file) + ":" + std::to_string(member->line) +
+                    ": '" + member->member + "' : opaque struct member\n",
+                sourceMap);
+            if (found.size() == 1 && found[0].location.isKnown()) {
+                found[0].message = "the " + member->type + " '" + member->member +
+                                   "' is a member of struct '" + member->structName +
+                                   "', which glslang cannot compile for Vulkan (its "
+                                   "texture-sampler transform leaves a struct member a plain "
+                                   "image); pass the texture and its sampler as separate "
+                                   "parameters instead";
+                return found;
+            }
+        }
+    }
+    return {{Severity::Error,
+             program.origin,
+             "glslang's SPIR-V is invalid (refused before optimising): " + invalid,
+             {}}};
+}
+
 }  // namespace
 
 CompiledSource compileStageProgram(const StageProgram& program, const BuildOptions& options,
@@ -251,8 +282,11 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
     }
     if (!compiled.ok) return result;
     if (attempt.crashed) return fail(*attempt.crashed + " (please report it with this shader)");
-    if (attempt.invalid && attempt.invalidInput)
-        return fail("glslang's SPIR-V is invalid (refused before optimising): " + *attempt.invalid);
+    if (attempt.invalid && attempt.invalidInput) {
+        for (Diagnostic& refusal : invalidModuleDiagnostics(program, *attempt.invalid, sourceMap))
+            result.diagnostics.push_back(std::move(refusal));
+        return result;
+    }
     SpirvResult& optimized = attempt.optimized;
     if (!optimized.ok) return fail("SPIR-V optimisation failed: " + optimized.message);
     if (attempt.invalid) return fail("generated SPIR-V is invalid: " + *attempt.invalid);
