@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// findOpaqueStructMember: the members of each `struct NAME { ... }` in a preprocessed program.
+// findOpaqueStructMember and combineStructTextureMembers: the members of each `struct NAME { ... }`
+// in a preprocessed program.
 #include "varc/frontend/OpaqueStructMembers.h"
 
 #include <algorithm>
@@ -61,10 +62,12 @@ std::optional<std::pair<size_t, size_t>> opaqueMember(const std::vector<Token>& 
 
 }  // namespace
 
-std::optional<OpaqueStructMember> findOpaqueStructMember(std::string_view preprocessed) {
-    pruner::ShaderTokenizer tokenizer;
-    if (!tokenizer.tokenize(preprocessed)) return std::nullopt;
-    const std::vector<Token>& tokens = tokenizer.tokens();
+namespace {
+
+// Calls |visit(structToken, typeToken, nameToken)| for each opaque member of each struct, in
+// text order, until it returns false.
+template <typename Visit>
+void forEachOpaqueMember(const std::vector<Token>& tokens, Visit visit) {
     for (size_t i = 0; i + 2 < tokens.size(); ++i) {
         if (tokens[i].text != "struct" || tokens[i + 1].kind != TokenKind::Identifier ||
             tokens[i + 2].text != "{")
@@ -77,26 +80,68 @@ std::optional<OpaqueStructMember> findOpaqueStructMember(std::string_view prepro
             if (tokens[t].text == "}" && --depth == 0) break;
             if (depth != 1 || tokens[t].text != ";") continue;
             if (auto found = opaqueMember(tokens, begin, t)) {
-                OpaqueStructMember member;
-                member.structName = std::string(tokens[i + 1].text);
-                member.type = std::string(tokens[found->first].text);
-                member.member = std::string(tokens[found->second].text);
-                pruner::LineOriginMap origins;
-                const size_t line = tokens[found->second].line;
-                if (origins.build(tokenizer.directives(), line + 1)) {
-                    const pruner::LineOrigin& origin = origins.origin(line);
-                    member.line = origin.line;
-                    if (origin.hasSource)
-                        member.file = std::strtoul(std::string(origin.source).c_str(), nullptr, 10);
-                } else {
-                    member.line = line + 1;
-                }
-                return member;
+                if (!visit(i + 1, found->first, found->second)) return;
             }
             begin = t + 1;
         }
     }
-    return std::nullopt;
+}
+
+// The combined sampler standing for texture type |type|, or empty.
+std::string_view combinedSampler(std::string_view type) {
+    if (type == "Texture1D") return "sampler1D";
+    if (type == "Texture2D") return "sampler2D";
+    if (type == "Texture3D") return "sampler3D";
+    if (type == "TextureCube") return "samplerCUBE";
+    return {};
+}
+
+}  // namespace
+
+std::optional<OpaqueStructMember> findOpaqueStructMember(std::string_view preprocessed) {
+    pruner::ShaderTokenizer tokenizer;
+    if (!tokenizer.tokenize(preprocessed)) return std::nullopt;
+    const std::vector<Token>& tokens = tokenizer.tokens();
+    std::optional<OpaqueStructMember> member;
+    forEachOpaqueMember(tokens, [&](size_t structName, size_t type, size_t name) {
+        member.emplace();
+        member->structName = std::string(tokens[structName].text);
+        member->type = std::string(tokens[type].text);
+        member->member = std::string(tokens[name].text);
+        pruner::LineOriginMap origins;
+        const size_t line = tokens[name].line;
+        member->line = line + 1;
+        if (origins.build(tokenizer.directives(), line + 1)) {
+            const pruner::LineOrigin& origin = origins.origin(line);
+            member->line = origin.line;
+            if (origin.hasSource)
+                member->file = std::strtoul(std::string(origin.source).c_str(), nullptr, 10);
+        }
+        return false;
+    });
+    return member;
+}
+
+std::string combineStructTextureMembers(std::string_view preprocessed) {
+    pruner::ShaderTokenizer tokenizer;
+    if (!tokenizer.tokenize(preprocessed)) return std::string(preprocessed);
+    const std::vector<Token>& tokens = tokenizer.tokens();
+    // Offsets into the tokenizer's code() are the input's: comments become blanks there.
+    std::string text(preprocessed);
+    forEachOpaqueMember(tokens, [&](size_t, size_t type, size_t name) {
+        // Each sampler type is as long as its texture type, so the offsets stay valid.
+        std::string_view sampler = combinedSampler(tokens[type].text);
+        if (sampler.empty()) return true;
+        const size_t from = tokenizer.offsetOf(tokens[type]);
+        const size_t to = tokenizer.offsetOf(tokens[name]);
+        std::string replacement(sampler);
+        // Blanks keep the columns; a line break inside the template arguments stays.
+        for (size_t i = from + sampler.size(); i < to; ++i)
+            replacement += text[i] == '\n' ? '\n' : ' ';
+        text.replace(from, to - from, replacement);
+        return true;
+    });
+    return text;
 }
 
 }  // namespace varc::frontend

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// findOpaqueStructMember: textures and samplers inside structs, and the structs that hold none.
+// findOpaqueStructMember and combineStructTextureMembers: textures and samplers inside structs,
+// and the structs that hold none.
 #include <gtest/gtest.h>
 
 #include "varc/frontend/OpaqueStructMembers.h"
@@ -55,6 +56,24 @@ TEST(OpaqueStructMembers, IgnoresPlainStructsAndGlobalTextures) {
     EXPECT_FALSE(
         findOpaqueStructMember("struct S { float a; };\n"
                                "float4 f(Texture2D t, float2 uv) { return 0; }"));
+}
+
+TEST(OpaqueStructMembers, TextureMembersBecomeCombinedSamplersKeepingColumns) {
+    EXPECT_EQ(
+        combineStructTextureMembers("struct S {\n  Texture2D<float4> t;\n  SamplerState s;\n};"),
+        "struct S {\n  sampler2D         t;\n  SamplerState s;\n};");
+    EXPECT_EQ(combineStructTextureMembers("struct A { TextureCube c; Texture3D v; Texture1D l; };"),
+              "struct A { samplerCUBE c; sampler3D v; sampler1D l; };");
+    // A comment keeps its place; a line break inside template arguments stays.
+    EXPECT_EQ(combineStructTextureMembers("struct B { /*x*/ Texture2D<\nfloat4> t; };"),
+              "struct B { /*x*/ sampler2D \n        t; };");
+}
+
+TEST(OpaqueStructMembers, LeavesWhatHasNoCombinedSampler) {
+    const std::string text =
+        "Texture2D _MainTex;\nstruct S { Texture2DArray a; SamplerState s; float4 c; };\n"
+        "float4 f(Texture2D t) { return 0; }";
+    EXPECT_EQ(combineStructTextureMembers(text), text);
 }
 
 }  // namespace

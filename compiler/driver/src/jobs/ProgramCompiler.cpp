@@ -195,6 +195,17 @@ Attempt compileWithRewrites(const StageProgram& program, const std::string& text
         attempt = compileAndValidate(program, rewritten, options);
         previous = std::move(rewritten);
     }
+    // A texture inside a struct, which the texture-sampler transform leaves a plain image: once
+    // more with the member declared as the combined sampler the global texture became.
+    if (program.language != shaderlab::ProgramLanguage::Glsl && attempt.invalid &&
+        attempt.invalidInput) {
+        std::string combined = frontend::combineStructTextureMembers(previous);
+        if (combined != previous) {
+            Attempt retry = compileAndValidate(program, combined, options);
+            if (retry.compiled.ok && !(retry.invalid && retry.invalidInput))
+                attempt = std::move(retry);
+        }
+    }
     return attempt;
 }
 

@@ -31,4 +31,15 @@ struct OpaqueStructMember {
 // Example: "struct S { Texture2D t; SamplerState s; };" -> {"S", "Texture2D", "t"}.
 std::optional<OpaqueStructMember> findOpaqueStructMember(std::string_view preprocessed);
 
+// |preprocessed| with every struct member of type Texture1D, Texture2D, Texture3D or TextureCube
+// (template arguments included) declared as the matching Cg combined sampler (sampler1D,
+// sampler2D, sampler3D, samplerCUBE), padded with blanks so every later column stays put. Under
+// the texture-sampler transform a global texture is such a combined sampler, so assigning it to
+// the member, and sampling the member (`.Sample(s, uv)`, `tex2D`), then type-check; the struct's
+// SamplerState members are left as written (the transform ignores the sampler argument). The
+// driver retries with this text only after the validator refused glslang's module. Unchanged
+// when there is no such member. Example: "struct S { Texture2D<float4> t; };" ->
+// "struct S { sampler2D        t; };".
+std::string combineStructTextureMembers(std::string_view preprocessed);
+
 }  // namespace varc::frontend
