@@ -15,6 +15,7 @@
 #include "varc/driver/SpirvMatrixMath.h"
 #include "varc/driver/SpirvOptimizer.h"
 #include "varc/driver/SpirvReflection.h"
+#include "varc/frontend/CbufferRedeclarations.h"
 #include "varc/frontend/EntryPointCheck.h"
 #include "varc/frontend/HlslRewrites.h"
 #include "varc/frontend/LoopVariableScope.h"
@@ -209,6 +210,28 @@ Attempt compileWithRewrites(const StageProgram& program, const std::string& text
     return attempt;
 }
 
+// What glslang's HLSL front end would crash on, as a glslang log line ("ERROR: file:line: ..."),
+// or nullopt: an unnamed entry-point parameter (KhronosGroup/glslang#4389), a global redeclaring
+// a cbuffer member with another type (found by the `build` fuzz target).
+std::optional<std::string> refusalBeforeGlslang(const StageProgram& program) {
+    if (program.language == shaderlab::ProgramLanguage::Glsl) return std::nullopt;
+    if (auto unnamed = frontend::findUnnamedEntryParameter(program.text, program.entryPoint)) {
+        std::string written = joinWords(splitWords(unnamed->text));
+        return "ERROR: " + std::to_string(unnamed->file) + ":" + std::to_string(unnamed->line) +
+               ": '" + std::string(program.entryPoint) + "' : entry-point parameter " +
+               std::to_string(unnamed->index) + " ('" + written +
+               "') has no name; give it one (glslang cannot compile it)\n";
+    }
+    if (auto again = frontend::findCbufferRedeclaration(program.text)) {
+        // glslang's format: the parser appends the quoted name to the message.
+        return "ERROR: " + std::to_string(again->file) + ":" + std::to_string(again->line) + ": '" +
+               again->name + "' : type differs from the built-in cbuffer " + again->cbufferName +
+               "'s (" + again->memberType + ", here " + again->type +
+               "); remove this declaration or make it " + again->memberType + ":\n";
+    }
+    return std::nullopt;
+}
+
 // The error for a module the validator refused before optimising: for HLSL with a texture or
 // sampler inside a struct (what glslang's texture-sampler transform cannot combine), one at that
 // member naming the construct; otherwise the validator's own message at the program's block.
@@ -266,19 +289,9 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
             }
         }
     }
-    if (program.language != shaderlab::ProgramLanguage::Glsl) {
-        // glslang's HLSL front end crashes on an unnamed entry-point parameter
-        // (KhronosGroup/glslang#4389); report it the way glslang reports errors instead.
-        if (auto unnamed = frontend::findUnnamedEntryParameter(program.text, program.entryPoint)) {
-            std::string written = joinWords(splitWords(unnamed->text));
-            result.diagnostics = parseGlslangLog(
-                "ERROR: " + std::to_string(unnamed->file) + ":" + std::to_string(unnamed->line) +
-                    ": '" + std::string(program.entryPoint) + "' : entry-point parameter " +
-                    std::to_string(unnamed->index) + " ('" + written +
-                    "') has no name; give it one (glslang cannot compile it)\n",
-                sourceMap);
-            return result;
-        }
+    if (std::optional<std::string> refusal = refusalBeforeGlslang(program)) {
+        result.diagnostics = parseGlslangLog(*refusal, sourceMap);
+        return result;
     }
     std::string text = program.language == shaderlab::ProgramLanguage::Glsl
                            ? std::string(program.text)
