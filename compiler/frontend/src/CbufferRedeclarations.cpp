@@ -70,8 +70,8 @@ std::optional<CbufferRedeclaration> findCbufferRedeclaration(std::string_view pr
     pruner::ShaderTokenizer tokenizer;
     if (!tokenizer.tokenize(preprocessed)) return std::nullopt;
     const std::vector<Token>& tokens = tokenizer.tokens();
-    const std::map<std::string_view, Member> members = cbufferMembers(tokens);
-    if (members.empty()) return std::nullopt;
+    // Cbuffer members, then each global as it is first declared (an empty cbuffer name).
+    std::map<std::string_view, Member> members = cbufferMembers(tokens);
     int depth = 0;
     for (size_t i = 0; i < tokens.size(); ++i) {
         if (tokens[i].text == "{") ++depth;
@@ -81,8 +81,11 @@ std::optional<CbufferRedeclaration> findCbufferRedeclaration(std::string_view pr
             tokens[i - 1].kind != TokenKind::Identifier)
             continue;  // not the start of a declaration (e.g. after '(' or ',')
         auto member = members.find(tokens[i + 1].text);
-        if (member == members.end() || shapeOf(member->second.type) == shapeOf(tokens[i].text))
+        if (member == members.end()) {
+            members.emplace(tokens[i + 1].text, Member{tokens[i].text, {}});
             continue;
+        }
+        if (shapeOf(member->second.type) == shapeOf(tokens[i].text)) continue;
         CbufferRedeclaration found{std::string(tokens[i + 1].text),
                                    std::string(tokens[i].text),
                                    std::string(member->second.type),

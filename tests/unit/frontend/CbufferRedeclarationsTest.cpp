@@ -26,6 +26,17 @@ TEST(CbufferRedeclarations, FindsAGlobalOfAnotherShape) {
     EXPECT_EQ(uniform->line, 13u);
 }
 
+// glslang crashes the same way on two globals of one name (found by the build fuzz target).
+TEST(CbufferRedeclarations, FindsTwoGlobalsOfOneNameAndDifferentTypes) {
+    auto found = findCbufferRedeclaration("sampler2D _A;\nfloat4 _A;");
+    ASSERT_TRUE(found);
+    EXPECT_EQ(found->memberType, "sampler2D");
+    EXPECT_EQ(found->type, "float4");
+    EXPECT_EQ(found->cbufferName, "");
+    EXPECT_EQ(found->line, 2u);
+    EXPECT_FALSE(findCbufferRedeclaration("half3 _A;\nfloat3 _A;"));
+}
+
 TEST(CbufferRedeclarations, TheSameShapeInAnotherPrecisionIsNotReported) {
     EXPECT_FALSE(findCbufferRedeclaration(std::string(kBuiltins) + "fixed4 _LightColor0;"));
     EXPECT_FALSE(findCbufferRedeclaration(std::string(kBuiltins) + "float4 _LightColor0;"));

@@ -225,7 +225,9 @@ std::optional<std::string> refusalBeforeGlslang(const StageProgram& program) {
     if (auto again = frontend::findCbufferRedeclaration(program.text)) {
         // glslang's format: the parser appends the quoted name to the message.
         return "ERROR: " + std::to_string(again->file) + ":" + std::to_string(again->line) + ": '" +
-               again->name + "' : type differs from the built-in cbuffer " + again->cbufferName +
+               again->name + "' : type differs from " +
+               (again->cbufferName.empty() ? "an earlier declaration"
+                                           : "the built-in cbuffer " + again->cbufferName) +
                "'s (" + again->memberType + ", here " + again->type +
                "); remove this declaration or make it " + again->memberType + ":\n";
     }
