@@ -3,13 +3,15 @@
 # Builds the libFuzzer targets with clang, ASan and UBSan into ${VARC_FUZZ_BUILD_DIR:-build-fuzz}
 # and runs each for ${VARC_FUZZ_SECONDS:-60} seconds on its seed corpus and dictionary. A crash,
 # leak or sanitizer report fails the run and leaves the reproducer in the work folder
-# (build-fuzz/findings/<target>/). Usage: scripts/fuzz.sh [target...] (default: all five).
+# (build-fuzz/findings/<target>/). Usage: scripts/fuzz.sh [target...] (default: all six).
+# The `build` target also starts from the corpus shaders, read in place from ../shared/compat
+# (the folder beside the checkout) when it is there.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${VARC_FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${VARC_FUZZ_SECONDS:-60}
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(pack_reader shaderlab include front_end scene)
+[ ${#targets[@]} -gt 0 ] || targets=(pack_reader shaderlab include front_end scene build)
 
 # VARC_FUZZ_REUSE_BUILD=1: $build is a configured tree with VARC_BUILD_FUZZERS=ON (the sanitizer
 # job's, scripts/test.sh --sanitize); only the fuzz targets are built in it.
@@ -40,7 +42,18 @@ fuzzOne() {
     else
         seeds=("$root/tests/fuzz/corpus/$target")
     fi
-    [ -f "$root/tests/fuzz/dict/$target.dict" ] && dict=(-dict="$root/tests/fuzz/dict/$target.dict")
+    # `build` reads the same text as front_end (its dictionary), plus the corpus's .shader files.
+    local dict_name=$target
+    if [ "$target" = build ]; then
+        dict_name=front_end
+        local compat
+        compat=$(cd "$root/.." && pwd)/shared/compat
+        if [ -d "$compat" ]; then
+            find "$compat" -name '*.shader' | sort | paste -sd, | tr -d '\n' > "$build/build-seeds.txt"
+            seeds+=(-seed_inputs=@"$build/build-seeds.txt")
+        fi
+    fi
+    [ -f "$root/tests/fuzz/dict/$dict_name.dict" ] && dict=(-dict="$root/tests/fuzz/dict/$dict_name.dict")
     if ! "$build/tests/fuzz/varc_${target}_fuzzer" "$work" "${seeds[@]}" "${dict[@]}" \
             -max_total_time="$seconds" -max_len=20000 -timeout=20 -rss_limit_mb=4096 \
             -artifact_prefix="$findings/" -print_final_stats=1 > "$build/$target.log" 2>&1; then

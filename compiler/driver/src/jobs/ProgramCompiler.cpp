@@ -15,9 +15,11 @@
 #include "varc/driver/SpirvMatrixMath.h"
 #include "varc/driver/SpirvOptimizer.h"
 #include "varc/driver/SpirvReflection.h"
+#include "varc/frontend/CbufferRedeclarations.h"
 #include "varc/frontend/EntryPointCheck.h"
 #include "varc/frontend/HlslRewrites.h"
 #include "varc/frontend/LoopVariableScope.h"
+#include "varc/frontend/OpaqueStructMembers.h"
 #include "varc/variants/PassKeywords.h"
 
 namespace varc::driver::detail {
@@ -195,7 +197,72 @@ Attempt compileWithRewrites(const StageProgram& program, const std::string& text
         attempt = compileAndValidate(program, rewritten, options);
         previous = std::move(rewritten);
     }
+    // A texture inside a struct, which the texture-sampler transform leaves a plain image: once
+    // more with the member declared as the combined sampler the global texture became.
+    if (program.language != shaderlab::ProgramLanguage::Glsl && attempt.invalid &&
+        attempt.invalidInput) {
+        std::string combined = frontend::combineStructTextureMembers(previous);
+        if (combined != previous) {
+            Attempt retry = compileAndValidate(program, combined, options);
+            if (retry.compiled.ok && !(retry.invalid && retry.invalidInput))
+                attempt = std::move(retry);
+        }
+    }
     return attempt;
+}
+
+// What glslang's HLSL front end would crash on, as a glslang log line ("ERROR: file:line: ..."),
+// or nullopt: an unnamed entry-point parameter (KhronosGroup/glslang#4389), a global redeclaring
+// a cbuffer member with another type (found by the `build` fuzz target).
+std::optional<std::string> refusalBeforeGlslang(const StageProgram& program) {
+    if (program.language == shaderlab::ProgramLanguage::Glsl) return std::nullopt;
+    if (auto unnamed = frontend::findUnnamedEntryParameter(program.text, program.entryPoint)) {
+        std::string written = joinWords(splitWords(unnamed->text));
+        return "ERROR: " + std::to_string(unnamed->file) + ":" + std::to_string(unnamed->line) +
+               ": '" + std::string(program.entryPoint) + "' : entry-point parameter " +
+               std::to_string(unnamed->index) + " ('" + written +
+               "') has no name; give it one (glslang cannot compile it)\n";
+    }
+    if (auto again = frontend::findCbufferRedeclaration(program.text)) {
+        // glslang's format: the parser appends the quoted name to the message.
+        return "ERROR: " + std::to_string(again->file) + ":" + std::to_string(again->line) + ": '" +
+               again->name + "' : type differs from " +
+               (again->cbufferName.empty() ? "an earlier declaration"
+                                           : "the built-in cbuffer " + again->cbufferName) +
+               "'s (" + again->memberType + ", here " + again->type +
+               "); remove this declaration or make it " + again->memberType + ":\n";
+    }
+    return std::nullopt;
+}
+
+// The error for a module the validator refused before optimising: for HLSL with a texture or
+// sampler inside a struct (what glslang's texture-sampler transform cannot combine), one at that
+// member naming the construct; otherwise the validator's own message at the program's block.
+std::vector<Diagnostic> invalidModuleDiagnostics(const StageProgram& program,
+                                                 const std::string& invalid,
+                                                 const includes::SourceMap& sourceMap) {
+    if (program.language != shaderlab::ProgramLanguage::Glsl) {
+        if (auto member = frontend::findOpaqueStructMember(program.text)) {
+            // Through glslang's log format for the mapping to the user's file:line:col.
+            std::vector<Diagnostic> found = parseGlslangLog(
+                "ERROR: " + std::to_string(member->file) + ":" + std::to_string(member->line) +
+                    ": '" + member->member + "' : opaque struct member\n",
+                sourceMap);
+            if (found.size() == 1 && found[0].location.isKnown()) {
+                found[0].message = "the " + member->type + " '" + member->member +
+                                   "' is a member of struct '" + member->structName +
+                                   "', which glslang cannot compile for Vulkan (its "
+                                   "texture-sampler transform leaves a struct member a plain "
+                                   "image); pass the texture and its sampler as separate "
+                                   "parameters instead";
+                return found;
+            }
+        }
+    }
+    return {{Severity::Error,
+             program.origin,
+             "glslang's SPIR-V is invalid (refused before optimising): " + invalid,
+             {}}};
 }
 
 }  // namespace
@@ -225,19 +292,9 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
             }
         }
     }
-    if (program.language != shaderlab::ProgramLanguage::Glsl) {
-        // glslang's HLSL front end crashes on an unnamed entry-point parameter
-        // (KhronosGroup/glslang#4389); report it the way glslang reports errors instead.
-        if (auto unnamed = frontend::findUnnamedEntryParameter(program.text, program.entryPoint)) {
-            std::string written = joinWords(splitWords(unnamed->text));
-            result.diagnostics = parseGlslangLog(
-                "ERROR: " + std::to_string(unnamed->file) + ":" + std::to_string(unnamed->line) +
-                    ": '" + std::string(program.entryPoint) + "' : entry-point parameter " +
-                    std::to_string(unnamed->index) + " ('" + written +
-                    "') has no name; give it one (glslang cannot compile it)\n",
-                sourceMap);
-            return result;
-        }
+    if (std::optional<std::string> refusal = refusalBeforeGlslang(program)) {
+        result.diagnostics = parseGlslangLog(*refusal, sourceMap);
+        return result;
     }
     std::string text = program.language == shaderlab::ProgramLanguage::Glsl
                            ? std::string(program.text)
@@ -252,8 +309,11 @@ CompiledSource compileStageProgram(const StageProgram& program, const BuildOptio
     }
     if (!compiled.ok) return result;
     if (attempt.crashed) return fail(*attempt.crashed + " (please report it with this shader)");
-    if (attempt.invalid && attempt.invalidInput)
-        return fail("glslang's SPIR-V is invalid (refused before optimising): " + *attempt.invalid);
+    if (attempt.invalid && attempt.invalidInput) {
+        for (Diagnostic& refusal : invalidModuleDiagnostics(program, *attempt.invalid, sourceMap))
+            result.diagnostics.push_back(std::move(refusal));
+        return result;
+    }
     SpirvResult& optimized = attempt.optimized;
     if (!optimized.ok) return fail("SPIR-V optimisation failed: " + optimized.message);
     if (attempt.invalid) return fail("generated SPIR-V is invalid: " + *attempt.invalid);
