@@ -20,6 +20,7 @@ using pruner::TokenKind;
 struct Member {
     std::string_view type;
     std::string_view cbuffer;
+    bool array = false;  // declared `NAME[...]`
 };
 
 // |type| with its float precision spelled `float` ("half4" -> "float4", "fixed3x3" ->
@@ -32,6 +33,11 @@ std::string shapeOf(std::string_view type) {
             return "float" + std::string(type.substr(precision.size()));
     }
     return std::string(type);
+}
+
+// |type| as a redeclaration is compared and reported: its shape, "[]" after an array's.
+std::string displayOf(std::string_view type, bool array) {
+    return std::string(type) + (array ? "[]" : "");
 }
 
 // Whether tokens[i], tokens[i + 1] are the type and name of a variable declaration:
@@ -57,7 +63,8 @@ std::map<std::string_view, Member> cbufferMembers(const std::vector<Token>& toke
         size_t t = i + 3;
         for (; t < tokens.size() && tokens[t].text != "}"; ++t) {
             if (isDeclaration(tokens, t) && (t == i + 3 || tokens[t - 1].text == ";"))
-                members.emplace(tokens[t + 1].text, Member{tokens[t].text, tokens[i + 1].text});
+                members.emplace(tokens[t + 1].text, Member{tokens[t].text, tokens[i + 1].text,
+                                                           tokens[t + 2].text == "["});
         }
         i = t;  // the closing brace: depth stays 0
     }
@@ -80,15 +87,20 @@ std::optional<CbufferRedeclaration> findCbufferRedeclaration(std::string_view pr
         if (i > 0 && tokens[i - 1].text != ";" && tokens[i - 1].text != "}" &&
             tokens[i - 1].kind != TokenKind::Identifier)
             continue;  // not the start of a declaration (e.g. after '(' or ',')
+        const bool array = tokens[i + 2].text == "[";
         auto member = members.find(tokens[i + 1].text);
         if (member == members.end()) {
-            members.emplace(tokens[i + 1].text, Member{tokens[i].text, {}});
+            members.emplace(tokens[i + 1].text, Member{tokens[i].text, {}, array});
             continue;
         }
-        if (shapeOf(member->second.type) == shapeOf(tokens[i].text)) continue;
+        // An array and a plain variable of one name differ in shape too (`float4 _A;` then
+        // `float4 _A[...`, even a malformed one, reaches the same crash).
+        if (shapeOf(member->second.type) == shapeOf(tokens[i].text) &&
+            member->second.array == array)
+            continue;
         CbufferRedeclaration found{std::string(tokens[i + 1].text),
-                                   std::string(tokens[i].text),
-                                   std::string(member->second.type),
+                                   displayOf(tokens[i].text, array),
+                                   displayOf(member->second.type, member->second.array),
                                    std::string(member->second.cbuffer),
                                    0,
                                    0};

@@ -37,6 +37,20 @@ TEST(CbufferRedeclarations, FindsTwoGlobalsOfOneNameAndDifferentTypes) {
     EXPECT_FALSE(findCbufferRedeclaration("half3 _A;\nfloat3 _A;"));
 }
 
+// The second crash the build fuzz target found: an array of the name of a plain global, even one
+// whose brackets never close.
+TEST(CbufferRedeclarations, FindsAnArrayOfTheNameOfAPlainGlobal) {
+    auto found = findCbufferRedeclaration("float4 _A;\nfloat4 _A[ST;");
+    ASSERT_TRUE(found);
+    EXPECT_EQ(found->memberType, "float4");
+    EXPECT_EQ(found->type, "float4[]");
+    EXPECT_EQ(found->line, 2u);
+    auto member = findCbufferRedeclaration("cbuffer B {\n float4 _C[4];\n};\nfloat4 _C;");
+    ASSERT_TRUE(member);
+    EXPECT_EQ(member->memberType, "float4[]");
+    EXPECT_FALSE(findCbufferRedeclaration("cbuffer B {\n float4 _C[4];\n};\nhalf4 _C[4];"));
+}
+
 TEST(CbufferRedeclarations, TheSameShapeInAnotherPrecisionIsNotReported) {
     EXPECT_FALSE(findCbufferRedeclaration(std::string(kBuiltins) + "fixed4 _LightColor0;"));
     EXPECT_FALSE(findCbufferRedeclaration(std::string(kBuiltins) + "float4 _LightColor0;"));
