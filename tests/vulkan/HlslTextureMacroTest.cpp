@@ -33,7 +33,6 @@
 // api-value-tested: GranitePrivate_DrawDebugTiles
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -231,15 +230,13 @@ TEST_F(HlslTextureMacroTest, Cube) {
 }
 
 // A texture stack samples each layer at the prepared uv (or uv and level); normal layers are
-// unpacked as DXT5nm (x = r * a, y = g, each * 2 - 1, times scale; z rebuilt). No virtual
-// texturing runtime: the resolve output (feedback) is zero, and with UNITY_VIRTUAL_TEXTURING the
-// fallback samples the same texels.
+// unpacked as plain RGB (varc defines UNITY_NO_DXT5nm, HLSLSupport.cginc): rgb * 2 - 1 with xy
+// times scale. No virtual texturing runtime: the resolve output (feedback) is zero, and with
+// UNITY_VIRTUAL_TEXTURING the fallback samples the same texels.
 TEST_F(HlslTextureMacroTest, TextureStacks) {
     Formula stack = [](double u, double v) {
         Vec4 a = sample2D(u, v, 0), b = sample2D(v, u, 1);
-        double nx = (a[0] * a[3] * 2 - 1) * 0.5, ny = (a[1] * 2 - 1) * 0.5;
-        double nz = std::sqrt(1 - std::min(1.0, nx * nx + ny * ny));
-        return Vec4{a[0], b[1], nz, (b[1] * 2 - 1) * 2.0};
+        return Vec4{a[0], b[1], a[2] * 2 - 1, (b[1] * 2 - 1) * 2.0};
     };
     expectFormula("TM_STACK", {}, stack, 1e-3, 0);
     expectFormula("TM_STACK_VT", {}, stack, 1e-3, 0);

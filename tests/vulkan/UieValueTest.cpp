@@ -105,8 +105,10 @@ TEST_F(UieValueTest, TextCoverageAndSnapping) {
 // _ShaderInfoTex (the falloff table here) at its centre.
 TEST_F(UieValueTest, TextureSlotsAndShaderInfo) {
     std::vector<glm::vec4> info(16, glm::vec4(0.0f));
-    for (int i = 0; i < 8; ++i)
-        info[2 * i] = glm::vec4(10.0f + 5.0f * i, 0.0f, (i + 1) / 16.0f, 0.0f);
+    for (int i = 0; i < 8; ++i) {
+        float slot = static_cast<float>(i);
+        info[2 * i] = glm::vec4(10.0f + 5.0f * slot, 0.0f, (slot + 1.0f) / 16.0f, 0.0f);
+    }
     ShaderValues values;
     values.setArray("_TextureInfo", info);
     values.set("_ShaderInfoTex_TexelSize", glm::vec4(1.0f / 1024.0f, 1.0f, 1024.0f, 1.0f));
