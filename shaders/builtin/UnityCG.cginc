@@ -355,6 +355,9 @@ float4 UnityApplyLinearShadowBias(float4 clipPos) {
     #define UNITY_CALC_FOG_FACTOR_RAW(coord) float unityFogFactor = 0.0
 #endif
 #define UNITY_CALC_FOG_FACTOR(coord) UNITY_CALC_FOG_FACTOR_RAW(coord)
+// The blend towards the fog colour exists in every variant, as in Unity (shaders call it with
+// their own factor).
+#define UNITY_FOG_LERP_COLOR(col, fogCol, fogFac) col.rgb = lerp((fogCol).rgb, (col).rgb, saturate(fogFac))
 // The packed form declares its member in every variant: shaders keep other data in the vector's
 // other components (the Standard shader's simple path keeps its reflection vector in yzw).
 #define UNITY_FOG_COORDS_PACKED(idx, vectype) vectype fogCoord : TEXCOORD##idx;
@@ -364,7 +367,6 @@ float4 UnityApplyLinearShadowBias(float4 clipPos) {
     #define UNITY_EXTRACT_FOG(name) float _unity_fogCoord = name.fogCoord
     // glslang treats float1 as a scalar, whose .x is not assignable: assign the whole member.
     #define UNITY_TRANSFER_FOG(o, outpos) o.fogCoord = (outpos).w
-    #define UNITY_FOG_LERP_COLOR(col, fogCol, fogFac) col.rgb = lerp((fogCol).rgb, (col).rgb, saturate(fogFac))
     #define UNITY_APPLY_FOG_COLOR(coord, col, fogCol) { UNITY_CALC_FOG_FACTOR((coord).x); UNITY_FOG_LERP_COLOR(col, fogCol, unityFogFactor); }
 #else
     #define UNITY_FOG_COORDS(idx)
