@@ -76,17 +76,8 @@ protected:
 
     void expectFormula(const std::string& keyword, const ShaderValues& values,
                        const Formula& formula, int channels, double absolute, double relative) {
-        reader::PassView pass = *mPack->findShader("Test/HlslSupportValues")->pass(0);
-        const BuiltinTextures& builtin = *mTextures;
-        TextureLookup textures = [&builtin](std::string_view, pack::ResourceDim dim) {
-            return builtin.named("white", dim);
-        };
-        image::Image image = drawQuad(pass, {keyword}, values, textures);
-        ASSERT_EQ(image.width(), kSize) << keyword;
-        testing::FormulaComparison result =
-            testing::compareWithFormula(image, formula, channels, absolute, relative);
-        EXPECT_LE(result.worst, 1.0) << keyword << ": worst " << result.where;
-        EXPECT_GT(result.largest, 0.1) << keyword;
+        expectPassFormula("Test/HlslSupportValues", keyword, values, whiteTextures(), formula, channels,
+                          absolute, relative);
     }
 };
 

@@ -134,7 +134,6 @@ protected:
     // sampler) and compares 4 channels of every pixel with |formula|.
     void expectFormula(const std::string& keyword, const ShaderValues& values,
                        const Formula& formula, double absolute, double relative) {
-        reader::PassView pass = *mPack->findShader("Test/HlslTextureMacros")->pass(0);
         TextureLookup textures = [this](std::string_view name,
                                         pack::ResourceDim dim) -> std::optional<TextureBinding> {
             VkSampler sampler = mNearest->get();
@@ -144,12 +143,8 @@ protected:
             if (dim == pack::ResourceDim::Cube) return TextureBinding{mCube->view(), sampler};
             return std::nullopt;
         };
-        image::Image image = drawQuad(pass, {keyword}, values, textures);
-        ASSERT_EQ(image.width(), kSize) << keyword;
-        testing::FormulaComparison result =
-            testing::compareWithFormula(image, formula, 4, absolute, relative);
-        EXPECT_LE(result.worst, 1.0) << keyword << ": worst " << result.where;
-        EXPECT_GT(result.largest, 0.5) << keyword;
+        expectPassFormula("Test/HlslTextureMacros", keyword, values, textures, formula, 4,
+                          absolute, relative, 0.5);
     }
 
     std::optional<vulkan::Texture> m2D, m3D, mCube;

@@ -61,9 +61,9 @@ image::Image QuadDrawTest::drawQuad(const reader::PassView& pass,
     auto variant = pass.lookup(keywords, variants::SelectionPolicy::Exact);
     EXPECT_TRUE(variant) << variant.error().detail;
     if (!variant) return {};
-    auto pipeline = VariantPipeline::create(
-        context(), *variant, resolveRenderState(pass.renderState(), values),
-        {mTarget->renderPass(vulkan::LoadOp::Clear), true, 1});
+    auto pipeline =
+        VariantPipeline::create(context(), *variant, resolveRenderState(pass.renderState(), values),
+                                {mTarget->renderPass(vulkan::LoadOp::Clear), true, 1});
     EXPECT_TRUE(pipeline) << pipeline.error().detail;
     if (!pipeline) return {};
     const ShaderValues* layers[] = {&values};
@@ -88,6 +88,25 @@ image::Image QuadDrawTest::drawQuad(const reader::PassView& pass,
     auto image = mTarget->readback(context());
     EXPECT_TRUE(image) << image.error().detail;
     return image ? std::move(*image) : image::Image{};
+}
+
+void QuadDrawTest::expectPassFormula(const std::string& shader, const std::string& keyword,
+                                     const ShaderValues& values, const TextureLookup& textures,
+                                     const PixelFormula& formula, int channels, double absolute,
+                                     double relative, double minLargest) {
+    std::optional<reader::ShaderView> view = mPack->findShader(shader);
+    ASSERT_TRUE(view) << shader;
+    image::Image image = drawQuad(*view->pass(0), {keyword}, values, textures);
+    ASSERT_EQ(image.width(), mSize) << keyword;
+    FormulaComparison result = compareWithFormula(image, formula, channels, absolute, relative);
+    EXPECT_LE(result.worst, 1.0) << keyword << ": worst " << result.where;
+    EXPECT_GT(result.largest, minLargest) << keyword;
+}
+
+TextureLookup QuadDrawTest::whiteTextures() const {
+    const BuiltinTextures& builtin = *mTextures;
+    return
+        [&builtin](std::string_view, pack::ResourceDim dim) { return builtin.named("white", dim); };
 }
 
 }  // namespace varc::render::testing

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "FormulaComparison.h"
 #include "VulkanTestSupport.h"
 #include "varc/image/Image.h"
 #include "varc/reader/Pack.h"
@@ -36,6 +37,16 @@ protected:
     // with |values| and |textures|, and returns the float image (empty after a failure).
     image::Image drawQuad(const reader::PassView& pass, const std::vector<std::string>& keywords,
                           const ShaderValues& values, const TextureLookup& textures);
+
+    // Draws pass 0 of |shader| with exactly |keyword| and expects the first |channels| channels
+    // of every pixel to match |formula| (compareWithFormula: worst <= 1), whose largest expected
+    // value must reach |minLargest| somewhere: a formula of nothing proves nothing.
+    void expectPassFormula(const std::string& shader, const std::string& keyword,
+                           const ShaderValues& values, const TextureLookup& textures,
+                           const PixelFormula& formula, int channels, double absolute,
+                           double relative, double minLargest = 0.1);
+    // Binds the built-in white texture to every texture.
+    TextureLookup whiteTextures() const;
 
     uint32_t mSize;
     std::optional<reader::Pack> mPack;
