@@ -57,6 +57,7 @@ driver::BuildOptions toBuildOptions(const CompileOptions& compile,
     options.keepGoing = compile.keepGoing;
     options.debugNames = compile.debugNames;
     options.projectKeywords = !compile.noKeywordProjection;
+    options.projectReachableCode = !compile.noReachableProjection;
     options.maxVariantsPerPass = compile.maxVariants;
     options.sampleVariantsPerPass = compile.sampleVariants;
     options.shard = compile.shard;

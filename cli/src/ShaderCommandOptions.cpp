@@ -118,6 +118,9 @@ void addBuildOutputs(CLI::App& cmd, BuildCommandOptions& options) {
     cmd.add_flag("--no-keyword-projection", options.compile.noKeywordProjection,
                  "Preprocess each variant's keywords, not only those its branches look up "
                  "(same pack; for measuring and checking)");
+    cmd.add_flag("--no-reachable-projection", options.compile.noReachableProjection,
+                 "Count the keyword lookups made in code a stage's entry point cannot reach too "
+                 "(same pack; for measuring and checking)");
 }
 
 }  // namespace

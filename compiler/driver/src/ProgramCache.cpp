@@ -210,7 +210,7 @@ ProgramCacheKey ProgramCache::sourceKeyOf(const SourceCacheInput& input) const {
     putU64(text, input.passText.high);
     putU32(text, static_cast<uint32_t>(input.language));
     putU32(text, static_cast<uint32_t>(input.stage));
-    putU32(text, input.pruned ? 1 : 0);
+    putU32(text, (input.pruned ? 1 : 0) | (input.withoutUnreachable ? 2 : 0));
     putU32(text, static_cast<uint32_t>(input.entryPoint.size()));
     text += input.entryPoint;
     text += input.preamble;

@@ -68,6 +68,9 @@ struct CompileOptions {
     // --no-keyword-projection: preprocess once per variant's observed defines, as before the
     // keyword projection (BuildOptions::projectKeywords); same pack, for measuring and checking.
     bool noKeywordProjection = false;
+    // --no-reachable-projection: count lookups in unreachable code too
+    // (BuildOptions::projectReachableCode); same pack, for measuring and checking.
+    bool noReachableProjection = false;
     driver::ShardSpec shard;  // --shard K/N (1/1: all)
     // The program cache's levels in order: --cache-dir DIR (or $VARC_CACHE_DIR) as a folder
     // level, then each --cache URL (or $VARC_CACHE's).

@@ -57,7 +57,7 @@ bool collectStages(PassJob& job, DiagnosticSink& sink) {
     return true;
 }
 
-void setUpProjections(PassJob& job) {
+void setUpProjections(PassJob& job, bool reachableCode) {
     const variants::KeywordTable& table = job.pass->space->table();
     std::optional<ObservedNames> own;
     const ObservedNames& names = job.observed ? *job.observed : own.emplace(job.text);
@@ -68,6 +68,8 @@ void setUpProjections(PassJob& job) {
     // Stages whose preambles differ only in macros the text cannot name (the stage macros,
     // mostly) walk alike: they share one projection, and so its walks.
     std::map<std::string, std::shared_ptr<KeywordProjection>> byBase;
+    std::map<std::string, size_t> firstWithBase;
+    reachableCode = reachableCode && languageOf(job) != shaderlab::ProgramLanguage::Glsl;
     for (const auto& [stage, entry] : job.stages) {
         DefineContext context{job.pass->pass->lightMode(),
                               job.pass->keywords.target,
@@ -81,18 +83,44 @@ void setUpProjections(PassJob& job) {
         std::string base = writePreamble(macros);
         if (languageOf(job) == shaderlab::ProgramLanguage::Glsl)
             base += legacyGlslPreamble(job.text, stage);
-        std::shared_ptr<KeywordProjection>& projection = byBase[base];
-        if (!projection) projection = std::make_shared<KeywordProjection>(text, base);
+        // Reachability starts from the entry point: stages share a tree only if they share it.
+        job.sameBaseAs.push_back(firstWithBase.emplace(base, job.sameBaseAs.size()).first->second);
+        std::string entryPoint = reachableCode ? entry : std::string();
+        std::shared_ptr<KeywordProjection>& projection = byBase[base + '\0' + entryPoint];
+        if (!projection)
+            projection = std::make_shared<KeywordProjection>(text, base, std::move(entryPoint));
         job.projections.push_back(projection);
     }
 }
 
+// The keywords of |variant| stage |stageIndex| is preprocessed with: its projection, or, when
+// the projections leave out unreachable code, the largest projection of any stage with the same
+// base preamble that agrees with the variant on every keyword this stage's projection depends on
+// (it gives this stage the same program), so that stages share preprocessings as they did with
+// every lookup counted.
+variants::VariantKey stageKeyOf(const PassJob& job, size_t variant, size_t stageIndex) {
+    const variants::VariantKey& key = job.keys[variant];
+    if (job.projections.empty()) return key;
+    KeywordProjection& own = *job.projections[stageIndex];
+    variants::VariantKey kept;
+    std::optional<variants::VariantKey> observed = own.observedOf(key, &kept);
+    if (!observed) return key;
+    if (!own.leavesOutUnreachable()) return *observed;
+    variants::VariantKey best = *observed;
+    for (size_t other = 0; other < job.projections.size(); ++other) {
+        if (other == stageIndex || job.sameBaseAs[other] != job.sameBaseAs[stageIndex]) continue;
+        std::optional<variants::VariantKey> theirs = job.projections[other]->observedOf(key);
+        if (!theirs || (*theirs & kept) != *observed) continue;
+        // Largest first, then the key order: stages seeing the same candidates pick the same.
+        if (theirs->count() > best.count() || (theirs->count() == best.count() && *theirs < best))
+            best = *theirs;
+    }
+    return best;
+}
+
 std::string preambleOf(const PassJob& job, size_t variant, size_t stageIndex) {
     const auto& [stage, entry] = job.stages[stageIndex];
-    variants::VariantKey key = job.keys[variant];
-    if (!job.projections.empty()) {
-        if (auto observed = job.projections[stageIndex]->observedOf(key)) key = *observed;
-    }
+    const variants::VariantKey key = stageKeyOf(job, variant, stageIndex);
     DefineContext context{job.pass->pass->lightMode(),
                           job.pass->keywords.target,
                           languageOf(job),
@@ -200,12 +228,15 @@ StageResult preprocessStage(const PassJob& job, Stage stage, const std::string& 
 }
 
 std::string pruneStage(const PassJob& job, const std::string& preprocessed,
-                       const std::string& entry, const BuildOptions& options) {
+                       const std::string& entry, const BuildOptions& options, bool& pruned) {
+    pruned = false;
     if (!options.pruneStages) return preprocessed;
     frontend::ShaderDialect dialect = languageOf(job) == shaderlab::ProgramLanguage::Glsl
                                           ? frontend::ShaderDialect::Glsl
                                           : frontend::ShaderDialect::Hlsl;
-    return frontend::pruneToEntryPoint(preprocessed, entry, dialect).text;
+    frontend::PruneResult result = frontend::pruneToEntryPoint(preprocessed, entry, dialect);
+    pruned = result.pruned;
+    return std::move(result.text);
 }
 
 }  // namespace varc::driver::detail

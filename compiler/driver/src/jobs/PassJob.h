@@ -42,6 +42,9 @@ struct PassJob {
     std::optional<UserDefines> userDefines;  // the macros |text| defines itself
     // Per stage: which keywords each variant's preprocessing looks up; empty: all are kept.
     std::vector<std::shared_ptr<KeywordProjection>> projections;
+    // Per stage, with projections: the first stage whose preamble without keywords is the same
+    // (stages that may share a preprocessing).
+    std::vector<size_t> sameBaseAs;
     ProgramCacheKey textHash;  // of |text|, when a program cache is used
     // |text|'s variant-independent rewrites, shared by the job's variants (and its copies).
     std::shared_ptr<TextRewriteMemo> rewrites = std::make_shared<TextRewriteMemo>();
@@ -77,7 +80,9 @@ std::string contextOf(const PassJob& job, Stage stage, size_t variant);
 bool collectStages(PassJob& job, DiagnosticSink& sink);
 
 // Sets up |job|'s keyword projections (one per stage), after its stages and text are known.
-void setUpProjections(PassJob& job);
+// |reachableCode|: the stages are pruned to their entry points (BuildOptions::pruneStages) and
+// their projections may leave out lookups in unreachable bodies (HLSL texts only).
+void setUpProjections(PassJob& job, bool reachableCode);
 
 // The preamble of one (variant, stage) without the defines the pass text cannot observe, nor
 // the keywords its preprocessing does not look up in that variant.
@@ -93,7 +98,8 @@ StageResult preprocessStage(const PassJob& job, Stage stage, const std::string& 
                             const std::string& preamble, const includes::SourceMap& sourceMap);
 
 // |preprocessed| cut to what |entry| reaches (unchanged without BuildOptions::pruneStages).
+// |pruned|: false when the pruner could not parse it and returned it whole.
 std::string pruneStage(const PassJob& job, const std::string& preprocessed,
-                       const std::string& entry, const BuildOptions& options);
+                       const std::string& entry, const BuildOptions& options, bool& pruned);
 
 }  // namespace varc::driver::detail

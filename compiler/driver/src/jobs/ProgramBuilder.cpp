@@ -61,6 +61,9 @@ struct ProgramBuilder::ChunkPlan {
         size_t preprocess;  // into preambles
         size_t stageIndex;
         StageResult result;
+        // The pruner returned the text whole although its projection left out lookups in
+        // unreachable bodies: the item must be planned again with every lookup.
+        bool unprunable = false;
     };
     std::vector<ItemKey> itemKeys;             // per item
     std::vector<size_t> pendingOf;             // per item: into pending, or SIZE_MAX (known)
@@ -98,7 +101,8 @@ bool ProgramBuilder::plan(const std::vector<frontend::LoadedShader>& shaders,
             if (mOptions.shareUnobservedDefines) job.observed.emplace(job.text);
             job.userDefines.emplace(job.text);
             if (mCache) job.textHash = ProgramCache::hashText(job.text);
-            if (mOptions.projectKeywords) setUpProjections(job);
+            if (mOptions.projectKeywords)
+                setUpProjections(job, mOptions.pruneStages && mOptions.projectReachableCode);
             mJobs.push_back(std::move(job));
         }
     }
@@ -133,12 +137,22 @@ void ProgramBuilder::applyOutcome(size_t jobIndex, size_t variant, size_t stageI
 // in parallel, then interns in item order so source ids never depend on thread timing.
 bool ProgramBuilder::internChunk(size_t jobIndex, size_t firstItem, size_t count) {
     const PassJob& job = mJobs[jobIndex];
-    ChunkPlan chunk = planChunk(job, firstItem, count);
-    // The program cache may hold a pending item's pruned source already.
-    chunk.resolved.assign(chunk.pending.size(), 0);
-    chunk.sourceKeys.resize(mCache ? chunk.pending.size() : 0);
-    if (mCache) loadCachedSources(job, chunk);
-    preprocessAndPrune(job, chunk);
+    ChunkPlan chunk;
+    for (bool again = true; again;) {
+        chunk = planChunk(job, firstItem, count);
+        // The program cache may hold a pending item's pruned source already.
+        chunk.resolved.assign(chunk.pending.size(), 0);
+        chunk.sourceKeys.resize(mCache ? chunk.pending.size() : 0);
+        if (mCache) loadCachedSources(job, chunk);
+        preprocessAndPrune(job, chunk);
+        // Rare (a text the pruner cannot parse): such a stage counts every lookup from here on.
+        again = false;
+        for (const ChunkPlan::Pending& pending : chunk.pending) {
+            if (!pending.unprunable) continue;
+            job.projections[pending.stageIndex]->keepUnreachableLookups();
+            again = true;
+        }
+    }
     internItems(jobIndex, firstItem, count, chunk);
     return !(mGrouper.hasErrors() && !mOptions.keepGoing);
 }
@@ -167,7 +181,7 @@ ProgramBuilder::ChunkPlan ProgramBuilder::planChunk(const PassJob& job, size_t f
                 chunk.preambles.push_back(std::move(preamble));
                 chunk.preprocessStageIndex.push_back(stageIndex);
             }
-            chunk.pending.push_back({pre->second, stageIndex, {}});
+            chunk.pending.push_back({pre->second, stageIndex, {}, false});
         }
         chunk.pendingOf[i] = known->second;
     }
@@ -178,9 +192,12 @@ void ProgramBuilder::loadCachedSources(const PassJob& job, ChunkPlan& chunk) con
     std::vector<ChunkPlan::Pending>& pending = chunk.pending;
     parallelFor(pending.size(), mThreads, [&](size_t p) {
         const auto& [stage, entry] = job.stages[pending[p].stageIndex];
-        chunk.sourceKeys[p] =
-            mCache->sourceKeyOf({job.textHash, languageOf(job), stage, entry,
-                                 chunk.preambles[pending[p].preprocess], mOptions.pruneStages});
+        const bool withoutUnreachable =
+            !job.projections.empty() &&
+            job.projections[pending[p].stageIndex]->leavesOutUnreachable();
+        chunk.sourceKeys[p] = mCache->sourceKeyOf({job.textHash, languageOf(job), stage, entry,
+                                                   chunk.preambles[pending[p].preprocess],
+                                                   mOptions.pruneStages, withoutUnreachable});
     });
     // One batch per chunk: a remote level answers it in one round trip.
     std::vector<std::optional<std::string>> texts = mCache->loadSources(chunk.sourceKeys);
@@ -221,9 +238,13 @@ void ProgramBuilder::preprocessAndPrune(const PassJob& job, ChunkPlan& chunk) {
         result.ok = pre.ok;
         result.diagnostics = pre.diagnostics;
         if (!pre.ok) return;
-        result.text = pruneStage(job, pre.text, job.stages[pending[p].stageIndex].second, mOptions);
+        const size_t stageIndex = pending[p].stageIndex;
+        bool pruned = false;
+        result.text = pruneStage(job, pre.text, job.stages[stageIndex].second, mOptions, pruned);
+        pending[p].unprunable = !pruned && !job.projections.empty() &&
+                                job.projections[stageIndex]->leavesOutUnreachable();
         // Only silent preprocessings are cached: a hit must not lose a warning.
-        if (mCache && result.diagnostics.empty()) {
+        if (mCache && result.diagnostics.empty() && !pending[p].unprunable) {
             noteCacheFailure(mCache->storeSource(chunk.sourceKeys[p], result.text));
         }
     });

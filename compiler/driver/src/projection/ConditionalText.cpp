@@ -2,6 +2,9 @@
 // Parses a program text into its directives and the keywords its other lines can name.
 #include "ConditionalText.h"
 
+#include "BraceShape.h"
+#include "DefineGroups.h"
+
 namespace varc::driver::projection {
 
 namespace {
@@ -140,6 +143,11 @@ ConditionalText::ConditionalText(std::string_view text, const std::vector<std::s
     }
     classify(lines, startsInComment);
     if (mUsable) linkConditionals();
+    if (mUsable) {
+        mBraceMacros = unbalancedBraceMacros(mLines);
+        markCleanGroups(mLines, mBraceMacros);
+        markDefineGroups(mLines);
+    }
 }
 
 int ConditionalText::keywordIndex(std::string_view name) const {
@@ -164,8 +172,10 @@ void ConditionalText::classify(const std::vector<std::string_view>& lines,
                 mLines.emplace_back();
                 identifiers.emplace_back();
             }
-            for (std::string_view token : ppTokens(line))
+            for (std::string_view token : ppTokens(line)) {
                 if (isIdentifierToken(token)) identifiers.back().push_back(token);
+                mLines.back().code.push_back(token);
+            }
             continue;
         }
         size_t nameStart = skipBlanks(line, hash + 1), nameEnd = nameStart;

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "varc/variants/VariantKey.h"
@@ -29,6 +30,16 @@ struct PpLine {
     KeywordBits refs;
     uint32_t next = 0;  // #if/#elif/#else: the group's next branch directive (or its #endif)
     uint32_t end = 0;   // #if/#elif/#else: the group's #endif
+    // Text: every preprocessing token of the run, in order (what BlockTracker follows).
+    std::vector<std::string_view> code;
+    // #if/#ifdef/#ifndef: whichever branches a variant takes, the group changes nothing but the
+    // text between its braces (BraceShape.h): no directive other than conditionals, and braces
+    // that balance in every branch without closing one opened before the group.
+    bool clean = false;
+    // #if/#ifdef/#ifndef: every branch, nested groups included, holds only #define/#undef lines
+    // and blank text (DefineGroups.h). Then |defines| lists their names, once each.
+    bool definesOnly = false;
+    std::vector<std::string_view> defines;
 };
 
 // The directive structure of a text, parsed once per pass and shared by its stages' walks.
@@ -45,6 +56,8 @@ public:
     const std::vector<PpLine>& lines() const { return mLines; }
     // The bit of keyword |name|, or -1.
     int keywordIndex(std::string_view name) const;
+    // Macros some definition of which can expand to braces that do not balance (BraceShape.h).
+    const std::unordered_set<std::string_view>& braceMacros() const { return mBraceMacros; }
 
 private:
     void classify(const std::vector<std::string_view>& lines,
@@ -57,6 +70,7 @@ private:
     std::vector<PpLine> mLines;
     std::unordered_map<std::string_view, int> mKeywords;
     std::vector<std::string> mKeywordNames;
+    std::unordered_set<std::string_view> mBraceMacros;
     bool mUsable = true;
 };
 

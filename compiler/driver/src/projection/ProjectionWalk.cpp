@@ -30,7 +30,12 @@ bool ProjectionWalk::run(const ConditionalText& base, const ConditionalText& tex
     if (!base.usable() || !text.usable()) return false;
     askAll(formable);
     walk(base);
+    if (mReachable && text.lines().size() < (size_t{1} << 26)) {  // (Ask keys: 27 bits)
+        mTracker.emplace(text.braceMacros());
+        mTextLines = &text.lines();
+    }
     walk(text);
+    settleAsks();
     return !mFailed;
 }
 
@@ -47,18 +52,37 @@ const PpLine* ProjectionWalk::macro(std::string_view name) {
 void ProjectionWalk::walk(const ConditionalText& text) {
     using Kind = PpLine::Kind;
     const std::vector<PpLine>& lines = text.lines();
+    const BlockTracker::Definitions definitions = [this](std::string_view name) -> const PpLine* {
+        auto it = mTable.find(name);
+        return it == mTable.end() ? nullptr : it->second;
+    };
+    const bool traced = mTracker && &lines == mTextLines;
     for (size_t i = 0; i < lines.size() && !mFailed;) {
+        if (mBody >= 0 && i > mBodyUntil) mBody = -1;  // left the clean group
+        while (!mDefineGroups.empty() && i > lines[mDefineGroups.back()].end)
+            mDefineGroups.pop_back();
         const PpLine& line = lines[i];
         switch (line.kind) {
-            case Kind::Text:
+            case Kind::Text: {
+                const int outer = mBody;
+                const int body = traced ? mTracker->follow(line.code, definitions) : -1;
+                if (mBody < 0) mBody = body;  // a run wholly inside one function body
+                askAll(line.refs);
+                mBody = outer;
+                ++i;
+                break;
+            }
             case Kind::Other:
                 askAll(line.refs);
                 ++i;
                 break;
             case Kind::Define:
             case Kind::Undef:
-                // glslang compares a redefinition with the definition in force: a lookup.
-                if (int k = mKeywords.keywordIndex(line.name); k >= 0) ask(k);
+                // glslang compares a redefinition with the definition in force: a lookup, one
+                // that always counts (it can fail the preprocessing).
+                if (int k = mKeywords.keywordIndex(line.name); k >= 0) askAlways(k);
+                if (traced && line.kind == Kind::Define && mDefineGroups.empty())
+                    mLooseDefines.push_back(line.name);
                 mTable[line.name] = line.kind == Kind::Define ? &line : nullptr;
                 ++i;
                 break;
@@ -69,6 +93,15 @@ void ProjectionWalk::walk(const ConditionalText& text) {
             case Kind::If:
             case Kind::Ifdef:
             case Kind::Ifndef:
+                if (traced && mBody < 0 && line.clean) {
+                    mBody = mTracker->functionBody();
+                    mBodyUntil = line.end;
+                }
+                if (traced) {
+                    mEntered.push_back({static_cast<uint32_t>(i), mBody, mDefineGroups.empty()});
+                    if (line.definesOnly && mBody < 0)
+                        mDefineGroups.push_back(static_cast<uint32_t>(i));
+                }
                 i = enterGroup(lines, i);
                 break;
             default:  // #endif, #pragma (glslang does not expand it)
@@ -76,7 +109,6 @@ void ProjectionWalk::walk(const ConditionalText& text) {
         }
     }
 }
-
 size_t ProjectionWalk::enterGroup(const std::vector<PpLine>& lines, size_t i) {
     using Kind = PpLine::Kind;
     while (!mFailed) {
@@ -110,17 +142,54 @@ size_t ProjectionWalk::enterGroup(const std::vector<PpLine>& lines, size_t i) {
 
 void ProjectionWalk::ask(int keyword) {
     const size_t k = static_cast<size_t>(keyword);
-    if (mAsked.test(k)) return;
-    mAsked.set(k);
-    mAnswers.emplace_back(keyword, mKey.test(k));
+    if (mAskedOutside.test(k)) return;
+    const int group = mDefineGroups.empty() ? -1 : static_cast<int>(mDefineGroups.back());
+    if (mBody < 0 && group < 0) {
+        askAlways(keyword);
+        return;
+    }
+    // One key per (keyword, body, group): 10 + 27 + 27 bits.
+    static_assert(variants::VariantKey::kMaxKeywords <= 1024);
+    const uint64_t place = (static_cast<uint64_t>(k) << 54) |
+                           (static_cast<uint64_t>(mBody + 1) << 27) |
+                           static_cast<uint64_t>(group + 1);
+    if (mPlaceAsks.insert(place).second) mAsks.push_back({keyword, mBody, group});
+}
+
+void ProjectionWalk::askAlways(int keyword) {
+    const size_t k = static_cast<size_t>(keyword);
+    if (mAskedOutside.test(k)) return;
+    mAskedOutside.set(k);
+    mAsks.push_back({keyword, -1, -1});
 }
 
 void ProjectionWalk::askAll(const KeywordBits& keywords) {
-    KeywordBits fresh = keywords & ~mAsked;
+    KeywordBits fresh = keywords & ~mAskedOutside;
     for (size_t k = 0; fresh.any() && k < fresh.size(); ++k) {
         if (!fresh.test(k)) continue;
         fresh.reset(k);
         ask(static_cast<int>(k));
+    }
+}
+
+// Whether |ask| was made only in a body nothing reaches or a group defining only unused macros.
+bool ProjectionWalk::leavable(const Ask& ask, const Liveness& liveness) {
+    if (ask.body >= 0 && liveness.deadBodies[static_cast<size_t>(ask.body)]) return true;
+    return ask.group >= 0 && !liveness.liveGroups[static_cast<size_t>(ask.group)];
+}
+
+void ProjectionWalk::settleAsks() {
+    Liveness liveness;
+    if (mTracker) {
+        mTracker->finish();
+        liveness = livenessOf({*mTracker, *mTextLines, mEntered, mLooseDefines}, mReachable->macros,
+                              mReachable->entry);
+    }
+    for (const Ask& ask : mAsks) {
+        const size_t k = static_cast<size_t>(ask.keyword);
+        if ((liveness.decided && leavable(ask, liveness)) || mAsked.test(k)) continue;
+        mAsked.set(k);
+        mAnswers.emplace_back(ask.keyword, mKey.test(k));
     }
 }
 

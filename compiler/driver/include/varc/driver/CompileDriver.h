@@ -40,6 +40,10 @@ struct BuildOptions {
     // (KeywordProjection.h): one preprocessing per distinct projection. Off only to check that
     // it changes no program.
     bool projectKeywords = true;
+    // With the projection and pruning: leave out the lookups made only in the bodies of
+    // functions a stage's entry point cannot reach (the pruner removes them whatever their
+    // text). Off only to check that it changes no program.
+    bool projectReachableCode = true;
     // Preprocess, prune and compile only this shard's share of the variants (ShardPlan.h: units
     // of whole variants, chosen before preprocessing); the other variants' stages name
     // placeholders (varc/pack/PartialPack.h) for `varc merge` to fill from the other parts.

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <vector>
 
 #include "varc/variants/VariantKey.h"
@@ -19,7 +20,8 @@ namespace varc::driver {
 
 namespace projection {
 class ConditionalText;
-}
+class MacroIndex;
+}  // namespace projection
 
 // A pass's text parsed for the analysis, shared by the projections of its stages.
 class ProjectionText {
@@ -38,17 +40,30 @@ private:
 };
 
 // The projections of one stage of a pass: a decision tree over the keywords the walk of the
-// text asks about, in the order it asks; each leaf is one distinct projection. Not thread-safe.
+// text asks about, in the order it asks; each leaf is one distinct projection. With an entry
+// point, the leaves are kept per set of keywords a walk kept instead (knownLeaf). Not
+// thread-safe.
 class KeywordProjection {
 public:
     // |basePreamble|: the macros glslang sees before the text in every variant of the stage
-    // (varc's predefined macros without the keywords), as `#define`/`#undef` lines.
-    KeywordProjection(std::shared_ptr<const ProjectionText> text, std::string_view basePreamble);
+    // (varc's predefined macros without the keywords), as `#define`/`#undef` lines. |entry|:
+    // the stage's entry point when its preprocessed text is pruned to what the entry point
+    // reaches before anything else reads it; lookups made only in the bodies of functions it
+    // cannot reach are then left out (docs/ARCHITECTURE.md, "Keyword projection"). Empty: none.
+    KeywordProjection(std::shared_ptr<const ProjectionText> text, std::string_view basePreamble,
+                      std::string entry = {});
     ~KeywordProjection();
 
     // The keywords of |key| the stage's preprocessing can observe (a subset of |key|), or
     // nullopt when the analysis cannot decide for this text: the caller then keeps them all.
-    std::optional<variants::VariantKey> observedOf(const variants::VariantKey& key);
+    // |kept|, when given, receives the keywords that decide the projection (a superset of it).
+    std::optional<variants::VariantKey> observedOf(const variants::VariantKey& key,
+                                                   variants::VariantKey* kept = nullptr);
+
+    // Counts every lookup from now on (the pruner could not prune a text this projection
+    // chose, so unreachable bodies stay in it): the tree starts again.
+    void keepUnreachableLookups();
+    bool leavesOutUnreachable() const { return !mEntry.empty(); }
 
     bool usable() const { return mUsable; }              // false: the analysis gave up
     size_t walks() const { return mWalks; }              // walks of the text so far
@@ -63,10 +78,21 @@ private:
     };
     bool insertWalk(const std::vector<std::pair<int, bool>>& answers,
                     const variants::VariantKey& asked);
+    // With an entry point: the leaves, per set of keywords a walk kept.
+    struct Leaves {
+        variants::VariantKey asked;
+        std::unordered_set<variants::VariantKey> projections;  // key & asked of each leaf
+    };
+    std::optional<variants::VariantKey> knownLeaf(const variants::VariantKey& key,
+                                                  variants::VariantKey& kept);
+    void insertLeaf(const variants::VariantKey& asked, const variants::VariantKey& projected);
 
     std::shared_ptr<const ProjectionText> mText;
     std::unique_ptr<projection::ConditionalText> mBase;
-    std::vector<Node> mNodes;  // mNodes[0] is the root once a walk ran
+    std::string mEntry;
+    std::unique_ptr<projection::MacroIndex> mMacros;  // with |mEntry|
+    std::vector<Node> mNodes;                         // mNodes[0] is the root once a walk ran
+    std::vector<Leaves> mLeaves;
     bool mUsable = true;
     size_t mWalks = 0, mProjections = 0;
 };

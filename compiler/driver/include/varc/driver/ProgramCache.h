@@ -67,6 +67,9 @@ struct SourceCacheInput {
     std::string_view entryPoint;
     std::string_view preamble;  // the defines the text observes (+ the legacy GLSL preamble)
     bool pruned = true;
+    // The preamble left out keywords looked up only in unreachable bodies: the entry then
+    // holds only a pruned text (a text the pruner returned whole is never stored under it).
+    bool withoutUnreachable = false;
 };
 
 class ProgramCache {
