@@ -159,6 +159,18 @@ TEST(ReachableProjection, MacrosThatOpenAndCloseBlocksAreFollowed) {
               "A");
 }
 
+TEST(ReachableProjection, MacrosExpandingToTooManyBracesLeaveNothingOut) {
+    // O24 expands to 2^24 braces: followed in full it would hang the walk.
+    std::string text = "#define O0 {\n";
+    for (int i = 1; i <= 24; ++i)
+        text += "#define O" + std::to_string(i) + " O" + std::to_string(i - 1) + " O" +
+                std::to_string(i - 1) + "\n";
+    text += "#if 0\nO24\n#endif\n";  // defined, never expanded: harmless
+    EXPECT_EQ(projectAll(text + std::string(kTwoFunctions)), "A");
+    text += "O24\n";
+    EXPECT_EQ(projectAll(text + std::string(kTwoFunctions)), "AB");
+}
+
 TEST(ReachableProjection, VariantsAgreeingOnTheReachableLookupsShareAWalk) {
     KeywordProjection projection(
         std::make_shared<const ProjectionText>(kTwoFunctions, kKeywords, variants::VariantKey{}),

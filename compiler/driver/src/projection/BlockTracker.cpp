@@ -87,6 +87,7 @@ void BlockTracker::token(std::string_view t, const Definitions& definitions) {
     }
     if (isIdentifierToken(t) && mBraceMacros.count(t)) {
         mBraceUses.push_back(t);
+        mExpansionBudget = kExpansionBudget;
         expand(t, definitions, 0);
     }
 }
@@ -132,11 +133,18 @@ void BlockTracker::identifier(std::string_view name) {
         mOutside.push_back(name);
 }
 
-// The braces |macro|'s definition in force expands to, through the macros it names.
+// The braces |macro|'s definition in force expands to, through the macros it names. Macros
+// nesting too deep or expanding to too much (a fan-out attack) leave the braces unknown.
 void BlockTracker::expand(std::string_view macro, const Definitions& definitions, int depth) {
     const PpLine* definition = definitions(macro);
-    if (!definition || depth > 32) return;
+    if (!definition) return;
+    if (depth > 64 || mExpansionBudget < definition->tokens.size()) {
+        mConsistent = false;
+        return;
+    }
+    mExpansionBudget -= definition->tokens.size();
     for (std::string_view t : definition->tokens) {
+        if (!mConsistent) return;
         if (t == "{" || t == "}")
             brace(t, true);
         else if (t != macro && mBraceMacros.count(t))

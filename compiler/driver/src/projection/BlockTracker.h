@@ -61,6 +61,8 @@ private:
     int mCurrent = -1;     // the open top-level block, or -1
     bool mClosed = false;  // a top-level block closed during the current run
     bool mConsistent = true;
+    static constexpr size_t kExpansionBudget = 1 << 16;  // tokens per use of a brace macro
+    size_t mExpansionBudget = 0;
 };
 
 }  // namespace varc::driver::projection

@@ -96,6 +96,7 @@ private:
     }
     // Pasting may form any name holding |fragment|: every such function, group name or macro.
     void pushContaining(std::string_view fragment) {
+        if (!mFragments.insert(fragment).second) return;
         auto contains = [&](std::string_view name) {
             return name.find(fragment) != std::string_view::npos;
         };
@@ -134,6 +135,7 @@ private:
     std::unordered_map<size_t, std::vector<uint32_t>> mBodyGroups;          // clean groups per body
     Liveness mLiveness;
     std::unordered_set<std::string_view> mSeen;
+    std::unordered_set<std::string_view> mFragments;  // pasted fragments already followed
     std::vector<std::string_view> mPending;
 };
 
