@@ -32,10 +32,17 @@ inline half3 DiffuseAndSpecularFromMetallic(half3 albedo, half metallic, out hal
     return albedo * oneMinusReflectivity;
 }
 
-// Transparent materials: diffuse *= alpha; outAlpha = 1 - oneMinusReflectivity + alpha * oneMinusReflectivity.
+// The Transparent mode (_ALPHAPREMULTIPLY_ON, blended One OneMinusSrcAlpha): diffuse *= alpha,
+// and the reflective part stays opaque: outAlpha = 1 - oneMinusReflectivity + alpha *
+// oneMinusReflectivity. Any other mode (Fade blends by alpha itself): both unchanged.
 inline half3 PreMultiplyAlpha(half3 diffColor, half alpha, half oneMinusReflectivity, out half outModifiedAlpha) {
+#if defined(_ALPHAPREMULTIPLY_ON)
     outModifiedAlpha = 1 - oneMinusReflectivity + alpha * oneMinusReflectivity;
     return diffColor * alpha;
+#else
+    outModifiedAlpha = alpha;
+    return diffColor;
+#endif
 }
 
 // Light-probe SH: varc evaluates the full L0-L2 polynomial per pixel; the per-vertex part

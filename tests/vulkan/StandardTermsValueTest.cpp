@@ -13,7 +13,7 @@
 // api-value-tested: FresnelTerm FresnelLerp Unity_SafeNormalize BlendNormals UnpackScaleNormal
 // api-value-tested: UnpackScaleNormalRGorAG EnergyConservationBetweenDiffuseAndSpecular
 // api-value-tested: SpecularStrength LerpWhiteTo LerpOneTo OneMinusReflectivityFromMetallic
-// api-value-tested: ParallaxOffset1Step BoxProjectedCubemapDirection
+// api-value-tested: ParallaxOffset1Step BoxProjectedCubemapDirection PreMultiplyAlpha
 // api-value-tested: perceptualRoughnessToMipmapLevel mipmapLevelToPerceptualRoughness
 // api-value-tested: UnityGlossyEnvironmentSetup UnityStandardDataToGbuffer
 // api-value-tested: UnityStandardDataFromGbuffer UnityLambertLight UnityBlinnPhongLight
@@ -181,6 +181,20 @@ TEST_F(StandardTermsValueTest, EnergyConservation) {
         "ST_LERP", {},
         [](double u, double v) {
             return Vec4{1 - v + u * v, 1 - v + 0.3 * v, 1 - v + u * v, 0.96 * (1 - u)};
+        },
+        4, 1e-5, 1e-4);
+}
+
+// PreMultiplyAlpha changes colour and alpha only in the Transparent mode (_ALPHAPREMULTIPLY_ON):
+// diffuse * alpha, and alpha raised by the reflectivity 1 - oneMinusReflectivity.
+TEST_F(StandardTermsValueTest, PreMultiplyAlphaOnlyInTheTransparentMode) {
+    expectFormula(
+        "ST_PREMUL", {}, [](double u, double v) { return Vec4{u, v, v, 0}; }, 4, 1e-5, 1e-4);
+    expectFormula(
+        "ST_PREMUL_ON", {},
+        [](double u, double v) {
+            double oneMinusReflectivity = 0.3 + 0.5 * u;
+            return Vec4{u * v, v * v, 1 - oneMinusReflectivity + v * oneMinusReflectivity, 0};
         },
         4, 1e-5, 1e-4);
 }

@@ -13,7 +13,11 @@ Shader "Test/StandardTermsValues" {
             #pragma vertex vert
             #pragma fragment frag
             #pragma target 3.0
-            #pragma multi_compile ST_ROUGH ST_MICRO ST_FRESNEL ST_SAFENORM ST_BLEND ST_UNPACK ST_ENERGY ST_LERP ST_PARALLAX ST_BOX ST_MIP ST_GBUF_TO ST_GBUF_FROM ST_LEGACY ST_RESET ST_LAMBERT ST_ENVSURF
+            #pragma multi_compile ST_ROUGH ST_MICRO ST_FRESNEL ST_SAFENORM ST_BLEND ST_UNPACK ST_ENERGY ST_LERP ST_PARALLAX ST_BOX ST_MIP ST_GBUF_TO ST_GBUF_FROM ST_LEGACY ST_RESET ST_LAMBERT ST_ENVSURF ST_PREMUL ST_PREMUL_ON
+            // The Transparent mode's keyword, in one variant (PreMultiplyAlpha tests it).
+            #if defined(ST_PREMUL_ON)
+            #define _ALPHAPREMULTIPLY_ON 1
+            #endif
             #include "UnityStandardBRDF.cginc"
             #include "UnityStandardUtils.cginc"
             #include "UnityImageBasedLighting.cginc"
@@ -61,6 +65,10 @@ Shader "Test/StandardTermsValues" {
                 half oneMinusReflectivity;
                 half3 diffuse = EnergyConservationBetweenDiffuseAndSpecular(half3(u, v, 0.5), half3(0.1, 0.5 * v, 0.3 * u), oneMinusReflectivity);
                 return float4(diffuse.xy, oneMinusReflectivity, SpecularStrength(half3(u, v, 0.5)));
+            #elif defined(ST_PREMUL) || defined(ST_PREMUL_ON)
+                half modifiedAlpha;
+                half3 premultiplied = PreMultiplyAlpha(half3(u, v, 0.5), v, 0.3 + 0.5 * u, modifiedAlpha);
+                return float4(premultiplied.xy, modifiedAlpha, 0);
             #elif defined(ST_LERP)
                 half3 w = LerpWhiteTo(half3(u, v, 0.3), v);
                 return float4(w.xz, LerpOneTo(u, v), OneMinusReflectivityFromMetallic(u));
