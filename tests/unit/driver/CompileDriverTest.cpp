@@ -336,8 +336,9 @@ TEST_F(CompileDriverTest, VariantsDifferingOnlyInUnobservedDefinesSharePreproces
     const CompiledPass& pass = output->passes[0];
     EXPECT_EQ(pass.variants.size(), 8u);
     // 8 variants x 2 stages, but neither NEVER_TESTED nor the SHADER_STAGE_* macros occur in the
-    // text: one preprocessing per WOBBLE x TINTED choice.
-    EXPECT_EQ(output->preprocessedPrograms, 4u);
+    // text, and each stage's entry point reaches only its own keyword: one preprocessing with
+    // neither, one with WOBBLE (the vertex stage's), one with TINTED (the fragment stage's).
+    EXPECT_EQ(output->preprocessedPrograms, 3u);
     EXPECT_EQ(pass.stats.distinctSources[stageIndex(Stage::Vertex)], 2u);
     EXPECT_EQ(pass.stats.distinctSources[stageIndex(Stage::Fragment)], 2u);
     EXPECT_EQ(output->compiledSources, 4u);
@@ -349,7 +350,9 @@ TEST_F(CompileDriverTest, AStageMacroTheTextTestsIsPreprocessedPerStage) {
                  "#ifdef SHADER_STAGE_VERTEX\nfloat4 _VertexOnly;\n#endif\nfloat4 _Tint;");
     auto output = build(shader);
     ASSERT_TRUE(output);
-    EXPECT_EQ(output->preprocessedPrograms, 8u);  // 4 variants x 2 stages
+    // Per stage, since their preambles differ: 2 WOBBLE choices for the vertex stage, 2 TINTED
+    // choices for the fragment stage.
+    EXPECT_EQ(output->preprocessedPrograms, 4u);
 }
 
 TEST_F(CompileDriverTest, APreprocessingErrorSharedByVariantsIsReportedOnce) {
@@ -389,7 +392,9 @@ TEST_F(CompileDriverTest, ASecondBuildTakesEveryProgramFromTheCacheWithIdentical
     ASSERT_TRUE(warm);
     EXPECT_EQ(warm->cachedSources, warm->compiledSources);
     EXPECT_EQ(warm->preprocessedPrograms, 0u) << "every pruned source comes from the cache";
-    EXPECT_EQ(warm->cachedStageSources, 8u);  // 4 variants x 2 stages
+    // One per distinct (preprocessing, stage): the 3 preprocessings (neither keyword, WOBBLE,
+    // TINTED) each serve both stages.
+    EXPECT_EQ(warm->cachedStageSources, 6u);
     ASSERT_EQ(warm->programs.size(), cold->programs.size());
     for (size_t i = 0; i < cold->programs.size(); ++i) {
         EXPECT_EQ(warm->programs[i].spirv, cold->programs[i].spirv) << i;
