@@ -3,26 +3,15 @@
 // branches; indirect tests, nesting, #elif, #undef and conditionally included text stay exact.
 #include <gtest/gtest.h>
 
+#include "ProjectionKeywords.h"
 #include "varc/driver/KeywordProjection.h"
 
 namespace varc::driver {
 namespace {
 
-const std::vector<std::string> kKeywords = {"A", "B", "C", "D"};  // sorted: bit = index
-
-variants::VariantKey keyOf(std::string_view names) {
-    variants::VariantKey key;
-    for (size_t k = 0; k < kKeywords.size(); ++k)
-        if (names.find(kKeywords[k]) != std::string_view::npos) key.set(k);
-    return key;
-}
-
-std::string namesOf(const variants::VariantKey& key) {
-    std::string names;
-    for (size_t k = 0; k < kKeywords.size(); ++k)
-        if (key.test(k)) names += kKeywords[k];
-    return names;
-}
+using testing::keyOf;
+using testing::kKeywords;
+using testing::namesOf;
 
 struct Projector {
     explicit Projector(std::string_view text, std::string_view base = "",

@@ -1,29 +1,19 @@
 // SPDX-License-Identifier: Apache-2.0
 // KeywordProjection with an entry point: lookups made only in the bodies of functions the entry
-// point cannot reach are left out, and only there; whatever could change the text around such a
-// body (a #define, unbalanced braces, a macro-made name, token pasting) keeps them.
+// point cannot reach, or in groups defining only macros nothing kept uses, are left out, and only
+// there; whatever could change the text around them (a #define, unbalanced braces, a macro-made
+// name, token pasting, a second definition) keeps them.
 #include <gtest/gtest.h>
 
+#include "ProjectionKeywords.h"
 #include "varc/driver/KeywordProjection.h"
 
 namespace varc::driver {
 namespace {
 
-const std::vector<std::string> kKeywords = {"A", "B", "C", "D"};  // sorted: bit = index
-
-variants::VariantKey keyOf(std::string_view names) {
-    variants::VariantKey key;
-    for (size_t k = 0; k < kKeywords.size(); ++k)
-        if (names.find(kKeywords[k]) != std::string_view::npos) key.set(k);
-    return key;
-}
-
-std::string namesOf(const variants::VariantKey& key) {
-    std::string names;
-    for (size_t k = 0; k < kKeywords.size(); ++k)
-        if (key.test(k)) names += kKeywords[k];
-    return names;
-}
+using testing::keyOf;
+using testing::kKeywords;
+using testing::namesOf;
 
 // The projection of the variant with every keyword on, with |entry| (or without: "").
 std::string projectAll(std::string_view text, std::string entry = "frag") {
@@ -96,8 +86,7 @@ TEST(ReachableProjection, GroupsThatCouldChangeTheTextAroundTheBodyStillCount) {
         text.replace(text.find(from), from.size(), std::string(group));
         return text;
     };
-    EXPECT_EQ(projectAll(unusedBody("#ifdef B\n#define SCALE 3\n    x *= SCALE;\n#endif\n")),
-              "AB");
+    EXPECT_EQ(projectAll(unusedBody("#ifdef B\n#define SCALE 3\n    x *= SCALE;\n#endif\n")), "AB");
     EXPECT_EQ(projectAll(unusedBody("#ifdef B\n    return x; } float more(float x) {\n#endif\n")),
               "AB");
     EXPECT_EQ(projectAll(unusedBody("#ifdef B\n    if (x > 0) { x = 1; }\n#endif\n")), "A");
@@ -115,9 +104,10 @@ TEST(ReachableProjection, DefinitionGroupsCountOnlyWhenWhatKeptCodeUsesTheirMacr
     EXPECT_EQ(projectAll(withFrag(tint)), "A");
     EXPECT_EQ(projectAll(withFrag(tint, "return helper(TINT);")), "AC");
     // Through a chain of macros, and through a group of a used macro testing another.
-    const std::string chain = "#ifdef C\n#define TINT_ON\n#endif\n#ifdef TINT_ON\n"
-                              "#define TINT 2\n#else\n#define TINT 1\n#endif\n"
-                              "#define COLOR (TINT * 0.5)\n";
+    const std::string chain =
+        "#ifdef C\n#define TINT_ON\n#endif\n#ifdef TINT_ON\n"
+        "#define TINT 2\n#else\n#define TINT 1\n#endif\n"
+        "#define COLOR (TINT * 0.5)\n";
     EXPECT_EQ(projectAll(withFrag(chain)), "A");
     EXPECT_EQ(projectAll(withFrag(chain, "return helper(COLOR);")), "AC");
     // Used only in a body nothing reaches, or only in a group of unused macros: left out.
@@ -134,8 +124,7 @@ TEST(ReachableProjection, DefinitionGroupsCountOnlyWhenWhatKeptCodeUsesTheirMacr
     // A group holding anything but definitions counts as before.
     EXPECT_EQ(projectAll(withFrag("#ifdef C\n#define TINT 2\nfloat4 _Tint;\n#endif\n")), "AC");
     // Token pasting that could form the macro's name.
-    EXPECT_EQ(projectAll(withFrag(tint + "#define GET(n) TI##n", "return helper(GET(NT));")),
-              "AC");
+    EXPECT_EQ(projectAll(withFrag(tint + "#define GET(n) TI##n", "return helper(GET(NT));")), "AC");
 }
 
 TEST(ReachableProjection, AFunctionWhoseNameAMacroMakesCountsAsReached) {
