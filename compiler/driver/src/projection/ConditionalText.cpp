@@ -157,7 +157,7 @@ int ConditionalText::keywordIndex(std::string_view name) const {
 
 void ConditionalText::classify(const std::vector<std::string_view>& lines,
                                const std::vector<char>& startsInComment) {
-    std::vector<std::vector<std::string_view>> identifiers;  // per PpLine (Text and Other)
+    std::vector<std::vector<std::string_view>> identifiers;  // per PpLine (Other; Text: code)
     for (size_t n = 0; n < lines.size(); ++n) {
         std::string_view line = lines[n];
         size_t hash = skipBlanks(line, 0);
@@ -172,10 +172,7 @@ void ConditionalText::classify(const std::vector<std::string_view>& lines,
                 mLines.emplace_back();
                 identifiers.emplace_back();
             }
-            for (std::string_view token : ppTokens(line)) {
-                if (isIdentifierToken(token)) identifiers.back().push_back(token);
-                mLines.back().code.push_back(token);
-            }
+            for (std::string_view token : ppTokens(line)) mLines.back().code.push_back(token);
             continue;
         }
         size_t nameStart = skipBlanks(line, hash + 1), nameEnd = nameStart;
@@ -296,7 +293,9 @@ void ConditionalText::resolveReferences(const std::vector<std::vector<std::strin
         }
     }
     for (size_t i = 0; i < mLines.size(); ++i) {
-        for (std::string_view token : idents[i]) {
+        const bool text = mLines[i].kind == PpLine::Kind::Text;
+        for (std::string_view token : text ? mLines[i].code : idents[i]) {
+            if (!isIdentifierToken(token)) continue;
             if (int k = keywordIndex(token); k >= 0) mLines[i].refs.set(static_cast<size_t>(k));
             if (auto it = reach.find(token); it != reach.end()) mLines[i].refs |= it->second;
         }
