@@ -12,9 +12,11 @@
 #     stay true, so rerun with --update and commit docs/COMPATIBILITY.md.
 # Usage: corpus.sh VARC COMPAT_DIR DOC WORK_DIR [--update | --crashes-only]
 # --crashes-only (the sanitizer job, where builds run several times slower): each pass builds an
-# even sample of 64 of its variants (`--sample-variants`: every pass and every file still goes
+# even sample of 32 of its variants (`--sample-variants`: every pass and every file still goes
 # through the whole pipeline, and passes too big to build whole here are sampled instead of
 # refused), and only crashes, hangs and unmapped messages fail the run.
+# 32 rather than 64 keeps CI within its budget (#26): the largest pass, Grass_TransCutout, takes
+# 14.8 s instead of 25.5 s under the sanitizers; the normal job builds every variant.
 # The corpus is read in place and never copied into the project.
 set -uo pipefail
 
@@ -34,7 +36,7 @@ results="$work/results.tsv"
 # million): the test stays within minutes, and such a refusal is a documented limit.
 max_variants=200000
 sample=()
-[ "$update" = --crashes-only ] && sample=(--sample-variants 64)
+[ "$update" = --crashes-only ] && sample=(--sample-variants 32)
 : >"$results"
 status=0
 
@@ -156,7 +158,7 @@ EOF
 } >"$table"
 
 if [ "$update" = --crashes-only ]; then
-    echo "corpus (crashes only, 64 variants of each pass of at most $max_variants): $built of $total built"
+    echo "corpus (crashes only, 32 variants of each pass of at most $max_variants): $built of $total built"
     exit $status
 fi
 # The page's hand-written tail is kept by --update and not compared here: from the section
